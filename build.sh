@@ -1,0 +1,90 @@
+#!/usr/bin/env bash
+# vibook build driver.
+#   ./build.sh book   [--sanitize]  install missing Debian packages, build, regenerate every
+#                                   figure and the claims report, build the HTML book
+#   ./build.sh test   [--sanitize]  same set-up and book, then every test through ctest
+#   ./build.sh bench                build and run the Google Benchmark suite (tests/bench)
+#   ./build.sh cli                  build only the library and the `vibook` command
+# --sanitize uses the ASan+UBSan preset (build tree build-sanitize/).
+set -euo pipefail
+cd "$(dirname "${BASH_SOURCE[0]}")"
+
+usage() { sed -n '2,8p' "$0" | sed 's/^# \{0,1\}//'; }
+
+action=${1:-}
+[ $# -gt 0 ] && shift
+sanitize=0
+for arg in "$@"; do
+  case "$arg" in
+    --sanitize) sanitize=1 ;;
+    -h|--help) usage; exit 0 ;;
+    *) echo "build.sh: unknown option '$arg' (see ./build.sh --help)" >&2; exit 2 ;;
+  esac
+done
+case "$action" in
+  book|test|bench|cli) ;;
+  -h|--help|help) usage; exit 0 ;;
+  "") usage >&2; exit 2 ;;
+  *) echo "build.sh: unknown action '$action' (book, test, bench or cli)" >&2; exit 2 ;;
+esac
+
+# --- Debian 12 packages -------------------------------------------------------------------
+packages=(g++ cmake ninja-build pkg-config libeigen3-dev doctest-dev libcli11-dev
+  nlohmann-json3-dev libfmt-dev libboost-dev libbenchmark-dev gnuplot-nox doxygen
+  libjs-mathjax fonts-mathjax python3)
+if [ "$action" = test ]; then
+  packages+=(chromium chromium-driver python3-selenium)
+fi
+missing=()
+for p in "${packages[@]}"; do
+  if ! dpkg-query -W -f='${db:Status-Status}' "$p" 2>/dev/null | grep -qx installed; then
+    missing+=("$p")
+  fi
+done
+if [ ${#missing[@]} -gt 0 ]; then
+  if [ "$(id -u)" -eq 0 ]; then
+    echo "build.sh: installing missing Debian packages: ${missing[*]}" >&2
+    export DEBIAN_FRONTEND=noninteractive
+    apt-get update -qq
+    apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null
+  else
+    echo "build.sh: missing Debian packages. Install them with:" >&2
+    echo "  sudo apt-get install --no-install-recommends ${missing[*]}" >&2
+    exit 1
+  fi
+fi
+
+# --- configure and build -----------------------------------------------------------------
+preset=dev
+[ $sanitize -eq 1 ] && preset=sanitize
+bdir=build
+[ $sanitize -eq 1 ] && bdir=build-sanitize
+cmake --preset "$preset" >/dev/null
+jobs=$(nproc 2>/dev/null || echo 2)
+
+case "$action" in
+  cli)
+    cmake --build "$bdir" --target vibook -j "$jobs"
+    echo "vibook: $PWD/$bdir/src/cli/vibook"
+    ;;
+  book)
+    cmake --build "$bdir" -j "$jobs"
+    cmake --build "$bdir" --target book
+    echo "book: $PWD/$bdir/book/html/index.html"
+    ;;
+  test)
+    cmake --build "$bdir" -j "$jobs"
+    cmake --build "$bdir" --target book
+    ctest --test-dir "$bdir" --output-on-failure -j "$jobs"
+    ;;
+  bench)
+    cmake --build "$bdir" --target vibook_bench -j "$jobs"
+    mkdir -p "$bdir/bench"
+    "$bdir/tests/bench/vibook_bench" --benchmark_out="$bdir/bench/bench.json" \
+      --benchmark_out_format=json --benchmark_repetitions=5 \
+      --benchmark_report_aggregates_only=true
+    python3 tests/bench/bench_table.py "$bdir/bench/bench.json" > "$bdir/bench/bench.md"
+    cat "$bdir/bench/bench.md"
+    echo "table for the book: $PWD/$bdir/bench/bench.md (rebuild the book to include it)"
+    ;;
+esac

@@ -1,0 +1,185 @@
+// The `vibook` command: list, figure, figures, claims, run.
+#include <atomic>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <thread>
+
+#include <fmt/format.h>
+
+#include "cli.hpp"
+#include "vibook/claims/ledger.hpp"
+#include "vibook/core/errors.hpp"
+#include "vibook/figures/registry.hpp"
+#include "vibook/plot/gnuplot.hpp"
+
+namespace fs = std::filesystem;
+using namespace vibook;
+
+namespace {
+
+int cmd_list() {
+  fmt::print("FIGURES AND CHECKS\n");
+  for (const auto& c : figures::registry()) {
+    std::string ids;
+    for (const auto& id : c.claims) ids += (ids.empty() ? "" : " ") + id;
+    fmt::print("  {:<16} {:<7} {}  [claims: {}]\n", c.id, c.is_figure ? "figure" : "check", c.title, ids);
+  }
+  fmt::print("\nCLAIMS (status as of the last measurement; run `vibook claims` to measure)\n");
+  // `list` does not run the checks: it reports which claims have a check and which are pending.
+  claims::Ledger ledger;
+  for (const auto& row : ledger.rows()) {
+    std::string by;
+    for (const auto& c : figures::registry()) {
+      for (const auto& id : c.claims) {
+        if (id == row.info.id) by = c.id;
+      }
+    }
+    fmt::print("  {:<8} {:<12} {:<18} {}\n", row.info.id, by.empty() ? "pending" : "checked",
+               by.empty() ? "-" : by, row.info.title);
+  }
+  return cli::kOk;
+}
+
+void ensure_writable_dir(const fs::path& dir) {
+  std::error_code ec;
+  fs::create_directories(dir, ec);
+  if (ec || !fs::is_directory(dir)) {
+    throw ArgumentError("--out", fmt::format("cannot create directory '{}'", dir.string()));
+  }
+  const fs::path probe = dir / ".vibook-write-test";
+  std::ofstream f(probe);
+  if (!f) throw ArgumentError("--out", fmt::format("directory '{}' is not writable", dir.string()));
+  f.close();
+  fs::remove(probe, ec);
+}
+
+int cmd_figures(std::vector<std::string> ids, const fs::path& out) {
+  std::vector<const figures::Check*> todo;
+  if (ids.empty()) {
+    for (const auto& c : figures::registry()) {
+      if (c.is_figure) todo.push_back(&c);
+    }
+  } else {
+    for (const auto& id : ids) {
+      const auto* c = figures::find(id);
+      if (!c || !c->is_figure) throw ArgumentError("ID", fmt::format("unknown figure '{}' (see `vibook list`)", id));
+      todo.push_back(c);
+    }
+  }
+  ensure_writable_dir(out);
+  // Figures are independent: one thread per figure, at most one per core.
+  std::vector<figures::FigureOutput> outputs(todo.size());
+  std::vector<std::exception_ptr> errors(todo.size());
+  std::atomic<std::size_t> next{0};
+  auto worker = [&] {
+    for (std::size_t i = next++; i < todo.size(); i = next++) {
+      try {
+        outputs[i] = figures::make_figure(*todo[i], out);
+      } catch (...) {
+        errors[i] = std::current_exception();
+      }
+    }
+  };
+  std::vector<std::thread> pool;
+  const unsigned jobs = std::max(1u, std::thread::hardware_concurrency());
+  for (unsigned t = 0; t < std::min<std::size_t>(jobs, todo.size()); ++t) pool.emplace_back(worker);
+  for (auto& t : pool) t.join();
+  for (auto& e : errors) {
+    if (e) std::rethrow_exception(e);
+  }
+  int rc = cli::kOk;
+  for (const auto& o : outputs) {
+    for (const auto& r : o.results) {
+      fmt::print("{:<16} {:<8} {}\n", o.id, r.id, claims::to_string(r.status));
+    }
+    if (o.rendered) {
+      fmt::print("{:<16} wrote {}/{{{}.svg,{}.png,claims.json,*.csv}}\n", o.id, o.dir.string(), o.id, o.id);
+    } else {
+      fmt::print(stderr, "vibook: {}: not rendered: {}\n", o.id, o.render_error);
+      rc = cli::kFailure;
+    }
+  }
+  return rc;
+}
+
+int cmd_claims(bool json, const std::string& json_out, const std::string& html_out) {
+  const claims::Ledger ledger = figures::measure_all();
+  auto write = [](const std::string& path, const std::string& text, const char* arg) {
+    std::ofstream f(path);
+    if (!f) throw ArgumentError(arg, fmt::format("cannot open '{}' for writing", path));
+    f << text;
+  };
+  if (!json_out.empty()) write(json_out, ledger.to_json().dump(2) + "\n", "--json-out");
+  if (!html_out.empty()) write(html_out, ledger.to_html(), "--html-out");
+  if (json) {
+    std::cout << ledger.to_json().dump(2) << '\n';
+  } else if (json_out.empty() && html_out.empty()) {
+    std::cout << ledger.to_table();
+  }
+  return cli::kOk;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  CLI::App app{"vibook — variational integrators, checked against their papers.\n"
+               "Exit status: 0 success, 1 other failure, 2 bad argument, 3 numerical failure."};
+  app.set_version_flag("--version", std::string("vibook ") + VIBOOK_VERSION);
+  app.require_subcommand(1);
+
+  app.add_subcommand("list", "List every figure, check and claim");
+
+  auto* fig = app.add_subcommand("figure", "Regenerate the named figures: DIR/ID/ holds CSV, ID.svg, ID.png, claims.json");
+  std::vector<std::string> fig_ids;
+  std::string fig_out = "vibook-figures";
+  fig->add_option("ID", fig_ids, "figure IDs (see `vibook list`)")->required();
+  fig->add_option("--out", fig_out, "output directory (default ./vibook-figures)");
+
+  auto* figs = app.add_subcommand("figures", "Regenerate every figure, in parallel");
+  std::string figs_out = "vibook-figures";
+  figs->add_option("--out", figs_out, "output directory (default ./vibook-figures)");
+
+  auto* cl = app.add_subcommand("claims", "Run every claim check and print the ledger");
+  bool cl_json = false;
+  std::string cl_json_out, cl_html_out;
+  cl->add_flag("--json", cl_json, "print the ledger as JSON");
+  cl->add_option("--json-out", cl_json_out, "also write the JSON ledger to this file");
+  cl->add_option("--html-out", cl_html_out, "also write the reproduction report (HTML table) to this file");
+
+  const auto run = cli::add_run_command(app);
+
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::CallForHelp& e) {
+    return app.exit(e);
+  } catch (const CLI::CallForAllHelp& e) {
+    return app.exit(e);
+  } catch (const CLI::CallForVersion& e) {
+    return app.exit(e);
+  } catch (const CLI::ParseError& e) {
+    std::string msg = e.what();
+    for (auto& c : msg) {
+      if (c == '\n') c = ' ';
+    }
+    fmt::print(stderr, "vibook: error: {} (see `vibook --help`)\n", msg);
+    return cli::kBadArgument;
+  }
+
+  try {
+    if (app.got_subcommand("list")) return cmd_list();
+    if (app.got_subcommand("figure")) return cmd_figures(fig_ids, fig_out);
+    if (app.got_subcommand("figures")) return cmd_figures({}, figs_out);
+    if (app.got_subcommand("claims")) return cmd_claims(cl_json, cl_json_out, cl_html_out);
+    return run();
+  } catch (const ArgumentError& e) {
+    fmt::print(stderr, "vibook: error: {}\n", e.what());
+    return cli::kBadArgument;
+  } catch (const NumericalError& e) {
+    fmt::print(stderr, "vibook: numerical failure: {}\n", e.what());
+    return cli::kNumerical;
+  } catch (const std::exception& e) {
+    fmt::print(stderr, "vibook: error: {}\n", e.what());
+    return cli::kFailure;
+  }
+}

@@ -1,0 +1,265 @@
+// `vibook run`: integrate one problem with one method and stream the trajectory as CSV.
+#include <unistd.h>
+
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <numbers>
+#include <optional>
+#include <sstream>
+
+#include <fmt/format.h>
+
+#include "cli.hpp"
+#include "vibook/core/errors.hpp"
+#include "vibook/core/recorder.hpp"
+#include "vibook/integrators/kernels.hpp"
+#include "vibook/kepler/kepler.hpp"
+#include "vibook/mechanics/del_solver.hpp"
+#include "vibook/mechanics/discrete_lagrangian.hpp"
+#include "vibook/problems/problems.hpp"
+
+namespace vibook::cli {
+namespace {
+
+struct RunOptions {
+  std::string problem, method, discrete_lagrangian = "midpoint", csv;
+  double h = 0.01;
+  std::optional<double> t_end, periods, e;
+  std::vector<double> q0, p0;
+  long long every = 1;
+};
+
+void require(bool ok, const std::string& arg, const std::string& msg) {
+  if (!ok) throw ArgumentError(arg, msg);
+}
+
+// Number of steps and the last step's size for a run to t_end with step h: round(T/h) steps
+// when T/h is within rounding of an integer (h = T/n ends exactly at T); otherwise ceil(T/h)
+// steps, the last one shortened so that the run ends at T.
+std::pair<long long, double> step_plan(double T, double h) {
+  const double ratio = T / h;
+  const double n = std::nearbyint(ratio);
+  if (std::abs(ratio - n) <= 64 * kEps * std::max(1.0, ratio)) {
+    return {static_cast<long long>(n), h};
+  }
+  const double full = std::floor(ratio);
+  return {static_cast<long long>(full) + 1, T - full * h};
+}
+
+class Progress {
+ public:
+  explicit Progress(long long total) : total_(total), tty_(::isatty(STDERR_FILENO) != 0) {}
+  void update(long long k) {
+    if (!tty_ || (k & 0x3fff) != 0) return;
+    const auto now = std::chrono::steady_clock::now();
+    if (now - start_ < std::chrono::seconds(2) || now - last_ < std::chrono::milliseconds(500)) return;
+    last_ = now;
+    std::fprintf(stderr, "\rvibook run: step %lld of %lld (%.0f%%)", k, total_, 100.0 * double(k) / double(total_));
+    shown_ = true;
+  }
+  ~Progress() {
+    if (shown_) std::fprintf(stderr, "\n");
+  }
+
+ private:
+  long long total_;
+  bool tty_, shown_ = false;
+  std::chrono::steady_clock::time_point start_ = std::chrono::steady_clock::now(), last_ = start_;
+};
+
+template <int N>
+Vec<double, N> vector_arg(const std::vector<double>& v, const char* name) {
+  require(v.size() == N, name, fmt::format("expects {} comma-separated number(s) for this problem", N));
+  Vec<double, N> out;
+  for (int i = 0; i < N; ++i) {
+    require(std::isfinite(v[i]), name, "values must be finite");
+    out(i) = v[i];
+  }
+  return out;
+}
+
+template <class Problem, class Stepper>
+int integrate(const Problem& P, Stepper stepper, bool implicit, const RunOptions& o) {
+  constexpr int N = Problem::N;
+  constexpr bool kepler = std::is_same_v<Problem, Kepler>;
+
+  // Initial state.
+  State<N> s;
+  if constexpr (kepler) {
+    if (o.e) {
+      require(o.q0.empty() && o.p0.empty(), "--e", "give either --e or --q0/--p0, not both");
+      s = kepler_perihelion_state(*o.e);
+    } else if (!o.q0.empty() || !o.p0.empty()) {
+      s.q = vector_arg<N>(o.q0, "--q0");
+      s.p = vector_arg<N>(o.p0, "--p0");
+    } else {
+      s = kepler_perihelion_state(0.5);
+    }
+  } else {
+    require(!o.e, "--e", "only applies to --problem kepler");
+    s.q = o.q0.empty() ? Vec<double, N>::Constant(1.0) : vector_arg<N>(o.q0, "--q0");
+    s.p = o.p0.empty() ? Vec<double, N>::Zero() : vector_arg<N>(o.p0, "--p0");
+  }
+
+  // End time.
+  double T = 0;
+  if (o.periods) {
+    require(std::isfinite(*o.periods) && *o.periods > 0, "--periods", "must be a positive number");
+    double period = 0;
+    if constexpr (kepler) {
+      period = KeplerOrbit::from_state(s.q, s.p).period();
+    } else if constexpr (std::is_same_v<Problem, HarmonicOscillator>) {
+      period = 2 * std::numbers::pi;
+    } else {
+      throw ArgumentError("--periods", "is defined for kepler and harmonic only; use --t-end");
+    }
+    T = *o.periods * period;
+  } else {
+    T = o.t_end.value_or(10.0);
+    require(std::isfinite(T) && T > 0, "--t-end", "must be a positive number");
+  }
+  const auto [steps, last_h] = step_plan(T, o.h);
+
+  // Output: written to FILE.partial and renamed when the run completes.
+  const bool to_stdout = o.csv == "-";
+  const std::filesystem::path final_path = o.csv;
+  std::filesystem::path tmp_path = final_path;
+  tmp_path += ".partial";
+  std::ofstream file;
+  if (!to_stdout) {
+    file.open(tmp_path, std::ios::out | std::ios::trunc);
+    require(file.good(), "--csv", fmt::format("cannot open '{}' for writing", o.csv));
+  }
+  std::ostream& out = to_stdout ? std::cout : file;
+
+  std::vector<std::string> cols = {"step", "t"};
+  if constexpr (kepler) {
+    cols.insert(cols.end(), {"q1", "q2", "p1", "p2", "H", "L", "ecc", "omega"});
+  } else {
+    cols.insert(cols.end(), {"q", "p", "H"});
+  }
+  if (implicit) cols.insert(cols.end(), {"residual", "iterations"});
+  TrajectoryRecorder rec(out, cols, o.every);
+
+  std::vector<double> row(cols.size());
+  double omega_prev = 0, omega_unwrapped = 0;
+  bool first = true;
+  SolveReport rep{0.0, 0, true};
+  auto offer = [&](long long k, double t) {
+    std::size_t c = 0;
+    row[c++] = double(k);
+    row[c++] = t;
+    if constexpr (kepler) {
+      const KeplerInvariants inv = kepler_invariants(s.q, s.p);
+      if (first) {
+        omega_unwrapped = inv.omega;
+      } else {
+        double d = inv.omega - omega_prev;
+        d -= 2 * std::numbers::pi * std::nearbyint(d / (2 * std::numbers::pi));
+        omega_unwrapped += d;
+      }
+      omega_prev = inv.omega;
+      first = false;
+      for (double v : {s.q(0), s.q(1), s.p(0), s.p(1), inv.H, inv.L, inv.ecc, omega_unwrapped}) row[c++] = v;
+    } else {
+      for (double v : {s.q(0), s.p(0), energy(P, s.q, s.p)}) row[c++] = v;
+    }
+    if (implicit) {
+      row[c++] = rep.residual;
+      row[c++] = double(rep.iterations);
+    }
+    rec.offer(k, row);
+  };
+
+  Progress progress(steps);
+  offer(0, 0.0);
+  long long k = 1;
+  try {
+    for (; k <= steps; ++k) {
+      const double hk = k == steps ? last_h : o.h;
+      rep = stepper.step(s.q, s.p, hk);
+      if (!s.q.allFinite() || !s.p.allFinite()) {
+        throw NumericalError(fmt::format("state became non-finite at step {}", k));
+      }
+      offer(k, k == steps ? T : double(k) * o.h);
+      progress.update(k);
+    }
+  } catch (const NumericalError& e) {
+    rec.finish();
+    std::string where = fmt::format("step {} (t = {:.17g}), from q = (", k, double(k - 1) * o.h);
+    for (int i = 0; i < N; ++i) where += fmt::format("{}{:.17g}", i ? ", " : "", s.q(i));
+    where += "), p = (";
+    for (int i = 0; i < N; ++i) where += fmt::format("{}{:.17g}", i ? ", " : "", s.p(i));
+    where += ")";
+    const std::string kept =
+        to_stdout ? "the rows before it were written to standard output"
+                  : fmt::format("the rows before it are in '{}' (incomplete)", tmp_path.string());
+    throw NumericalError(fmt::format("{} at {}; {}", e.what(), where, kept));
+  }
+  rec.finish();
+  if (!to_stdout) {
+    file.close();
+    require(!file.fail(), "--csv", fmt::format("error while writing '{}'", tmp_path.string()));
+    std::filesystem::rename(tmp_path, final_path);
+  }
+  return kOk;
+}
+
+template <class Problem>
+int dispatch_method(const Problem& P, const RunOptions& o) {
+  constexpr int N = Problem::N;
+  const auto L = mechanical_lagrangian(P);
+  if (o.method == "se") return integrate(P, SymplecticEuler<Problem>(P), false, o);
+  if (o.method == "se-adjoint") return integrate(P, SymplecticEulerAdjoint<Problem>(P), false, o);
+  if (o.method == "sv") return integrate(P, StormerVerlet<Problem>(P), false, o);
+  if (o.method == "midpoint") return integrate(P, ImplicitMidpoint<Problem>(P), true, o);
+  // del-generic: the generic discrete Euler–Lagrange solver on the chosen discrete Lagrangian.
+  const auto& d = o.discrete_lagrangian;
+  if (d == "midpoint") return integrate(P, make_del_integrator<N>(midpoint_dl(L)), true, o);
+  if (d == "sv") return integrate(P, make_del_integrator<N>(stormer_verlet_dl(L)), true, o);
+  if (d == "se") return integrate(P, make_del_integrator<N>(symplectic_euler_dl(L)), true, o);
+  return integrate(P, make_del_integrator<N>(symplectic_euler_adjoint_dl(L)), true, o);
+}
+
+}  // namespace
+
+std::function<int()> add_run_command(CLI::App& app) {
+  auto o = std::make_shared<RunOptions>();
+  auto* run = app.add_subcommand("run", "Integrate a problem with a method and write the trajectory as CSV");
+  run->add_option("--problem", o->problem, "harmonic, pendulum or kepler")
+      ->required()
+      ->check(CLI::IsMember({"harmonic", "pendulum", "kepler"}));
+  run->add_option("--method", o->method,
+                  "se (drift-kick symplectic Euler), se-adjoint (kick-drift), sv (Störmer–Verlet), "
+                  "midpoint (implicit midpoint), del-generic (generic solver)")
+      ->required()
+      ->check(CLI::IsMember({"se", "se-adjoint", "sv", "midpoint", "del-generic"}));
+  run->add_option("--discrete-lagrangian", o->discrete_lagrangian,
+                  "for del-generic: midpoint, sv, se or se-adjoint (default midpoint)")
+      ->check(CLI::IsMember({"midpoint", "sv", "se", "se-adjoint"}));
+  run->add_option("--h", o->h, "step size (default 0.01)");
+  auto* t_end = run->add_option("--t-end", o->t_end, "final time (default 10)");
+  auto* periods = run->add_option("--periods", o->periods, "final time in periods (kepler, harmonic)");
+  t_end->excludes(periods);
+  run->add_option("--e", o->e, "kepler: eccentricity in [0,1); starts at perihelion of the orbit with a = 1");
+  run->add_option("--q0", o->q0, "initial position, comma-separated")->delimiter(',');
+  run->add_option("--p0", o->p0, "initial momentum, comma-separated")->delimiter(',');
+  run->add_option("--every", o->every, "write every K-th state (first and last always)");
+  run->add_option("--csv", o->csv, "output file ('-' for standard output)")->required();
+
+  return [o, run]() -> int {
+    if (!*run) return -1;
+    require(std::isfinite(o->h) && o->h > 0, "--h", "must be a positive finite number");
+    require(o->every >= 1, "--every", "must be at least 1");
+    if (o->e) require(*o->e >= 0 && *o->e < 1, "--e", "eccentricity must lie in [0, 1)");
+    if (o->problem == "harmonic") return dispatch_method(HarmonicOscillator{}, *o);
+    if (o->problem == "pendulum") return dispatch_method(Pendulum{}, *o);
+    return dispatch_method(Kepler{}, *o);
+  };
+}
+
+}  // namespace vibook::cli

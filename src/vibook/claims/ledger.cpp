@@ -1,0 +1,126 @@
+#include "vibook/claims/ledger.hpp"
+
+#include <algorithm>
+#include <stdexcept>
+
+#include <fmt/format.h>
+
+namespace vibook::claims {
+
+std::string_view to_string(Status s) {
+  switch (s) {
+    case Status::pending: return "pending";
+    case Status::reproduced: return "reproduced";
+    case Status::reproduced_with_caveat: return "reproduced-with-caveat";
+    case Status::not_reproduced: return "not-reproduced";
+    case Status::erratum: return "erratum";
+  }
+  return "pending";
+}
+
+Ledger::Ledger() {
+  for (const auto& info : catalogue()) {
+    ClaimResult r;
+    r.id = info.id;
+    rows_.push_back({info, r});
+  }
+}
+
+const Ledger::Row* Ledger::find(std::string_view id) const {
+  const auto it =
+      std::find_if(rows_.begin(), rows_.end(), [&](const Row& r) { return r.info.id == id; });
+  return it == rows_.end() ? nullptr : &*it;
+}
+
+void Ledger::record(const ClaimResult& r) {
+  for (auto& row : rows_) {
+    if (row.info.id == r.id) {
+      row.result = r;
+      return;
+    }
+  }
+  if (!r.info || r.id.find("-ERR-") == std::string::npos) {
+    throw std::invalid_argument("claims ledger: unknown claim ID '" + r.id +
+                                "' (only <paper>-ERR-<equation> IDs may be added)");
+  }
+  rows_.push_back({*r.info, r});
+}
+
+nlohmann::json results_to_json(const std::vector<ClaimResult>& results) {
+  nlohmann::json arr = nlohmann::json::array();
+  for (const auto& r : results) {
+    nlohmann::json values = nlohmann::json::object();
+    for (const auto& [k, v] : r.values) values[k] = v;
+    arr.push_back({{"id", r.id}, {"status", to_string(r.status)}, {"values", values},
+                   {"note", r.note}, {"source", r.source}});
+  }
+  return {{"claims", arr}};
+}
+
+nlohmann::json Ledger::to_json() const {
+  nlohmann::json arr = nlohmann::json::array();
+  for (const auto& row : rows_) {
+    nlohmann::json values = nlohmann::json::object();
+    for (const auto& [k, v] : row.result.values) values[k] = v;
+    arr.push_back({{"id", row.info.id},
+                   {"paper", row.info.paper},
+                   {"where", row.info.where},
+                   {"title", row.info.title},
+                   {"status", to_string(row.result.status)},
+                   {"values", values},
+                   {"note", row.result.note},
+                   {"source", row.result.source}});
+  }
+  return {{"claims", arr}};
+}
+
+std::string Ledger::to_table() const {
+  std::string out = fmt::format("{:<10} {:<23} {}\n", "ID", "STATUS", "TITLE");
+  for (const auto& row : rows_) {
+    out += fmt::format("{:<10} {:<23} {}\n", row.info.id, to_string(row.result.status),
+                       row.info.title);
+    for (const auto& [k, v] : row.result.values) out += fmt::format("{:>36} = {:.6g}\n", k, v);
+  }
+  return out;
+}
+
+namespace {
+std::string escape(std::string_view s) {
+  std::string o;
+  for (char c : s) {
+    switch (c) {
+      case '<': o += "&lt;"; break;
+      case '>': o += "&gt;"; break;
+      case '&': o += "&amp;"; break;
+      case '"': o += "&quot;"; break;
+      case '\\': o += "&#92;"; break;  // keep TeX delimiters out of MathJax's reach
+      case '$': o += "&#36;"; break;
+      default: o += c;
+    }
+  }
+  return o;
+}
+}  // namespace
+
+std::string Ledger::to_html(std::string_view paper_filter) const {
+  std::string out =
+      "<table class=\"vibook-claims\">\n<tr><th>ID</th><th>Where</th><th>Claim</th>"
+      "<th>Status</th><th>Measured</th><th>Note</th></tr>\n";
+  for (const auto& row : rows_) {
+    if (!paper_filter.empty() && row.info.paper != paper_filter) continue;
+    std::string values;
+    for (const auto& [k, v] : row.result.values) {
+      values += fmt::format("{}&nbsp;=&nbsp;{:.4g}<br/>", escape(k), v);
+    }
+    const std::string status{to_string(row.result.status)};
+    out += fmt::format(
+        "<tr class=\"status-{}\"><td>{}</td><td>{}</td><td>{}</td><td><b>{}</b></td>"
+        "<td>{}</td><td>{}</td></tr>\n",
+        status, escape(row.info.id), escape(row.info.where), escape(row.info.title), status,
+        values, escape(row.result.note));
+  }
+  out += "</table>\n";
+  return out;
+}
+
+}  // namespace vibook::claims

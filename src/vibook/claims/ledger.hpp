@@ -1,0 +1,72 @@
+/// \file ledger.hpp
+/// \brief The claims ledger: every claim of the three papers with a stable ID, the paper's
+/// statement, what vibook measured and the resulting status. Statuses are set only by check
+/// functions that measure; an unmeasured claim stays `pending`.
+#pragma once
+
+#include <optional>
+#include <string>
+#include <string_view>
+#include <utility>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+namespace vibook::claims {
+
+enum class Status { pending, reproduced, reproduced_with_caveat, not_reproduced, erratum };
+
+/// "pending", "reproduced", "reproduced-with-caveat", "not-reproduced", "erratum".
+std::string_view to_string(Status s);
+
+/// A claim as catalogued (CLAIMS.md): ID, paper key (S, V or SS), where in the paper, title.
+struct ClaimInfo {
+  std::string id;
+  std::string paper;
+  std::string where;
+  std::string title;
+};
+
+/// One measurement of a claim, produced by a check function.
+struct ClaimResult {
+  std::string id;
+  Status status = Status::pending;
+  std::vector<std::pair<std::string, double>> values;  ///< measured numbers, in order
+  std::string note;                                     ///< what was measured and how
+  std::string source;                                   ///< check or figure that measured it
+  std::optional<ClaimInfo> info;  ///< required for IDs not in the catalogue (errata)
+};
+
+/// Every catalogued claim, in the order of CLAIMS.md.
+const std::vector<ClaimInfo>& catalogue();
+
+/// The ledger: the catalogue, each claim pending until a result is recorded.
+class Ledger {
+ public:
+  struct Row {
+    ClaimInfo info;
+    ClaimResult result;
+  };
+
+  Ledger();
+  /// Record a measurement. An ID outside the catalogue must carry `info` and be an erratum
+  /// claim `<paper>-ERR-<equation>`; otherwise std::invalid_argument.
+  void record(const ClaimResult& r);
+  const std::vector<Row>& rows() const { return rows_; }
+  const Row* find(std::string_view id) const;
+
+  /// {"claims":[{"id","paper","title","status","values":{name:number},"note"}]}
+  nlohmann::json to_json() const;
+  /// Plain-text table for the terminal.
+  std::string to_table() const;
+  /// HTML table for the book's reproduction report (cells escaped).
+  std::string to_html(std::string_view paper_filter = {}) const;
+
+ private:
+  std::vector<Row> rows_;
+};
+
+/// JSON of a list of results (one figure's claims.json).
+nlohmann::json results_to_json(const std::vector<ClaimResult>& results);
+
+}  // namespace vibook::claims

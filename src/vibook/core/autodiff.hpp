@@ -1,0 +1,116 @@
+/// \file autodiff.hpp
+/// \brief Eigen AutoDiff helpers: first derivatives, and mixed second derivatives by
+/// nesting one AutoDiffScalar inside another (forward over forward).
+///
+/// User code writes a function once, templated on its scalar (a generic lambda is enough);
+/// these helpers evaluate it on AutoDiff scalars. Constants may be written as plain
+/// `double` literals: the trait specialisations below let nested AutoDiff scalars mix
+/// with `double` inside Eigen expressions.
+#pragma once
+
+// Eigen/Dense must precede the unsupported AutoDiff module.
+#include "vibook/core/types.hpp"
+
+#include <unsupported/Eigen/AutoDiff>
+
+#include <type_traits>
+
+namespace Eigen {
+// Eigen declares AutoDiffScalar<D> (op) D::Scalar; for the nested type D::Scalar is itself
+// an AutoDiffScalar, so `vector / 2.0` would not compile. Declare the double case.
+template <class InnerDer, int R, class BinOp>
+struct ScalarBinaryOpTraits<AutoDiffScalar<Matrix<AutoDiffScalar<InnerDer>, R, 1>>, double,
+                            BinOp> {
+  using ReturnType = AutoDiffScalar<Matrix<AutoDiffScalar<InnerDer>, R, 1>>;
+};
+template <class InnerDer, int R, class BinOp>
+struct ScalarBinaryOpTraits<double, AutoDiffScalar<Matrix<AutoDiffScalar<InnerDer>, R, 1>>,
+                            BinOp> {
+  using ReturnType = AutoDiffScalar<Matrix<AutoDiffScalar<InnerDer>, R, 1>>;
+};
+}  // namespace Eigen
+
+namespace vibook::ad {
+
+/// First-order forward AutoDiff scalar with N directional derivatives.
+template <int N>
+using Dual = Eigen::AutoDiffScalar<Vec<double, N>>;
+
+/// Second-order (nested) forward AutoDiff scalar: value and derivatives are Dual<N>.
+template <int N>
+using Dual2 = Eigen::AutoDiffScalar<Eigen::Matrix<Dual<N>, N, 1>>;
+
+/// Seed x as the N independent variables of a Dual<N> vector.
+template <int N>
+Vec<Dual<N>, N> variables(const Vec<double, N>& x) {
+  Vec<Dual<N>, N> v;
+  for (int i = 0; i < N; ++i) v(i) = Dual<N>(x(i), N, i);
+  return v;
+}
+
+/// Compile-time guard: a callable evaluated on AutoDiff scalars must return the scalar type
+/// itself. An Eigen AutoDiff *expression* returned from a lambda with a deduced return type
+/// refers to temporaries that are gone when the lambda returns.
+template <class Result, class Scalar>
+inline constexpr bool returns_scalar = std::is_same_v<std::remove_cvref_t<Result>, Scalar>;
+
+#define VIBOOK_RETURNS_SCALAR_MESSAGE                                                       \
+  "vibook: the function must return its scalar type, not an Eigen AutoDiff expression; "   \
+  "declare the lambda's return type, e.g. `-> vibook::scalar_t<decltype(h)>`"
+
+/// Gradient of a scalar function f(Vec<S,N>) -> S at x.
+template <int N, class F>
+Vec<double, N> gradient(F&& f, const Vec<double, N>& x) {
+  using R = decltype(f(variables<N>(x)));
+  static_assert(returns_scalar<R, Dual<N>>, VIBOOK_RETURNS_SCALAR_MESSAGE);
+  return f(variables<N>(x)).derivatives();
+}
+
+/// Jacobian of a vector function f(Vec<S,N>) -> Vec<S,N> at x (row i = d f_i / d x).
+template <int N, class F>
+Mat<double, N> jacobian(F&& f, const Vec<double, N>& x) {
+  const Vec<Dual<N>, N> y = f(variables<N>(x));
+  Mat<double, N> J;
+  for (int i = 0; i < N; ++i) J.row(i) = y(i).derivatives().transpose();
+  return J;
+}
+
+/// Value and all first and mixed second derivatives of a two-point function F(a, b, c)
+/// (c a parameter, not differentiated): D1 = dF/da, D2 = dF/db, D12(i, j) = d²F/da_i db_j.
+
+template <int N>
+struct TwoPoint {
+  double value = 0.0;
+  Vec<double, N> D1, D2;
+  Mat<double, N> D12;
+};
+
+/// Evaluate F(a, b, c) once on nested dual numbers: a carries the inner derivatives,
+/// b the outer ones, so the mixed block comes out of a single evaluation.
+template <int N, class F>
+TwoPoint<N> two_point(F&& f, const Vec<double, N>& a, const Vec<double, N>& b, double c) {
+  using In = Dual<N>;
+  using Out = Dual2<N>;
+  Vec<Out, N> A, B;
+  for (int i = 0; i < N; ++i) {
+    A(i) = Out(In(a(i), N, i));
+    A(i).derivatives().setZero();
+    B(i) = Out(In(b(i)));
+    B(i).derivatives().setZero();
+    B(i).derivatives()(i) = In(1.0);
+  }
+  Out C{In(c)};
+  C.derivatives().setZero();
+  static_assert(returns_scalar<decltype(f(A, B, C)), Out>, VIBOOK_RETURNS_SCALAR_MESSAGE);
+  const Out r = f(A, B, C);
+  TwoPoint<N> out;
+  out.value = r.value().value();
+  out.D1 = r.value().derivatives();
+  for (int j = 0; j < N; ++j) {
+    out.D2(j) = r.derivatives()(j).value();
+    out.D12.col(j) = r.derivatives()(j).derivatives();
+  }
+  return out;
+}
+
+}  // namespace vibook::ad

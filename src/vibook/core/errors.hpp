@@ -1,0 +1,46 @@
+/// \file errors.hpp
+/// \brief Typed errors. The command line maps ArgumentError to exit status 2 and
+/// NumericalError (including SolveError) to exit status 3.
+#pragma once
+
+#include <stdexcept>
+#include <string>
+
+namespace vibook {
+
+/// Outcome of one implicit solve: every solve in vibook reports this.
+struct SolveReport {
+  double residual = 0.0;  ///< max-norm of the residual at the returned point
+  int iterations = 0;     ///< Newton iterations taken
+  bool converged = false;
+};
+
+/// A user-supplied argument is invalid (command line: exit status 2).
+class ArgumentError : public std::invalid_argument {
+ public:
+  ArgumentError(const std::string& argument, const std::string& message)
+      : std::invalid_argument(argument + ": " + message), argument_(argument) {}
+  const std::string& argument() const { return argument_; }
+
+ private:
+  std::string argument_;
+};
+
+/// A numerical method could not produce a valid result (command line: exit status 3).
+class NumericalError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+/// An implicit solve failed to converge, or produced a non-finite value.
+class SolveError : public NumericalError {
+ public:
+  SolveError(const std::string& what, SolveReport report)
+      : NumericalError(what), report_(report) {}
+  const SolveReport& report() const { return report_; }
+
+ private:
+  SolveReport report_;
+};
+
+}  // namespace vibook

@@ -1,0 +1,60 @@
+/// \file registry.hpp
+/// \brief The check and figure registry. A *check* measures one or more claims; a *figure*
+/// is a check that also writes CSV data and has a gnuplot script figures/<id>.gp. The
+/// figure's doctest and `vibook figure <id>` call the same `run` function.
+#pragma once
+
+#include <filesystem>
+#include <functional>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "vibook/claims/ledger.hpp"
+
+namespace vibook::figures {
+
+/// Where a check writes its data: nothing (measure only) or a directory for its CSV files.
+struct Context {
+  std::optional<std::filesystem::path> out_dir;
+};
+
+struct Check {
+  std::string id;
+  std::string title;
+  bool is_figure = false;
+  std::vector<std::string> claims;  ///< claim IDs this check measures
+  std::function<std::vector<claims::ClaimResult>(const Context&)> run;
+};
+
+/// Every check and figure, in a fixed order.
+const std::vector<Check>& registry();
+/// The check with this ID, or nullptr.
+const Check* find(std::string_view id);
+
+/// Outcome of regenerating one figure into out_root/<id>/.
+struct FigureOutput {
+  std::string id;
+  std::filesystem::path dir;
+  std::vector<claims::ClaimResult> results;
+  bool rendered = false;
+  std::string render_error;  ///< set when gnuplot was missing or failed (CSV still written)
+};
+
+/// Run the figure's computation with out_root/<id>/ as data directory, write claims.json,
+/// then render with gnuplot. A rendering failure is reported in the result, not thrown.
+FigureOutput make_figure(const Check& check, const std::filesystem::path& out_root);
+
+/// Run checks in parallel (one task per check, at most `jobs` at a time; 0 = hardware).
+std::vector<std::vector<claims::ClaimResult>> run_checks(const std::vector<const Check*>& checks,
+                                                         unsigned jobs = 0);
+
+/// Run every check and record the results in a fresh ledger.
+claims::Ledger measure_all(unsigned jobs = 0);
+
+// The individual checks (one translation unit each).
+Check vermeeren_fig1();
+Check check_v_ex1();
+
+}  // namespace vibook::figures

@@ -1,0 +1,78 @@
+#include "vibook/plot/gnuplot.hpp"
+
+#include <fcntl.h>
+#include <spawn.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <cstdlib>
+#include <fstream>
+#include <sstream>
+#include <vector>
+
+extern char** environ;
+
+namespace vibook::plot {
+
+std::filesystem::path find_on_path(const std::string& program) {
+  const char* path = std::getenv("PATH");
+  if (!path) return {};
+  std::stringstream ss(path);
+  std::string dir;
+  while (std::getline(ss, dir, ':')) {
+    if (dir.empty()) continue;
+    const std::filesystem::path p = std::filesystem::path(dir) / program;
+    if (::access(p.c_str(), X_OK) == 0) return p;
+  }
+  return {};
+}
+
+std::filesystem::path scripts_dir() {
+  if (const char* env = std::getenv("VIBOOK_FIGURES_DIR"); env && *env) return env;
+  return VIBOOK_FIGURES_DIR;
+}
+
+void render(const std::string& id, const std::filesystem::path& data_dir) {
+  const auto gnuplot = find_on_path("gnuplot");
+  if (gnuplot.empty()) {
+    throw PlotError("gnuplot not found on PATH; the CSV data are in " + data_dir.string() +
+                    " (install the Debian package gnuplot-nox to render " + id + ")");
+  }
+  const auto script = scripts_dir() / (id + ".gp");
+  if (!std::filesystem::exists(script)) {
+    throw PlotError("figure script " + script.string() + " does not exist");
+  }
+  const auto base = data_dir / id;
+  const auto log = data_dir / "gnuplot.log";
+  std::vector<std::string> args = {gnuplot.string(), "-c", script.string(), data_dir.string(),
+                                   base.string()};
+  std::vector<char*> argv;
+  for (auto& a : args) argv.push_back(a.data());
+  argv.push_back(nullptr);
+
+  posix_spawn_file_actions_t fa;
+  posix_spawn_file_actions_init(&fa);
+  posix_spawn_file_actions_addopen(&fa, STDOUT_FILENO, log.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+  posix_spawn_file_actions_adddup2(&fa, STDOUT_FILENO, STDERR_FILENO);
+  posix_spawn_file_actions_addopen(&fa, STDIN_FILENO, "/dev/null", O_RDONLY, 0);
+  pid_t pid = 0;
+  const int rc = posix_spawn(&pid, gnuplot.c_str(), &fa, nullptr, argv.data(), environ);
+  posix_spawn_file_actions_destroy(&fa);
+  if (rc != 0) throw PlotError("could not start gnuplot for " + id);
+  int status = 0;
+  if (waitpid(pid, &status, 0) < 0 || !WIFEXITED(status) || WEXITSTATUS(status) != 0) {
+    std::ifstream in(log);
+    std::stringstream msg;
+    msg << in.rdbuf();
+    throw PlotError("gnuplot failed on " + script.string() + ":\n" + msg.str());
+  }
+  for (const char* ext : {".svg", ".png"}) {
+    auto f = base;
+    f += ext;
+    if (!std::filesystem::exists(f) || std::filesystem::file_size(f) == 0) {
+      throw PlotError("gnuplot did not write " + f.string());
+    }
+  }
+}
+
+}  // namespace vibook::plot
