@@ -14,7 +14,9 @@
 /// **Return the scalar type, not an expression.** With Eigen AutoDiff, `a - b` is an
 /// expression object that refers to temporaries; returned from a lambda with a deduced return
 /// type it dangles. Write `-> vibook::scalar_t<decltype(h)>` (or of q). The derivative helpers
-/// check this at compile time.
+/// check this at compile time. Mixed second derivatives use nested AutoDiff, on which
+/// Eigen's sqrt, sin, cos, exp and log work but `pow` does not: write integer powers as
+/// products (q*q*q*q).
 #pragma once
 
 #include <type_traits>

@@ -1,0 +1,139 @@
+// Doctests of core/: Newton reports and typed failures, the streaming recorder, order fits.
+#include <sys/resource.h>
+
+#include <cmath>
+#include <limits>
+#include <sstream>
+
+#include <doctest/doctest.h>
+
+#include "vibook/core/newton.hpp"
+#include "vibook/core/order.hpp"
+#include "vibook/core/recorder.hpp"
+#include "vibook/integrators/kernels.hpp"
+#include "vibook/kepler/kepler.hpp"
+
+using namespace vibook;
+
+TEST_CASE("newton_solve converges, reports residual and iterations") {
+  // x² = 2 componentwise, in 2-D.
+  Vec<double, 2> x(1.0, 3.0);
+  auto fj = [](const Vec<double, 2>& v, Vec<double, 2>& F, Mat<double, 2>& J) {
+    F = v.array().square() - 2.0;
+    J = (2.0 * v).asDiagonal();
+  };
+  const SolveReport r = newton_solve<2>(x, fj, NewtonOptions{});
+  CHECK(r.converged);
+  CHECK(r.iterations >= 4);
+  CHECK(r.iterations <= 10);
+  CHECK(r.residual <= 4 * kEps);
+  CHECK(std::abs(x(0) - std::sqrt(2.0)) <= 2 * kEps);
+  CHECK(std::abs(x(1) - std::sqrt(2.0)) <= 2 * kEps);
+}
+
+TEST_CASE("newton_solve fails with a typed error instead of looping or returning NaN") {
+  SUBCASE("no root: x² + 1 = 0") {
+    Vec<double, 1> x(0.5);
+    auto fj = [](const Vec<double, 1>& v, Vec<double, 1>& F, Mat<double, 1>& J) {
+      F(0) = v(0) * v(0) + 1.0;
+      J(0, 0) = 2.0 * v(0);
+    };
+    NewtonOptions opt;
+    opt.max_iterations = 30;
+    try {
+      newton_solve<1>(x, fj, opt, "test solve");
+      FAIL("expected SolveError");
+    } catch (const SolveError& e) {
+      CHECK_FALSE(e.report().converged);
+      CHECK(e.report().iterations <= 30);
+      CHECK(std::string(e.what()).find("test solve") != std::string::npos);
+    }
+  }
+  SUBCASE("singular Jacobian") {
+    Vec<double, 1> x(0.0);
+    auto fj = [](const Vec<double, 1>& v, Vec<double, 1>& F, Mat<double, 1>& J) {
+      F(0) = v(0) * v(0) + 1.0;
+      J(0, 0) = 2.0 * v(0);
+    };
+    CHECK_THROWS_AS(newton_solve<1>(x, fj, NewtonOptions{}), SolveError);
+  }
+  SUBCASE("non-finite residual") {
+    Vec<double, 1> x(1.0);
+    auto fj = [](const Vec<double, 1>&, Vec<double, 1>& F, Mat<double, 1>& J) {
+      F(0) = std::numeric_limits<double>::quiet_NaN();
+      J(0, 0) = 1.0;
+    };
+    CHECK_THROWS_AS(newton_solve<1>(x, fj, NewtonOptions{}), SolveError);
+  }
+}
+
+TEST_CASE("TrajectoryRecorder: header, every K-th row, first and last always") {
+  std::ostringstream out;
+  TrajectoryRecorder rec(out, {"step", "x"}, 3);
+  for (int k = 0; k <= 7; ++k) rec.offer(k, std::array<double, 2>{double(k), 0.5 * k});
+  rec.finish();
+  CHECK(out.str() == "step,x\n0,0\n3,1.5\n6,3\n7,3.5\n");
+  CHECK(rec.rows_written() == 4);
+  CHECK_THROWS_AS(rec.offer(8, std::array<double, 1>{1.0}), std::invalid_argument);
+}
+
+namespace {
+// Counts bytes without keeping them.
+class CountingBuf : public std::streambuf {
+ public:
+  std::size_t bytes = 0;
+
+ protected:
+  int_type overflow(int_type c) override {
+    ++bytes;
+    return c;
+  }
+  std::streamsize xsputn(const char*, std::streamsize n) override {
+    bytes += static_cast<std::size_t>(n);
+    return n;
+  }
+};
+long max_rss_kib() {
+  rusage u{};
+  getrusage(RUSAGE_SELF, &u);
+  return u.ru_maxrss;
+}
+}  // namespace
+
+TEST_CASE("recorder memory is O(1) in the number of steps (1e7 Kepler steps)") {
+  CountingBuf buf;
+  std::ostream out(&buf);
+  TrajectoryRecorder rec(out, {"step", "q1", "q2", "p1", "p2"}, 1000);
+  StormerVerlet<Kepler> sv;
+  State<2> s = kepler_perihelion_state(0.5);
+  std::array<double, 5> row{};
+  auto run = [&](long from, long to) {
+    for (long k = from; k < to; ++k) {
+      sv.step(s.q, s.p, 1e-3);
+      row = {double(k), s.q(0), s.q(1), s.p(0), s.p(1)};
+      rec.offer(k, row);
+    }
+  };
+  run(1, 1'000'000);
+  const long rss_1e6 = max_rss_kib();
+  run(1'000'000, 10'000'000);
+  rec.finish();
+  const long rss_1e7 = max_rss_kib();
+  CHECK(rec.rows_written() == 10'000);
+  CHECK(buf.bytes > 0);
+  // Ten times the steps, the same memory: growth under 1 MiB (a stored trajectory of 9e6
+  // states would need 360 MB).
+  CHECK(rss_1e7 - rss_1e6 < 1024);
+}
+
+TEST_CASE("fit_order recovers a known power and excludes the round-off plateau") {
+  std::vector<double> h, e;
+  for (int k = 1; k <= 12; ++k) {
+    h.push_back(std::ldexp(1.0, -k));
+    e.push_back(std::max(3.0 * std::pow(h.back(), 2), 1e-6));  // plateau below 1e-6
+  }
+  const OrderFit f = fit_order(h, e, 2e-6);
+  CHECK(std::abs(f.slope - 2.0) < 1e-12);
+  CHECK(f.points == 10);  // h = 2^-11, 2^-12 sit on the plateau
+  CHECK_THROWS_AS(fit_order(h, e, 1.0), std::invalid_argument);
+}
