@@ -111,7 +111,8 @@ int integrate(const Problem& P, Stepper stepper, bool implicit, const RunOptions
     require(std::isfinite(*o.periods) && *o.periods > 0, "--periods", "must be a positive number");
     double period = 0;
     if constexpr (kepler) {
-      period = KeplerOrbit::from_state(s.q, s.p).period();
+      // From --e the orbit has a = 1 by construction: period exactly 2π.
+      period = o.e ? 2 * std::numbers::pi : KeplerOrbit::from_state(s.q, s.p).period();
     } else if constexpr (std::is_same_v<Problem, HarmonicOscillator>) {
       period = 2 * std::numbers::pi;
     } else {

@@ -1,0 +1,89 @@
+#!/usr/bin/env bash
+# The `vibook` command as a user calls it: exit statuses, one-line errors, CSV columns,
+# figures on disk. Usage: cli_test.sh path/to/vibook
+set -u
+V=$1
+tmp=$(mktemp -d)
+trap 'rm -rf "$tmp"' EXIT
+pass=0 fail=0
+ok() { pass=$((pass + 1)); }
+bad() { fail=$((fail + 1)); echo "FAIL: $*"; }
+
+# expect STATUS PATTERN -- ARGS...: exit status and a one-line stderr matching PATTERN.
+expect() {
+  local want=$1 pattern=$2; shift 3
+  "$V" "$@" >"$tmp/out" 2>"$tmp/err"
+  local got=$?
+  if [ "$got" != "$want" ]; then bad "vibook $* -> exit $got, expected $want ($(cat "$tmp/err"))"; return; fi
+  if [ -n "$pattern" ]; then
+    if [ "$(wc -l <"$tmp/err")" != 1 ] || ! grep -q -- "$pattern" "$tmp/err"; then
+      bad "vibook $*: stderr should be one line matching '$pattern', got: $(cat "$tmp/err")"; return
+    fi
+  fi
+  ok
+}
+
+# --- help and version ---------------------------------------------------------------------
+expect 0 "" -- --help
+expect 0 "" -- run --help
+expect 0 "" -- --version
+grep -q "vibook" "$tmp/out" && ok || bad "--version prints the name"
+
+# --- bad arguments: exit 2, one line naming the argument ----------------------------------
+expect 2 "--problem" -- run --problem foo --method sv --csv "$tmp/a.csv"
+expect 2 "--method" -- run --problem kepler --method rk4 --csv "$tmp/a.csv"
+expect 2 "--h" -- run --problem kepler --method sv --h 0 --csv "$tmp/a.csv"
+expect 2 "--h" -- run --problem kepler --method sv --h -0.1 --csv "$tmp/a.csv"
+expect 2 "--h" -- run --problem kepler --method sv --h nan --csv "$tmp/a.csv"
+expect 2 "--h" -- run --problem kepler --method sv --h
+expect 2 "--e" -- run --problem kepler --method sv --e 1 --csv "$tmp/a.csv"
+expect 2 "--e" -- run --problem kepler --method sv --e -0.1 --csv "$tmp/a.csv"
+expect 2 "--e" -- run --problem kepler --method sv --e nan --csv "$tmp/a.csv"
+expect 2 "--csv" -- run --problem kepler --method sv
+expect 2 "--csv" -- run --problem kepler --method sv --csv /nonexistent/dir/out.csv
+expect 2 "--q0" -- run --problem harmonic --method sv --q0 1,2 --csv "$tmp/a.csv"
+expect 2 "--t-end" -- run --problem kepler --method sv --t-end 1 --periods 1 --csv "$tmp/a.csv"
+expect 2 "initial state" -- run --problem kepler --method sv --q0 1,0 --p0 0,2 --periods 1 --csv "$tmp/a.csv"
+expect 2 "ID" -- figure no-such-figure --out "$tmp/f"
+expect 2 "" -- frobnicate
+[ ! -e "$tmp/a.csv" ] && ok || bad "a rejected run must not leave an output file"
+
+# --- every method on every problem --------------------------------------------------------
+for p in harmonic pendulum kepler; do
+  for m in se se-adjoint sv midpoint del-generic; do
+    expect 0 "" -- run --problem "$p" --method "$m" --h 0.05 --t-end 2 --every 10 --csv "$tmp/$p-$m.csv"
+  done
+done
+head -1 "$tmp/kepler-sv.csv" | grep -qx "step,t,q1,q2,p1,p2,H,L,ecc,omega" && ok || bad "kepler CSV header"
+head -1 "$tmp/kepler-midpoint.csv" | grep -qx "step,t,q1,q2,p1,p2,H,L,ecc,omega,residual,iterations" && ok || bad "implicit CSV header"
+head -1 "$tmp/harmonic-sv.csv" | grep -qx "step,t,q,p,H" && ok || bad "harmonic CSV header"
+# 40 steps, every 10th: rows 0,10,20,30,40 (+ header), ending exactly at t = 2.
+[ "$(wc -l <"$tmp/kepler-sv.csv")" = 6 ] && ok || bad "--every rows: $(wc -l <"$tmp/kepler-sv.csv")"
+tail -1 "$tmp/kepler-sv.csv" | grep -q "^40,2," && ok || bad "last row at step 40, t = 2"
+# A step that does not divide T: the last step is shortened and the run still ends at T.
+expect 0 "" -- run --problem harmonic --method sv --h 0.3 --t-end 1 --csv "$tmp/b.csv"
+tail -1 "$tmp/b.csv" | grep -q "^4,1," && ok || bad "shortened last step ends at t = 1"
+# --periods for Kepler: 2π·a^{3/2}; from --e, a = 1 and one period is 2π (629 steps of 0.01,
+# the last one shortened).
+expect 0 "" -- run --problem kepler --method sv --e 0.3 --h 0.01 --periods 1 --every 100000 --csv "$tmp/c.csv"
+tail -1 "$tmp/c.csv" | grep -q "^629,6.2831853071795862," && ok || bad "one Kepler period: $(tail -1 "$tmp/c.csv")"
+
+# --- numerical failure: exit 3, the reason, the partial file named -------------------------
+expect 3 "partial" -- run --problem kepler --method del-generic --q0 1,0 --p0 0,1.4 --h 2 --t-end 100 --csv "$tmp/d.csv"
+[ ! -e "$tmp/d.csv" ] && [ -e "$tmp/d.csv.partial" ] && ok || bad "failed run leaves only FILE.partial"
+
+# --- figures and claims ---------------------------------------------------------------------
+expect 0 "" -- figure vermeeren-fig1 --out "$tmp/f"
+for f in vermeeren-fig1.svg vermeeren-fig1.png claims.json discrete.csv curves.csv; do
+  [ -s "$tmp/f/vermeeren-fig1/$f" ] && ok || bad "figure file $f"
+done
+expect 0 "" -- claims --json
+grep -q '"V-EX3"' "$tmp/out" && ok || bad "claims --json lists V-EX3"
+expect 0 "" -- list
+grep -q "S-F1" "$tmp/out" && ok || bad "list shows every claim"
+# gnuplot missing: a clear error, and the CSV still written.
+PATH=/nonexistent "$V" figure vermeeren-fig1 --out "$tmp/g" 2>"$tmp/err"
+[ $? = 1 ] && grep -q "gnuplot not found" "$tmp/err" && [ -s "$tmp/g/vermeeren-fig1/discrete.csv" ] && ok || bad "missing gnuplot"
+
+echo "cli: $pass passed, $fail failed"
+[ "$fail" = 0 ]
