@@ -41,15 +41,15 @@ int cmd_list() {
   return cli::kOk;
 }
 
-void ensure_writable_dir(const fs::path& dir) {
+void ensure_writable_dir(const fs::path& dir, const char* arg = "--out") {
   std::error_code ec;
   fs::create_directories(dir, ec);
   if (ec || !fs::is_directory(dir)) {
-    throw ArgumentError("--out", fmt::format("cannot create directory '{}'", dir.string()));
+    throw ArgumentError(arg, fmt::format("cannot create directory '{}'", dir.string()));
   }
   const fs::path probe = dir / ".vibook-write-test";
   std::ofstream f(probe);
-  if (!f) throw ArgumentError("--out", fmt::format("directory '{}' is not writable", dir.string()));
+  if (!f) throw ArgumentError(arg, fmt::format("directory '{}' is not writable", dir.string()));
   f.close();
   fs::remove(probe, ec);
 }
@@ -103,18 +103,28 @@ int cmd_figures(std::vector<std::string> ids, const fs::path& out) {
   return rc;
 }
 
-int cmd_claims(bool json, const std::string& json_out, const std::string& html_out) {
+int cmd_claims(bool json, const std::string& json_out, const std::string& html_dir) {
   const claims::Ledger ledger = figures::measure_all();
-  auto write = [](const std::string& path, const std::string& text, const char* arg) {
+  auto write = [](const fs::path& path, const std::string& text, const char* arg) {
     std::ofstream f(path);
-    if (!f) throw ArgumentError(arg, fmt::format("cannot open '{}' for writing", path));
+    if (!f) throw ArgumentError(arg, fmt::format("cannot open '{}' for writing", path.string()));
     f << text;
   };
   if (!json_out.empty()) write(json_out, ledger.to_json().dump(2) + "\n", "--json-out");
-  if (!html_out.empty()) write(html_out, ledger.to_html(), "--html-out");
+  if (!html_dir.empty()) {
+    // The book's tables: all claims, one table per paper, one per check (its claims only).
+    ensure_writable_dir(html_dir, "--html-dir");
+    write(fs::path(html_dir) / "claims.html", ledger.to_html(), "--html-dir");
+    for (const char* paper : {"S", "V", "SS"}) {
+      write(fs::path(html_dir) / fmt::format("claims-{}.html", paper), ledger.to_html(paper), "--html-dir");
+    }
+    for (const auto& c : figures::registry()) {
+      write(fs::path(html_dir) / (c.id + ".html"), ledger.to_html({}, c.claims), "--html-dir");
+    }
+  }
   if (json) {
     std::cout << ledger.to_json().dump(2) << '\n';
-  } else if (json_out.empty() && html_out.empty()) {
+  } else if (json_out.empty() && html_dir.empty()) {
     std::cout << ledger.to_table();
   }
   return cli::kOk;
@@ -142,10 +152,10 @@ int main(int argc, char** argv) {
 
   auto* cl = app.add_subcommand("claims", "Run every claim check and print the ledger");
   bool cl_json = false;
-  std::string cl_json_out, cl_html_out;
+  std::string cl_json_out, cl_html_dir;
   cl->add_flag("--json", cl_json, "print the ledger as JSON");
   cl->add_option("--json-out", cl_json_out, "also write the JSON ledger to this file");
-  cl->add_option("--html-out", cl_html_out, "also write the reproduction report (HTML table) to this file");
+  cl->add_option("--html-dir", cl_html_dir, "also write the book's HTML claims tables into this directory");
 
   const auto run = cli::add_run_command(app);
 
@@ -170,7 +180,7 @@ int main(int argc, char** argv) {
     if (app.got_subcommand("list")) return cmd_list();
     if (app.got_subcommand("figure")) return cmd_figures(fig_ids, fig_out);
     if (app.got_subcommand("figures")) return cmd_figures({}, figs_out);
-    if (app.got_subcommand("claims")) return cmd_claims(cl_json, cl_json_out, cl_html_out);
+    if (app.got_subcommand("claims")) return cmd_claims(cl_json, cl_json_out, cl_html_dir);
     return run();
   } catch (const ArgumentError& e) {
     fmt::print(stderr, "vibook: error: {}\n", e.what());

@@ -102,12 +102,13 @@ std::string escape(std::string_view s) {
 }
 }  // namespace
 
-std::string Ledger::to_html(std::string_view paper_filter) const {
+std::string Ledger::to_html(std::string_view paper_filter, const std::vector<std::string>& ids) const {
   std::string out =
       "<table class=\"vibook-claims\">\n<tr><th>ID</th><th>Where</th><th>Claim</th>"
       "<th>Status</th><th>Measured</th><th>Note</th></tr>\n";
   for (const auto& row : rows_) {
     if (!paper_filter.empty() && row.info.paper != paper_filter) continue;
+    if (!ids.empty() && std::find(ids.begin(), ids.end(), row.info.id) == ids.end()) continue;
     std::string values;
     for (const auto& [k, v] : row.result.values) {
       values += fmt::format("{}&nbsp;=&nbsp;{:.4g}<br/>", escape(k), v);

@@ -59,8 +59,10 @@ class Ledger {
   nlohmann::json to_json() const;
   /// Plain-text table for the terminal.
   std::string to_table() const;
-  /// HTML table for the book's reproduction report (cells escaped).
-  std::string to_html(std::string_view paper_filter = {}) const;
+  /// HTML table for the book (cells escaped): all claims, or those of one paper, or the
+  /// listed IDs.
+  std::string to_html(std::string_view paper_filter = {},
+                      const std::vector<std::string>& ids = {}) const;
 
  private:
   std::vector<Row> rows_;

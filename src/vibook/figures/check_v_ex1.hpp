@@ -30,4 +30,24 @@ std::vector<std::pair<std::string, KernelAgreement>> v_ex1_agreements();
 /// |−D1 L_disc| / |p| with Vermeeren's scaling L_disc ≈ L; equals 1/h.
 double v_ex1_literal_scaling_factor();
 
+/// Measured order of one method: fitted slope, expected order, step sizes used.
+struct MeasuredOrder {
+  std::string method;
+  double expected = 0;
+  double slope = 0;
+  int points = 0;
+};
+/// Two-sided order criterion of the test suite: |slope − p| < 0.1.
+inline constexpr double kOrderTolerance = 0.1;
+
+/// Global error at T = 3 on Kepler e = 0.5 (nonlinear) against the exact solution, for
+/// h = 3/64 ... 3/4096, errors below 1e-11 (round-off plateau) not fitted.
+std::vector<MeasuredOrder> kernel_orders();
+
+/// Vermeeren Prop. 1: the discrete Euler–Lagrange expression D2 L_d(x(t−h), x(t)) +
+/// D1 L_d(x(t), x(t+h)), divided by h, evaluated on the exact Kepler solution (where the
+/// Euler–Lagrange expression vanishes), as h → 0: its fitted order for each discrete
+/// Lagrangian of Example 1.
+std::vector<MeasuredOrder> del_consistency_orders();
+
 }  // namespace vibook::figures

@@ -27,53 +27,25 @@ TEST_CASE("V-EX1: kernels equal the generic solver on their discrete Lagrangians
   CHECK(std::abs(figures::v_ex1_literal_scaling_factor() - 1.0 / 0.05) <= 1e-12 * 20.0);
   // The ledger check records the same numbers and a measured status.
   const auto results = figures::find("check-v-ex1")->run({});
-  REQUIRE(results.size() == 1);
+  REQUIRE(results.size() == 2);
+  CHECK(results[0].id == "V-EX1");
   CHECK(results[0].status == claims::Status::reproduced_with_caveat);
+  CHECK(results[1].id == "V-P1");
+  CHECK(results[1].status == claims::Status::reproduced);
 }
-
-namespace {
-
-// Global error |(q, p) − exact| at T = 3 (half a period of e = 0.5 is π) after n steps.
-template <class Stepper>
-double kepler_error(Stepper stepper, int n) {
-  const double T = 3.0, h = T / n;
-  State<2> s = kepler_perihelion_state(0.5);
-  for (int k = 0; k < n; ++k) stepper.step(s.q, s.p, h);
-  const State<2> ex = KeplerOrbit::perihelion(0.5).at(T);
-  return std::max((s.q - ex.q).lpNorm<Eigen::Infinity>(), (s.p - ex.p).lpNorm<Eigen::Infinity>());
-}
-
-template <class MakeStepper>
-OrderFit measured_order(MakeStepper make) {
-  std::vector<double> hs, errs;
-  for (int n = 64; n <= 4096; n *= 2) {
-    hs.push_back(3.0 / n);
-    errs.push_back(kepler_error(make(), n));
-  }
-  // Round-off plateau: errors below 1e-11 are not fitted (n·ε·|state| is ~1e-12 here).
-  return fit_order(hs, errs, 1e-11);
-}
-
-}  // namespace
 
 TEST_CASE("measured orders on Kepler e = 0.5, h = 3/64 ... 3/4096 (two-sided, |p - p0| < 0.1)") {
-  const auto L = mechanical_lagrangian(Kepler{});
-  struct Row {
-    const char* name;
-    double expected;
-    OrderFit fit;
-  };
-  const Row rows[] = {
-      {"se", 1.0, measured_order([] { return SymplecticEuler<Kepler>(); })},
-      {"se-adjoint", 1.0, measured_order([] { return SymplecticEulerAdjoint<Kepler>(); })},
-      {"sv", 2.0, measured_order([] { return StormerVerlet<Kepler>(); })},
-      {"midpoint", 2.0, measured_order([] { return ImplicitMidpoint<Kepler>(); })},
-      {"del-generic(midpoint)", 2.0,
-       measured_order([&] { return make_del_integrator<2>(midpoint_dl(L)); })},
-  };
-  for (const auto& r : rows) {
-    INFO(r.name, ": fitted order ", r.fit.slope, " over ", r.fit.points, " step sizes");
-    CHECK(r.fit.points >= 5);
-    CHECK(std::abs(r.fit.slope - r.expected) < 0.1);
+  for (const auto& o : figures::kernel_orders()) {
+    INFO(o.method, ": fitted order ", o.slope, " over ", o.points, " step sizes");
+    CHECK(o.points >= 5);
+    CHECK(std::abs(o.slope - o.expected) < figures::kOrderTolerance);
+  }
+}
+
+TEST_CASE("V-P1: the discrete Euler-Lagrange expression is consistent (measured order)") {
+  for (const auto& o : figures::del_consistency_orders()) {
+    INFO(o.method, ": fitted order ", o.slope, " over ", o.points, " step sizes");
+    CHECK(o.points >= 5);
+    CHECK(std::abs(o.slope - o.expected) < figures::kOrderTolerance);
   }
 }

@@ -1,0 +1,86 @@
+# Builds the book: run as `cmake -DVIBOOK=... -DSOURCE_DIR=... -DBINARY_DIR=... -DDOXYGEN=...
+# -P book/build_book.cmake` (the `book` target does this). Every number and figure in the
+# book is regenerated here by the `vibook` command: nothing is typed in by hand.
+cmake_minimum_required(VERSION 3.25)
+
+if(NOT DOXYGEN)
+  message(FATAL_ERROR "doxygen not found: install the Debian package doxygen (./build.sh book does)")
+endif()
+set(MATHJAX_SRC /usr/share/javascript/mathjax)
+if(NOT EXISTS ${MATHJAX_SRC}/MathJax.js)
+  message(FATAL_ERROR "MathJax 2 not found in ${MATHJAX_SRC}: install libjs-mathjax and fonts-mathjax")
+endif()
+
+set(OUT ${BINARY_DIR}/book)
+set(GEN ${OUT}/gen)
+set(IMAGES ${OUT}/images)
+set(FIGS ${OUT}/figures)
+file(REMOVE_RECURSE ${OUT}/html ${GEN} ${IMAGES})
+file(MAKE_DIRECTORY ${GEN} ${IMAGES} ${FIGS})
+
+# 1. Figures: CSV, SVG, PNG and claims.json per figure, regenerated in parallel.
+execute_process(COMMAND ${VIBOOK} figures --out ${FIGS} RESULT_VARIABLE rc)
+if(NOT rc EQUAL 0)
+  message(FATAL_ERROR "vibook figures failed (exit ${rc})")
+endif()
+file(GLOB svgs ${FIGS}/*/*.svg)
+file(COPY ${svgs} DESTINATION ${IMAGES})
+
+# 2. Claims: every check run again, the ledger written as JSON and HTML tables.
+execute_process(COMMAND ${VIBOOK} claims --json-out ${OUT}/claims.json --html-dir ${GEN}
+                RESULT_VARIABLE rc)
+if(NOT rc EQUAL 0)
+  message(FATAL_ERROR "vibook claims failed (exit ${rc})")
+endif()
+
+# 3. Benchmarks: the table of the last `./build.sh bench` run, or of a run made now when
+#    VIBOOK_BOOK_BENCH is set (./build.sh book sets it; the test build does not).
+set(BENCH_JSON ${BINARY_DIR}/bench/bench.json)
+set(BENCH_EXE ${BINARY_DIR}/tests/bench/vibook_bench)
+if(DEFINED ENV{VIBOOK_BOOK_BENCH} AND EXISTS ${BENCH_EXE})
+  file(MAKE_DIRECTORY ${BINARY_DIR}/bench)
+  message(STATUS "Running the benchmarks for the book (about 10 s)")
+  execute_process(COMMAND ${BENCH_EXE} --benchmark_out=${BENCH_JSON} --benchmark_out_format=json
+                          --benchmark_repetitions=5 --benchmark_report_aggregates_only=true
+                  OUTPUT_QUIET RESULT_VARIABLE rc)
+  if(NOT rc EQUAL 0)
+    message(FATAL_ERROR "vibook_bench failed (exit ${rc})")
+  endif()
+endif()
+find_program(PYTHON3 python3 REQUIRED)
+if(EXISTS ${BENCH_JSON})
+  execute_process(COMMAND ${PYTHON3} ${SOURCE_DIR}/tests/bench/bench_table.py ${BENCH_JSON}
+                  OUTPUT_FILE ${GEN}/bench.html RESULT_VARIABLE rc)
+  if(NOT rc EQUAL 0)
+    message(FATAL_ERROR "bench_table.py failed")
+  endif()
+else()
+  file(WRITE ${GEN}/bench.html
+       "<p><em>Not measured in this build.</em> Run <code>./build.sh bench</code> (or "
+       "<code>./build.sh book</code>, which runs the benchmarks) to fill this table.</p>\n")
+endif()
+
+# 4. Doxygen, then MathJax next to the HTML so that the book works offline.
+file(READ ${SOURCE_DIR}/CMakeLists.txt top)
+string(REGEX MATCH "project\\(vibook VERSION ([0-9.]+)" _ "${top}")
+set(ENV{VIBOOK_VERSION} "${CMAKE_MATCH_1}")
+set(ENV{VIBOOK_SOURCE_DIR} ${SOURCE_DIR})
+set(ENV{VIBOOK_BOOK_OUT} ${OUT})
+set(ENV{VIBOOK_BOOK_GEN} ${GEN})
+set(ENV{VIBOOK_BOOK_IMAGES} ${IMAGES})
+execute_process(COMMAND ${DOXYGEN} ${SOURCE_DIR}/Doxyfile WORKING_DIRECTORY ${SOURCE_DIR}
+                RESULT_VARIABLE rc)
+if(NOT rc EQUAL 0)
+  message(FATAL_ERROR "doxygen failed (exit ${rc})")
+endif()
+file(COPY ${MATHJAX_SRC}/ DESTINATION ${OUT}/html/mathjax
+     PATTERN "unpacked" EXCLUDE
+     PATTERN "test" EXCLUDE
+     PATTERN "fonts" EXCLUDE)
+file(COPY ${FIGS} DESTINATION ${OUT}/html)  # CSV and PNG beside the book, for download
+if(EXISTS ${OUT}/doxygen-warnings.log)
+  file(READ ${OUT}/doxygen-warnings.log warnings)
+  if(NOT warnings STREQUAL "")
+    message(WARNING "Doxygen warnings (${OUT}/doxygen-warnings.log):\n${warnings}")
+  endif()
+endif()
