@@ -76,7 +76,7 @@ endif()
 file(COPY ${MATHJAX_SRC}/ DESTINATION ${OUT}/html/mathjax
      PATTERN "unpacked" EXCLUDE
      PATTERN "test" EXCLUDE
-     PATTERN "fonts" EXCLUDE)
+     REGEX "mathjax/fonts(/.*)?$" EXCLUDE)  # HTML-CSS web fonts: not used by SVG output
 file(COPY ${FIGS} DESTINATION ${OUT}/html)  # CSV and PNG beside the book, for download
 if(EXISTS ${OUT}/doxygen-warnings.log)
   file(READ ${OUT}/doxygen-warnings.log warnings)

@@ -50,7 +50,7 @@ class Ledger {
 
   Ledger();
   /// Record a measurement. An ID outside the catalogue must carry `info` and be an erratum
-  /// claim `<paper>-ERR-<equation>`; otherwise std::invalid_argument.
+  /// claim `PAPER-ERR-EQUATION`; otherwise std::invalid_argument.
   void record(const ClaimResult& r);
   const std::vector<Row>& rows() const { return rows_; }
   const Row* find(std::string_view id) const;

@@ -1,7 +1,7 @@
 /// \file registry.hpp
 /// \brief The check and figure registry. A *check* measures one or more claims; a *figure*
-/// is a check that also writes CSV data and has a gnuplot script figures/<id>.gp. The
-/// figure's doctest and `vibook figure <id>` call the same `run` function.
+/// is a check that also writes CSV data and has a gnuplot script `figures/ID.gp`. The
+/// figure's doctest and `vibook figure ID` call the same `run` function.
 #pragma once
 
 #include <filesystem>
@@ -33,7 +33,7 @@ const std::vector<Check>& registry();
 /// The check with this ID, or nullptr.
 const Check* find(std::string_view id);
 
-/// Outcome of regenerating one figure into out_root/<id>/.
+/// Outcome of regenerating one figure into `out_root/ID/`.
 struct FigureOutput {
   std::string id;
   std::filesystem::path dir;
@@ -42,7 +42,7 @@ struct FigureOutput {
   std::string render_error;  ///< set when gnuplot was missing or failed (CSV still written)
 };
 
-/// Run the figure's computation with out_root/<id>/ as data directory, write claims.json,
+/// Run the figure's computation with `out_root/ID/` as data directory, write claims.json,
 /// then render with gnuplot. A rendering failure is reported in the result, not thrown.
 FigureOutput make_figure(const Check& check, const std::filesystem::path& out_root);
 

@@ -1,7 +1,7 @@
 /// \file gnuplot.hpp
-/// \brief Headless gnuplot runner: `gnuplot -c <script> <data-dir> <output-base>`, started as
-/// a child process with arguments (no shell, no pipe). The script writes <output-base>.svg
-/// and <output-base>.png.
+/// \brief Headless gnuplot runner: `gnuplot -c SCRIPT DATA_DIR OUTPUT_BASE`, started as
+/// a child process with arguments (no shell, no pipe). The script writes `OUTPUT_BASE.svg`
+/// and `OUTPUT_BASE.png`.
 #pragma once
 
 #include <filesystem>
@@ -19,11 +19,11 @@ class PlotError : public std::runtime_error {
 /// Full path of an executable found on PATH, or empty.
 std::filesystem::path find_on_path(const std::string& program);
 
-/// Directory that holds the figure scripts (<id>.gp, style.gp): $VIBOOK_FIGURES_DIR if set,
+/// Directory that holds the figure scripts (`ID.gp`, `style.gp`): `$VIBOOK_FIGURES_DIR` if set,
 /// else the source tree's figures/ (compiled in).
 std::filesystem::path scripts_dir();
 
-/// Render figure `id` from the CSV files in `data_dir` to data_dir/<id>.svg and .png.
+/// Render figure `id` from the CSV files in `data_dir` to `data_dir/ID.svg` and `.png`.
 /// gnuplot's own messages go to data_dir/gnuplot.log. Throws PlotError.
 void render(const std::string& id, const std::filesystem::path& data_dir);
 

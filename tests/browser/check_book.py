@@ -1,0 +1,96 @@
+#!/usr/bin/python3
+"""Open every page of the built book in headless Chromium (Debian's chromium and
+chromium-driver, driven by python3-selenium) and fail on:
+  - TeX left unrendered (raw \\( \\[ \\f$ in the text, or a MathJax error),
+  - a broken image (not loaded, or zero width),
+  - a broken local link (a file that does not exist),
+  - any console error (including failed resource loads).
+Usage: check_book.py BOOK_HTML_DIR"""
+import os
+import sys
+import time
+from urllib.parse import unquote, urlparse
+
+from selenium import webdriver
+from selenium.webdriver.chrome.service import Service
+
+html_dir = os.path.abspath(sys.argv[1])
+if not os.path.exists(os.path.join(html_dir, "index.html")):
+    sys.exit(f"check_book: {html_dir}/index.html not found; build the book first (./build.sh book)")
+
+opts = webdriver.ChromeOptions()
+opts.binary_location = "/usr/bin/chromium"
+for flag in ("--headless", "--no-sandbox", "--disable-gpu", "--disable-quic", "--no-first-run",
+             "--disable-background-networking", "--disable-component-update", "--disable-sync",
+             "--window-size=1280,1024"):
+    opts.add_argument(flag)
+opts.set_capability("goog:loggingPrefs", {"browser": "ALL"})
+driver = webdriver.Chrome(service=Service("/usr/bin/chromedriver"), options=opts)
+driver.set_script_timeout(60)
+
+WAIT_MATHJAX = """
+const done = arguments[arguments.length - 1];
+const t0 = Date.now();
+(function poll() {
+  if (window.MathJax && MathJax.Hub && MathJax.Hub.Queue) {
+    MathJax.Hub.Queue(function () { done("rendered"); });
+  } else if (!document.querySelector('script[src*="MathJax.js"]')) {
+    done("no-mathjax");
+  } else if (Date.now() - t0 > 30000) {
+    done("timeout");
+  } else {
+    setTimeout(poll, 50);
+  }
+})();
+"""
+
+INSPECT = """
+const out = {errors: [], images: [], links: []};
+document.querySelectorAll('.MathJax_Error, merror').forEach(e => out.errors.push('MathJax error: ' + e.textContent));
+const walker = document.createTreeWalker(document.body, NodeFilter.SHOW_TEXT);
+while (walker.nextNode()) {
+  const n = walker.currentNode;
+  const p = n.parentElement;
+  if (!p || p.closest('script, pre, code, .fragment, .line, style')) continue;
+  const t = n.textContent;
+  if (/\\\\\\(|\\\\\\[|\\\\f\\$|\\\\f\\[|Math Processing Error/.test(t)) out.errors.push('unrendered TeX: ' + t.trim().slice(0, 80));
+}
+document.querySelectorAll('img').forEach(i => {
+  if (!i.complete || i.naturalWidth === 0) out.images.push(i.getAttribute('src'));
+});
+document.querySelectorAll('object[data]').forEach(o => out.links.push(o.getAttribute('data')));
+document.querySelectorAll('a[href]').forEach(a => out.links.push(a.href));
+return out;
+"""
+
+pages = sorted(f for f in os.listdir(html_dir) if f.endswith(".html"))
+problems = []
+checked = 0
+for page in pages:
+    path = os.path.join(html_dir, page)
+    driver.get("file://" + path)
+    state = driver.execute_async_script(WAIT_MATHJAX)
+    if state == "timeout":
+        problems.append(f"{page}: MathJax did not finish within 30 s")
+    res = driver.execute_script(INSPECT)
+    for e in res["errors"]:
+        problems.append(f"{page}: {e}")
+    for src in res["images"]:
+        problems.append(f"{page}: broken image {src}")
+    for href in res["links"]:
+        u = urlparse(href)
+        if u.scheme in ("", "file"):
+            target = unquote(u.path) if u.scheme == "file" else os.path.join(html_dir, unquote(u.path))
+            if target and not os.path.exists(target):
+                problems.append(f"{page}: broken link {href}")
+    for entry in driver.get_log("browser"):
+        if entry["level"] in ("SEVERE", "ERROR"):
+            problems.append(f"{page}: console {entry['level']}: {entry['message'][:200]}")
+    checked += 1
+driver.quit()
+
+for p in problems:
+    print("FAIL:", p)
+print(f"book_in_browser: {checked - len({p.split(':')[0] for p in problems})} passed, "
+      f"{len({p.split(':')[0] for p in problems})} failed")
+sys.exit(1 if problems else 0)

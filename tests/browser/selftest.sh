@@ -1,0 +1,30 @@
+#!/usr/bin/env bash
+# The book checker must be able to fail: a page with unrendered TeX, a broken image, a broken
+# link and a console error must be reported, each of them, and a clean page must pass.
+set -u
+here=$(cd "$(dirname "$0")" && pwd)
+tmp=$(mktemp -d)
+trap 'rm -rf "$tmp"' EXIT
+cat >"$tmp/index.html" <<'HTML'
+<!DOCTYPE html><html><head><title>ok</title></head><body><p>A clean page.</p>
+<a href="index.html">self</a></body></html>
+HTML
+"/usr/bin/python3" "$here/check_book.py" "$tmp" >"$tmp/clean.log" 2>&1 || { echo "FAIL: clean page rejected"; cat "$tmp/clean.log"; exit 1; }
+cat >"$tmp/bad.html" <<'HTML'
+<!DOCTYPE html><html><head><title>bad</title></head><body>
+<p>Energy \f$H = T + U\f$ left as TeX.</p>
+<img src="missing.svg" alt="missing">
+<a href="nowhere.html">dead link</a>
+<script>console.error("deliberate console error");</script>
+</body></html>
+HTML
+"/usr/bin/python3" "$here/check_book.py" "$tmp" >"$tmp/bad.log" 2>&1
+rc=$?
+fail=0
+[ $rc -ne 0 ] || { echo "FAIL: checker passed a broken page"; fail=1; }
+for what in "unrendered TeX" "broken image" "broken link" "deliberate console error"; do
+  grep -q "bad.html: .*$what" "$tmp/bad.log" || { echo "FAIL: not reported: $what"; fail=1; }
+done
+grep -q "index.html" "$tmp/bad.log" && { echo "FAIL: the clean page was reported"; fail=1; }
+[ $fail = 0 ] && echo "book checker selftest: 2 passed, 0 failed" || cat "$tmp/bad.log"
+exit $fail
