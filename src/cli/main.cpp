@@ -23,7 +23,8 @@ int cmd_list() {
   for (const auto& c : figures::registry()) {
     std::string ids;
     for (const auto& id : c.claims) ids += (ids.empty() ? "" : " ") + id;
-    fmt::print("  {:<16} {:<7} {}  [claims: {}]\n", c.id, c.is_figure ? "figure" : "check", c.title, ids);
+    fmt::print("  {:<16} {:<7} {}  [claims: {}]\n", c.id, c.is_figure ? "figure" : "check", c.title,
+               ids);
   }
   fmt::print("\nCLAIMS (status as of the last measurement; run `vibook claims` to measure)\n");
   // `list` does not run the checks: it reports which claims have a check and which are pending.
@@ -63,7 +64,8 @@ int cmd_figures(std::vector<std::string> ids, const fs::path& out) {
   } else {
     for (const auto& id : ids) {
       const auto* c = figures::find(id);
-      if (!c || !c->is_figure) throw ArgumentError("ID", fmt::format("unknown figure '{}' (see `vibook list`)", id));
+      if (!c || !c->is_figure)
+        throw ArgumentError("ID", fmt::format("unknown figure '{}' (see `vibook list`)", id));
       todo.push_back(c);
     }
   }
@@ -94,7 +96,8 @@ int cmd_figures(std::vector<std::string> ids, const fs::path& out) {
       fmt::print("{:<16} {:<8} {}\n", o.id, r.id, claims::to_string(r.status));
     }
     if (o.rendered) {
-      fmt::print("{:<16} wrote {}/{{{}.svg,{}.png,claims.json,*.csv}}\n", o.id, o.dir.string(), o.id, o.id);
+      fmt::print("{:<16} wrote {}/{{{}.svg,{}.png,claims.json,*.csv}}\n", o.id, o.dir.string(),
+                 o.id, o.id);
     } else {
       fmt::print(stderr, "vibook: {}: not rendered: {}\n", o.id, o.render_error);
       rc = cli::kFailure;
@@ -116,7 +119,8 @@ int cmd_claims(bool json, const std::string& json_out, const std::string& html_d
     ensure_writable_dir(html_dir, "--html-dir");
     write(fs::path(html_dir) / "claims.html", ledger.to_html(), "--html-dir");
     for (const char* paper : {"S", "V", "SS"}) {
-      write(fs::path(html_dir) / fmt::format("claims-{}.html", paper), ledger.to_html(paper), "--html-dir");
+      write(fs::path(html_dir) / fmt::format("claims-{}.html", paper), ledger.to_html(paper),
+            "--html-dir");
     }
     for (const auto& c : figures::registry()) {
       write(fs::path(html_dir) / (c.id + ".html"), ledger.to_html({}, c.claims), "--html-dir");
@@ -133,14 +137,16 @@ int cmd_claims(bool json, const std::string& json_out, const std::string& html_d
 }  // namespace
 
 int main(int argc, char** argv) {
-  CLI::App app{"vibook — variational integrators, checked against their papers.\n"
-               "Exit status: 0 success, 1 other failure, 2 bad argument, 3 numerical failure."};
+  CLI::App app{
+      "vibook — variational integrators, checked against their papers.\n"
+      "Exit status: 0 success, 1 other failure, 2 bad argument, 3 numerical failure."};
   app.set_version_flag("--version", std::string("vibook ") + VIBOOK_VERSION);
   app.require_subcommand(1);
 
   app.add_subcommand("list", "List every figure, check and claim");
 
-  auto* fig = app.add_subcommand("figure", "Regenerate the named figures: DIR/ID/ holds CSV, ID.svg, ID.png, claims.json");
+  auto* fig = app.add_subcommand(
+      "figure", "Regenerate the named figures: DIR/ID/ holds CSV, ID.svg, ID.png, claims.json");
   std::vector<std::string> fig_ids;
   std::string fig_out = "vibook-figures";
   fig->add_option("ID", fig_ids, "figure IDs (see `vibook list`)")->required();
@@ -155,7 +161,8 @@ int main(int argc, char** argv) {
   std::string cl_json_out, cl_html_dir;
   cl->add_flag("--json", cl_json, "print the ledger as JSON");
   cl->add_option("--json-out", cl_json_out, "also write the JSON ledger to this file");
-  cl->add_option("--html-dir", cl_html_dir, "also write the book's HTML claims tables into this directory");
+  cl->add_option("--html-dir", cl_html_dir,
+                 "also write the book's HTML claims tables into this directory");
 
   const auto run = cli::add_run_command(app);
 

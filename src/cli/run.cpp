@@ -56,9 +56,11 @@ class Progress {
   void update(long long k) {
     if (!tty_ || (k & 0x3fff) != 0) return;
     const auto now = std::chrono::steady_clock::now();
-    if (now - start_ < std::chrono::seconds(2) || now - last_ < std::chrono::milliseconds(500)) return;
+    if (now - start_ < std::chrono::seconds(2) || now - last_ < std::chrono::milliseconds(500))
+      return;
     last_ = now;
-    std::fprintf(stderr, "\rvibook run: step %lld of %lld (%.0f%%)", k, total_, 100.0 * double(k) / double(total_));
+    std::fprintf(stderr, "\rvibook run: step %lld of %lld (%.0f%%)", k, total_,
+                 100.0 * double(k) / double(total_));
     shown_ = true;
   }
   ~Progress() {
@@ -73,7 +75,8 @@ class Progress {
 
 template <int N>
 Vec<double, N> vector_arg(const std::vector<double>& v, const char* name) {
-  require(v.size() == N, name, fmt::format("expects {} comma-separated number(s) for this problem", N));
+  require(v.size() == N, name,
+          fmt::format("expects {} comma-separated number(s) for this problem", N));
   Vec<double, N> out;
   for (int i = 0; i < N; ++i) {
     require(std::isfinite(v[i]), name, "values must be finite");
@@ -165,7 +168,8 @@ int integrate(const Problem& P, Stepper stepper, bool implicit, const RunOptions
       }
       omega_prev = inv.omega;
       first = false;
-      for (double v : {s.q(0), s.q(1), s.p(0), s.p(1), inv.H, inv.L, inv.ecc, omega_unwrapped}) row[c++] = v;
+      for (double v : {s.q(0), s.q(1), s.p(0), s.p(1), inv.H, inv.L, inv.ecc, omega_unwrapped})
+        row[c++] = v;
     } else {
       for (double v : {s.q(0), s.p(0), energy(P, s.q, s.p)}) row[c++] = v;
     }
@@ -230,7 +234,8 @@ int dispatch_method(const Problem& P, const RunOptions& o) {
 
 std::function<int()> add_run_command(CLI::App& app) {
   auto o = std::make_shared<RunOptions>();
-  auto* run = app.add_subcommand("run", "Integrate a problem with a method and write the trajectory as CSV");
+  auto* run = app.add_subcommand(
+      "run", "Integrate a problem with a method and write the trajectory as CSV");
   run->add_option("--problem", o->problem, "harmonic, pendulum or kepler")
       ->required()
       ->check(CLI::IsMember({"harmonic", "pendulum", "kepler"}));
@@ -244,9 +249,11 @@ std::function<int()> add_run_command(CLI::App& app) {
       ->check(CLI::IsMember({"midpoint", "sv", "se", "se-adjoint"}));
   run->add_option("--h", o->h, "step size (default 0.01)");
   auto* t_end = run->add_option("--t-end", o->t_end, "final time (default 10)");
-  auto* periods = run->add_option("--periods", o->periods, "final time in periods (kepler, harmonic)");
+  auto* periods =
+      run->add_option("--periods", o->periods, "final time in periods (kepler, harmonic)");
   t_end->excludes(periods);
-  run->add_option("--e", o->e, "kepler: eccentricity in [0,1); starts at perihelion of the orbit with a = 1");
+  run->add_option("--e", o->e,
+                  "kepler: eccentricity in [0,1); starts at perihelion of the orbit with a = 1");
   run->add_option("--q0", o->q0, "initial position, comma-separated")->delimiter(',');
   run->add_option("--p0", o->p0, "initial momentum, comma-separated")->delimiter(',');
   run->add_option("--every", o->every, "write every K-th state (first and last always)");

@@ -20,9 +20,9 @@ constexpr int kSteps = 10000;
 constexpr double kH = 1e-3;
 
 void set_counter(benchmark::State& state) {
-  state.counters["ns_per_step"] = benchmark::Counter(
-      double(kSteps) * double(state.iterations()) * 1e-9,
-      benchmark::Counter::kIsRate | benchmark::Counter::kInvert);
+  state.counters["ns_per_step"] =
+      benchmark::Counter(double(kSteps) * double(state.iterations()) * 1e-9,
+                         benchmark::Counter::kIsRate | benchmark::Counter::kInvert);
 }
 
 void BM_hand_loop(benchmark::State& state) {

@@ -9,11 +9,16 @@ namespace vibook::claims {
 
 std::string_view to_string(Status s) {
   switch (s) {
-    case Status::pending: return "pending";
-    case Status::reproduced: return "reproduced";
-    case Status::reproduced_with_caveat: return "reproduced-with-caveat";
-    case Status::not_reproduced: return "not-reproduced";
-    case Status::erratum: return "erratum";
+    case Status::pending:
+      return "pending";
+    case Status::reproduced:
+      return "reproduced";
+    case Status::reproduced_with_caveat:
+      return "reproduced-with-caveat";
+    case Status::not_reproduced:
+      return "not-reproduced";
+    case Status::erratum:
+      return "erratum";
   }
   return "pending";
 }
@@ -51,8 +56,11 @@ nlohmann::json results_to_json(const std::vector<ClaimResult>& results) {
   for (const auto& r : results) {
     nlohmann::json values = nlohmann::json::object();
     for (const auto& [k, v] : r.values) values[k] = v;
-    arr.push_back({{"id", r.id}, {"status", to_string(r.status)}, {"values", values},
-                   {"note", r.note}, {"source", r.source}});
+    arr.push_back({{"id", r.id},
+                   {"status", to_string(r.status)},
+                   {"values", values},
+                   {"note", r.note},
+                   {"source", r.source}});
   }
   return {{"claims", arr}};
 }
@@ -89,20 +97,34 @@ std::string escape(std::string_view s) {
   std::string o;
   for (char c : s) {
     switch (c) {
-      case '<': o += "&lt;"; break;
-      case '>': o += "&gt;"; break;
-      case '&': o += "&amp;"; break;
-      case '"': o += "&quot;"; break;
-      case '\\': o += "&#92;"; break;  // keep TeX delimiters out of MathJax's reach
-      case '$': o += "&#36;"; break;
-      default: o += c;
+      case '<':
+        o += "&lt;";
+        break;
+      case '>':
+        o += "&gt;";
+        break;
+      case '&':
+        o += "&amp;";
+        break;
+      case '"':
+        o += "&quot;";
+        break;
+      case '\\':
+        o += "&#92;";
+        break;  // keep TeX delimiters out of MathJax's reach
+      case '$':
+        o += "&#36;";
+        break;
+      default:
+        o += c;
     }
   }
   return o;
 }
 }  // namespace
 
-std::string Ledger::to_html(std::string_view paper_filter, const std::vector<std::string>& ids) const {
+std::string Ledger::to_html(std::string_view paper_filter,
+                            const std::vector<std::string>& ids) const {
   std::string out =
       "<table class=\"vibook-claims\">\n<tr><th>ID</th><th>Where</th><th>Claim</th>"
       "<th>Status</th><th>Measured</th><th>Note</th></tr>\n";
@@ -117,8 +139,8 @@ std::string Ledger::to_html(std::string_view paper_filter, const std::vector<std
     out += fmt::format(
         "<tr class=\"status-{}\"><td>{}</td><td>{}</td><td>{}</td><td><b>{}</b></td>"
         "<td>{}</td><td>{}</td></tr>\n",
-        status, escape(row.info.id), escape(row.info.where), escape(row.info.title), status,
-        values, escape(row.result.note));
+        status, escape(row.info.id), escape(row.info.where), escape(row.info.title), status, values,
+        escape(row.result.note));
   }
   out += "</table>\n";
   return out;

@@ -32,8 +32,8 @@ struct ClaimResult {
   std::string id;
   Status status = Status::pending;
   std::vector<std::pair<std::string, double>> values;  ///< measured numbers, in order
-  std::string note;                                     ///< what was measured and how
-  std::string source;                                   ///< check or figure that measured it
+  std::string note;                                    ///< what was measured and how
+  std::string source;                                  ///< check or figure that measured it
   std::optional<ClaimInfo> info;  ///< required for IDs not in the catalogue (errata)
 };
 

@@ -19,13 +19,11 @@ namespace Eigen {
 // Eigen declares AutoDiffScalar<D> (op) D::Scalar; for the nested type D::Scalar is itself
 // an AutoDiffScalar, so `vector / 2.0` would not compile. Declare the double case.
 template <class InnerDer, int R, class BinOp>
-struct ScalarBinaryOpTraits<AutoDiffScalar<Matrix<AutoDiffScalar<InnerDer>, R, 1>>, double,
-                            BinOp> {
+struct ScalarBinaryOpTraits<AutoDiffScalar<Matrix<AutoDiffScalar<InnerDer>, R, 1>>, double, BinOp> {
   using ReturnType = AutoDiffScalar<Matrix<AutoDiffScalar<InnerDer>, R, 1>>;
 };
 template <class InnerDer, int R, class BinOp>
-struct ScalarBinaryOpTraits<double, AutoDiffScalar<Matrix<AutoDiffScalar<InnerDer>, R, 1>>,
-                            BinOp> {
+struct ScalarBinaryOpTraits<double, AutoDiffScalar<Matrix<AutoDiffScalar<InnerDer>, R, 1>>, BinOp> {
   using ReturnType = AutoDiffScalar<Matrix<AutoDiffScalar<InnerDer>, R, 1>>;
 };
 }  // namespace Eigen
@@ -54,8 +52,8 @@ Vec<Dual<N>, N> variables(const Vec<double, N>& x) {
 template <class Result, class Scalar>
 inline constexpr bool returns_scalar = std::is_same_v<std::remove_cvref_t<Result>, Scalar>;
 
-#define VIBOOK_RETURNS_SCALAR_MESSAGE                                                       \
-  "vibook: the function must return its scalar type, not an Eigen AutoDiff expression; "   \
+#define VIBOOK_RETURNS_SCALAR_MESSAGE                                                    \
+  "vibook: the function must return its scalar type, not an Eigen AutoDiff expression; " \
   "declare the lambda's return type, e.g. `-> vibook::scalar_t<decltype(h)>`"
 
 /// Gradient of a scalar function f(Vec<S,N>) -> S at x.

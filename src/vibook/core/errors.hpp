@@ -35,8 +35,7 @@ class NumericalError : public std::runtime_error {
 /// An implicit solve failed to converge, or produced a non-finite value.
 class SolveError : public NumericalError {
  public:
-  SolveError(const std::string& what, SolveReport report)
-      : NumericalError(what), report_(report) {}
+  SolveError(const std::string& what, SolveReport report) : NumericalError(what), report_(report) {}
   const SolveReport& report() const { return report_; }
 
  private:

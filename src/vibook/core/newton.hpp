@@ -54,8 +54,8 @@ SolveReport newton_solve(Vec<double, N>& x, FJ&& fj, const NewtonOptions& opt,
     }
     x -= dx;
     const double step = dx.template lpNorm<Eigen::Infinity>();
-    if (step <= opt.step_rel * std::max(x.template lpNorm<Eigen::Infinity>(), opt.scale) +
-                    opt.step_abs) {
+    if (step <=
+        opt.step_rel * std::max(x.template lpNorm<Eigen::Infinity>(), opt.scale) + opt.step_abs) {
       fj(x, F, J);  // report the residual at the returned point
       rep.residual = F.template lpNorm<Eigen::Infinity>();
       rep.converged = std::isfinite(rep.residual);
@@ -65,8 +65,8 @@ SolveReport newton_solve(Vec<double, N>& x, FJ&& fj, const NewtonOptions& opt,
   }
   if (rep.iterations > opt.max_iterations) rep.iterations = opt.max_iterations;
   throw SolveError(
-      fmt::format("{}: no convergence (residual {:.3e} after {} iterations{})", what,
-                  rep.residual, rep.iterations, std::isfinite(rep.residual) ? "" : ", non-finite"),
+      fmt::format("{}: no convergence (residual {:.3e} after {} iterations{})", what, rep.residual,
+                  rep.iterations, std::isfinite(rep.residual) ? "" : ", non-finite"),
       rep);
 }
 

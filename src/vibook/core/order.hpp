@@ -28,7 +28,8 @@ inline OrderFit fit_order(const std::vector<double>& h, const std::vector<double
     sxy += x * y;
     ++n;
   }
-  if (n < min_points) throw std::invalid_argument("fit_order: too few points above the round-off floor");
+  if (n < min_points)
+    throw std::invalid_argument("fit_order: too few points above the round-off floor");
   const double slope = (n * sxy - sx * sy) / (n * sxx - sx * sx);
   return {slope, n};
 }

@@ -38,29 +38,43 @@ KernelAgreement compare(Problem P, Kernel kernel, MakeDl make_dl, Vec<double, Pr
     out.max_iterations = std::max(out.max_iterations, rep.iterations);
     out.max_residual = std::max(out.max_residual, rep.residual);
     kernel.step(q, p, h);
-    const double scale = q.template lpNorm<Eigen::Infinity>() + p.template lpNorm<Eigen::Infinity>();
-    const double d = (q1 - q).template lpNorm<Eigen::Infinity>() +
-                     (p1 - p).template lpNorm<Eigen::Infinity>();
+    const double scale =
+        q.template lpNorm<Eigen::Infinity>() + p.template lpNorm<Eigen::Infinity>();
+    const double d =
+        (q1 - q).template lpNorm<Eigen::Infinity>() + (p1 - p).template lpNorm<Eigen::Infinity>();
     out.one_step = std::max(out.one_step, d / scale);
     traj.step(qg, pg, h);
   }
   const double scale = q.template lpNorm<Eigen::Infinity>() + p.template lpNorm<Eigen::Infinity>();
-  out.trajectory = ((qg - q).template lpNorm<Eigen::Infinity>() +
-                    (pg - p).template lpNorm<Eigen::Infinity>()) / scale;
+  out.trajectory =
+      ((qg - q).template lpNorm<Eigen::Infinity>() + (pg - p).template lpNorm<Eigen::Infinity>()) /
+      scale;
   return out;
 }
 
 struct MakeMidpoint {
-  template <class L> auto operator()(L l) const { return midpoint_dl(l); }
+  template <class L>
+  auto operator()(L l) const {
+    return midpoint_dl(l);
+  }
 };
 struct MakeSV {
-  template <class L> auto operator()(L l) const { return stormer_verlet_dl(l); }
+  template <class L>
+  auto operator()(L l) const {
+    return stormer_verlet_dl(l);
+  }
 };
 struct MakeSE {
-  template <class L> auto operator()(L l) const { return symplectic_euler_dl(l); }
+  template <class L>
+  auto operator()(L l) const {
+    return symplectic_euler_dl(l);
+  }
 };
 struct MakeSEAdjoint {
-  template <class L> auto operator()(L l) const { return symplectic_euler_adjoint_dl(l); }
+  template <class L>
+  auto operator()(L l) const {
+    return symplectic_euler_adjoint_dl(l);
+  }
 };
 
 template <class Problem>
@@ -167,8 +181,7 @@ std::vector<MeasuredOrder> kernel_orders() {
 std::vector<MeasuredOrder> del_consistency_orders() {
   // Expected: the symmetric discrete Lagrangians (a), (b) give a symmetric second difference,
   // error O(h²); (c) and (d) share the Störmer–Verlet two-step equation, so O(h²) too.
-  return {consistency_of("midpoint (a)", 2, MakeMidpoint{}),
-          consistency_of("sv (b)", 2, MakeSV{}),
+  return {consistency_of("midpoint (a)", 2, MakeMidpoint{}), consistency_of("sv (b)", 2, MakeSV{}),
           consistency_of("se-adjoint (c)", 2, MakeSEAdjoint{}),
           consistency_of("se (d)", 2, MakeSE{})};
 }

@@ -37,7 +37,8 @@ TEST_CASE("vermeeren-fig1: claim V-EX3 measured and asserted") {
     CHECK(value(r, std::string("exact_modified_max_dev_h") + h) <=
           value(r, std::string("exact_modified_bound_h") + h));
   }
-  CHECK(value(r, "exact_modified_max_dev_h1.9_long_double") * 100 < value(r, "exact_modified_max_dev_h1.9"));
+  CHECK(value(r, "exact_modified_max_dev_h1.9_long_double") * 100 <
+        value(r, "exact_modified_max_dev_h1.9"));
   // Truncations: order 4 is closer than order 2 on [80, 100], in both readings.
   CHECK(value(r, "zoom_max_dev_order4_at_rest") < value(r, "zoom_max_dev_order2_at_rest"));
   CHECK(value(r, "zoom_max_dev_order4_matched") < value(r, "zoom_max_dev_order2_matched"));
@@ -51,7 +52,8 @@ TEST_CASE("ledger: every catalogued claim present, pending until measured") {
   for (const auto& row : ledger.rows()) CHECK(row.result.status == claims::Status::pending);
   const auto measured = figures::measure_all(2);
   for (const auto& row : measured.rows()) {
-    const bool has_check = row.info.id == "V-EX1" || row.info.id == "V-P1" || row.info.id == "V-EX3";
+    const bool has_check =
+        row.info.id == "V-EX1" || row.info.id == "V-P1" || row.info.id == "V-EX3";
     INFO(row.info.id);
     CHECK((row.result.status != claims::Status::pending) == has_check);
   }
@@ -59,10 +61,17 @@ TEST_CASE("ledger: every catalogued claim present, pending until measured") {
   const auto js = measured.to_json();
   REQUIRE(js.contains("claims"));
   const auto& first = js["claims"][0];
-  for (const char* key : {"id", "paper", "title", "status", "values", "note"}) CHECK(first.contains(key));
+  for (const char* key : {"id", "paper", "title", "status", "values", "note"})
+    CHECK(first.contains(key));
   // Unknown IDs are refused unless they are errata with their own description.
   claims::Ledger l2;
-  CHECK_THROWS_AS(l2.record({"X-1", claims::Status::reproduced, {}, "", "", std::nullopt}), std::invalid_argument);
-  l2.record({"V-ERR-5", claims::Status::erratum, {}, "", "", claims::ClaimInfo{"V-ERR-5", "V", "(5)", "t"}});
+  CHECK_THROWS_AS(l2.record({"X-1", claims::Status::reproduced, {}, "", "", std::nullopt}),
+                  std::invalid_argument);
+  l2.record({"V-ERR-5",
+             claims::Status::erratum,
+             {},
+             "",
+             "",
+             claims::ClaimInfo{"V-ERR-5", "V", "(5)", "t"}});
   CHECK(l2.find("V-ERR-5") != nullptr);
 }

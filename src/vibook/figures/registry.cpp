@@ -57,7 +57,8 @@ std::vector<std::vector<claims::ClaimResult>> run_checks(const std::vector<const
     }
   };
   std::vector<std::thread> pool;
-  for (unsigned t = 0; t < std::min<std::size_t>(jobs, checks.size()); ++t) pool.emplace_back(worker);
+  for (unsigned t = 0; t < std::min<std::size_t>(jobs, checks.size()); ++t)
+    pool.emplace_back(worker);
   for (auto& t : pool) t.join();
   for (auto& e : errors) {
     if (e) std::rethrow_exception(e);

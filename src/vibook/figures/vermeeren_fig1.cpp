@@ -181,7 +181,8 @@ std::vector<claims::ClaimResult> run(const Context& ctx) {
   const double c3_err = std::abs(coeff(3) - 1.0 / 90.0) * 90.0;
   double series = 0.0;
   for (int k = 40; k >= 1; --k) series += coeff(k);  // h = 1
-  const double series_rel = std::abs(series - std::pow(omega_exact(1.0), 2)) / std::pow(omega_exact(1.0), 2);
+  const double series_rel =
+      std::abs(series - std::pow(omega_exact(1.0), 2)) / std::pow(omega_exact(1.0), 2);
   r.values.push_back({"series_c1", coeff(1)});
   r.values.push_back({"series_c2_rel_err_vs_1/12", c2_err});
   r.values.push_back({"series_c3_rel_err_vs_1/90", c3_err});

@@ -36,11 +36,11 @@ struct Kepler {
 
 /// Invariants of the Kepler flow at one state.
 struct KeplerInvariants {
-  double H = 0;       ///< energy ½|p|² − 1/|q|
-  double L = 0;       ///< angular momentum q1 p2 − q2 p1
-  Vec<double, 2> A;   ///< Laplace–Runge–Lenz vector p × L e3 − q/|q|
-  double ecc = 0;     ///< eccentricity |A|
-  double omega = 0;   ///< perihelion angle atan2(A2, A1), in (−π, π]
+  double H = 0;      ///< energy ½|p|² − 1/|q|
+  double L = 0;      ///< angular momentum q1 p2 − q2 p1
+  Vec<double, 2> A;  ///< Laplace–Runge–Lenz vector p × L e3 − q/|q|
+  double ecc = 0;    ///< eccentricity |A|
+  double omega = 0;  ///< perihelion angle atan2(A2, A1), in (−π, π]
 };
 
 /// Energy, angular momentum and the LRL vector (Shen & Sun 2025, Prop. 2).
@@ -81,9 +81,9 @@ inline long double e_minus_sin(long double E) {
 
 /// Reduce an angle to [−π, π]: Cody–Waite with a three-part 2π in long double and FMA.
 inline long double reduce_angle_ld(long double x) {
-  constexpr long double P1 = 0xc90fdaa22168c235p-61L;   // 2π rounded to 64 bits
-  constexpr long double P2 = -0xece675d1fc8f8cbbp-127L; // 2π − P1, rounded
-  constexpr long double P3 = -0xb7ed8fbbacc19c60p-192L; // the next part
+  constexpr long double P1 = 0xc90fdaa22168c235p-61L;    // 2π rounded to 64 bits
+  constexpr long double P2 = -0xece675d1fc8f8cbbp-127L;  // 2π − P1, rounded
+  constexpr long double P3 = -0xb7ed8fbbacc19c60p-192L;  // the next part
   const long double k = std::nearbyint(x / P1);
   long double r = std::fma(-k, P1, x);
   r = std::fma(-k, P2, r);
@@ -105,7 +105,10 @@ inline long double solve_kepler_ld(long double M, long double e) {
     // Residual (1 − e)E + e(E − sin E) − m and derivative 1 − e cos E = (1 − e) + 2e sin²(E/2),
     // both free of cancellation near perihelion when e → 1.
     const long double f = one_minus_e * E + e * e_minus_sin(E) - m;
-    if (f > 0) hi = std::min(hi, E); else lo = std::max(lo, E);
+    if (f > 0)
+      hi = std::min(hi, E);
+    else
+      lo = std::max(lo, E);
     const long double sh = std::sin(0.5L * E);
     const long double fp = one_minus_e + 2.0L * e * sh * sh;
     long double En = E - f / fp;

@@ -3,8 +3,8 @@
 #include <numbers>
 #include <random>
 
-#include <boost/multiprecision/cpp_bin_float.hpp>
 #include <doctest/doctest.h>
+#include <boost/multiprecision/cpp_bin_float.hpp>
 
 #include "vibook/core/autodiff.hpp"
 #include "vibook/kepler/kepler.hpp"
@@ -43,8 +43,10 @@ TEST_CASE("Kepler exact solution: within one ulp for 0 <= e <= 0.99 and |t| up t
     const double r = std::hypot(double(ref[0]), double(ref[1]));
     const double v = std::hypot(double(ref[2]), double(ref[3]));
     // Error in ulps of the size of the vector (position: r, momentum: |p|).
-    worst_q = std::max(worst_q, double(abs(Big(s.q(0)) - ref[0]) + abs(Big(s.q(1)) - ref[1])) / (kEps * r));
-    worst_p = std::max(worst_p, double(abs(Big(s.p(0)) - ref[2]) + abs(Big(s.p(1)) - ref[3])) / (kEps * v));
+    worst_q = std::max(worst_q,
+                       double(abs(Big(s.q(0)) - ref[0]) + abs(Big(s.q(1)) - ref[1])) / (kEps * r));
+    worst_p = std::max(worst_p,
+                       double(abs(Big(s.p(0)) - ref[2]) + abs(Big(s.p(1)) - ref[3])) / (kEps * v));
   }
   MESSAGE("worst position error ", worst_q, " ulp, momentum ", worst_p, " ulp");
   CHECK(worst_q <= 1.0);
@@ -83,10 +85,12 @@ TEST_CASE("KeplerOrbit::from_state reproduces the orbit through any bound state"
     CHECK((a.p - b.p).norm() <= 1e-13);
   }
   // Clockwise motion: mirror image.
-  const auto cw = KeplerOrbit::from_state(Vec<double, 2>(s0.q(0), -s0.q(1)), Vec<double, 2>(s0.p(0), -s0.p(1)));
+  const auto cw =
+      KeplerOrbit::from_state(Vec<double, 2>(s0.q(0), -s0.q(1)), Vec<double, 2>(s0.p(0), -s0.p(1)));
   const State<2> m = cw.at(2.0), b = per.at(3.234);
   CHECK(std::abs(m.q(1) + b.q(1)) <= 1e-13);
-  CHECK_THROWS_AS(KeplerOrbit::from_state(Vec<double, 2>(1, 0), Vec<double, 2>(0, 2)), ArgumentError);
+  CHECK_THROWS_AS(KeplerOrbit::from_state(Vec<double, 2>(1, 0), Vec<double, 2>(0, 2)),
+                  ArgumentError);
   CHECK_THROWS_AS(KeplerOrbit::perihelion(1.0), ArgumentError);
 }
 
@@ -97,6 +101,7 @@ TEST_CASE("problem gradients agree with AutoDiff of their potentials") {
   const Vec<double, 1> x(0.7);
   const auto gp = ad::gradient<1>([](const auto& y) { return Pendulum{}.potential(y); }, x);
   CHECK(std::abs(gp(0) - Pendulum{}.gradient(x)(0)) <= 2 * kEps);
-  const auto gh = ad::gradient<1>([](const auto& y) { return HarmonicOscillator{}.potential(y); }, x);
+  const auto gh =
+      ad::gradient<1>([](const auto& y) { return HarmonicOscillator{}.potential(y); }, x);
   CHECK(std::abs(gh(0) - HarmonicOscillator{}.gradient(x)(0)) <= 2 * kEps);
 }

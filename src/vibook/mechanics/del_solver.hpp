@@ -34,7 +34,8 @@ class DelIntegrator {
 
   /// Advance (q, p) by one step of size h. Throws SolveError if Newton fails.
   SolveReport step(Vec<double, N>& q, Vec<double, N>& p, double h) {
-    Vec<double, N> q1 = have_increment_ ? Vec<double, N>(q + increment_) : Vec<double, N>(q + h * p);
+    Vec<double, N> q1 =
+        have_increment_ ? Vec<double, N>(q + increment_) : Vec<double, N>(q + h * p);
     NewtonOptions opt = options_;
     opt.scale = std::max(opt.scale, q.template lpNorm<Eigen::Infinity>());
     const Vec<double, N> q0 = q;
@@ -62,8 +63,7 @@ class DelIntegrator {
   }
 
   /// Discrete Legendre map p_{k+1} = D2 L_d(q_k, q_{k+1}, h)   (Vermeeren (5), second half).
-  Vec<double, N> momentum_plus(const Vec<double, N>& q0, const Vec<double, N>& q1,
-                               double h) const {
+  Vec<double, N> momentum_plus(const Vec<double, N>& q0, const Vec<double, N>& q1, double h) const {
     return ad::gradient<N>([&](const auto& x) { return Ld_(lift(q0, x), x, lift(h, x)); }, q1);
   }
 

@@ -13,9 +13,9 @@ TEST_CASE("generic solver: a user's own Lagrangian, two coupled degrees of freed
   // Mass matrix diag(1, 2), a pendulum coupled to a quartic oscillator.
   auto L = [](const auto& q, const auto& v) -> vibook::scalar_t<decltype(q)> {
     using std::cos;
-    return 0.5 * v(0) * v(0) + v(1) * v(1)             // kinetic energy ½ vᵀMv
+    return 0.5 * v(0) * v(0) + v(1) * v(1)                         // kinetic energy ½ vᵀMv
            - (1.0 - cos(q(0))) - 0.25 * q(1) * q(1) * q(1) * q(1)  // potential
-           - 0.1 * q(0) * q(1);                       // coupling
+           - 0.1 * q(0) * q(1);                                    // coupling
   };
   // Its midpoint discrete Lagrangian (Vermeeren, Example 1(a)) and the integrator: every
   // derivative, including the Newton Jacobian, comes from Eigen AutoDiff.
@@ -47,7 +47,8 @@ TEST_CASE("generic solver satisfies the two-step discrete Euler-Lagrange equatio
     del.step(q_next, p_next, h);
     // D2 L_d(q_{k−1}, q_k) + D1 L_d(q_k, q_{k+1}) = 0, relative to the size of one term.
     const double scale = del.momentum_plus(q_prev, q, h).lpNorm<Eigen::Infinity>();
-    worst = std::max(worst, del.del_residual(q_prev, q, q_next, h).lpNorm<Eigen::Infinity>() / scale);
+    worst =
+        std::max(worst, del.del_residual(q_prev, q, q_next, h).lpNorm<Eigen::Infinity>() / scale);
     q_prev = q;
     q = q_next;
     p = p_next;

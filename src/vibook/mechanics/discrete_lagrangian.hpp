@@ -30,8 +30,9 @@ struct scalar_of {
   using type = T;
 };
 template <class T>
-  requires requires { typename T::Scalar; } && (!requires { typename T::DerType; })
-struct scalar_of<T> {
+requires requires {
+  typename T::Scalar;
+} &&(!requires { typename T::DerType; }) struct scalar_of<T> {
   using type = typename T::Scalar;
 };
 /// scalar_t<decltype(x)>: the scalar of a vector, or the type of a scalar (without cv/ref).
@@ -42,21 +43,23 @@ using scalar_t = typename scalar_of<std::remove_cvref_t<T>>::type;
 /// Midpoint discrete Lagrangian; generates the implicit midpoint rule.
 template <class Lagrangian>
 auto midpoint_dl(Lagrangian L) {
-  return [L = std::move(L)](const auto& q0, const auto& q1, const auto& h) -> scalar_t<decltype(h)> {
-    const auto qm = ((q0 + q1) * 0.5).eval();
-    const auto v = ((q1 - q0) / h).eval();
-    return h * L(qm, v);
-  };
+  return
+      [L = std::move(L)](const auto& q0, const auto& q1, const auto& h) -> scalar_t<decltype(h)> {
+        const auto qm = ((q0 + q1) * 0.5).eval();
+        const auto v = ((q1 - q0) / h).eval();
+        return h * L(qm, v);
+      };
 }
 
 // Vermeeren 2017, Example 1(b): L_disc = ½ L(x_j, v) + ½ L(x_{j+1}, v), v = (x_{j+1} − x_j)/h.
 /// Trapezoidal discrete Lagrangian; generates Störmer–Verlet for separable L.
 template <class Lagrangian>
 auto stormer_verlet_dl(Lagrangian L) {
-  return [L = std::move(L)](const auto& q0, const auto& q1, const auto& h) -> scalar_t<decltype(h)> {
-    const auto v = ((q1 - q0) / h).eval();
-    return h * (0.5 * L(q0, v) + 0.5 * L(q1, v));
-  };
+  return
+      [L = std::move(L)](const auto& q0, const auto& q1, const auto& h) -> scalar_t<decltype(h)> {
+        const auto v = ((q1 - q0) / h).eval();
+        return h * (0.5 * L(q0, v) + 0.5 * L(q1, v));
+      };
 }
 
 // Vermeeren 2017, Example 1(d); Shen & Sun 2025, (4.16): L_disc = L(x_{j+1}, v).
@@ -64,10 +67,11 @@ auto stormer_verlet_dl(Lagrangian L) {
 /// L = ½|v|² − U(q) it generates q1 = q0 + h p0, p1 = p0 − h ∇U(q1) ("drift, then kick").
 template <class Lagrangian>
 auto symplectic_euler_dl(Lagrangian L) {
-  return [L = std::move(L)](const auto& q0, const auto& q1, const auto& h) -> scalar_t<decltype(h)> {
-    const auto v = ((q1 - q0) / h).eval();
-    return h * L(q1, v);
-  };
+  return
+      [L = std::move(L)](const auto& q0, const auto& q1, const auto& h) -> scalar_t<decltype(h)> {
+        const auto v = ((q1 - q0) / h).eval();
+        return h * L(q1, v);
+      };
 }
 
 // Vermeeren 2017, Example 1(c): L_disc = L(x_j, v).
@@ -75,19 +79,20 @@ auto symplectic_euler_dl(Lagrangian L) {
 /// p1 = p0 − h ∇U(q0), q1 = q0 + h p1 ("kick, then drift").
 template <class Lagrangian>
 auto symplectic_euler_adjoint_dl(Lagrangian L) {
-  return [L = std::move(L)](const auto& q0, const auto& q1, const auto& h) -> scalar_t<decltype(h)> {
-    const auto v = ((q1 - q0) / h).eval();
-    return h * L(q0, v);
-  };
+  return
+      [L = std::move(L)](const auto& q0, const auto& q1, const auto& h) -> scalar_t<decltype(h)> {
+        const auto v = ((q1 - q0) / h).eval();
+        return h * L(q0, v);
+      };
 }
 
 /// Bring a discrete Lagrangian written in the papers' scaling (L_disc ≈ L) into vibook's
 /// (L_d ≈ h·L): L_d(q0, q1, h) = h · L_disc(q0, q1, h).
 template <class DiscreteLagrangian>
 auto scaled_by_step(DiscreteLagrangian Ldisc) {
-  return [Ld = std::move(Ldisc)](const auto& q0, const auto& q1, const auto& h) -> scalar_t<decltype(h)> {
-    return h * Ld(q0, q1, h);
-  };
+  return
+      [Ld = std::move(Ldisc)](const auto& q0, const auto& q1,
+                              const auto& h) -> scalar_t<decltype(h)> { return h * Ld(q0, q1, h); };
 }
 
 /// The mechanical Lagrangian L = ½|v|² − U(q) of a problem with a templated potential.
