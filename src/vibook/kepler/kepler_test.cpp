@@ -53,7 +53,7 @@ TEST_CASE("Kepler exact solution: within one ulp for 0 <= e <= 0.99 and |t| up t
   CHECK(worst_p <= 1.0);
 }
 
-TEST_CASE("Kepler exact solution conserves H, L and the LRL vector; period 2π") {
+TEST_CASE("Kepler exact solution conserves H, L and the LRL vector over time and closes after 2π") {
   const double e = 0.7;
   const auto orbit = KeplerOrbit::perihelion(e);
   const auto k0 = kepler_invariants(orbit.at(0).q, orbit.at(0).p);
