@@ -1,15 +1,14 @@
 // The `vibook` command: list, figure, figures, claims, run.
-#include <atomic>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
-#include <thread>
 
 #include <fmt/format.h>
 
 #include "cli.hpp"
 #include "vibook/claims/ledger.hpp"
 #include "vibook/core/errors.hpp"
+#include "vibook/core/parallel.hpp"
 #include "vibook/figures/registry.hpp"
 #include "vibook/plot/gnuplot.hpp"
 
@@ -26,18 +25,12 @@ int cmd_list() {
     fmt::print("  {:<16} {:<7} {}  [claims: {}]\n", c.id, c.is_figure ? "figure" : "check", c.title,
                ids);
   }
-  fmt::print("\nCLAIMS (status as of the last measurement; run `vibook claims` to measure)\n");
-  // `list` does not run the checks: it reports which claims have a check and which are pending.
-  claims::Ledger ledger;
+  // Statuses are measured, not stored: list runs every check (the same ones as `claims`).
+  const claims::Ledger ledger = figures::measure_all();
+  fmt::print("\nCLAIMS (status as measured now)\n");
   for (const auto& row : ledger.rows()) {
-    std::string by;
-    for (const auto& c : figures::registry()) {
-      for (const auto& id : c.claims) {
-        if (id == row.info.id) by = c.id;
-      }
-    }
-    fmt::print("  {:<8} {:<12} {:<18} {}\n", row.info.id, by.empty() ? "pending" : "checked",
-               by.empty() ? "-" : by, row.info.title);
+    fmt::print("  {:<8} {:<23} {}\n", row.info.id, claims::to_string(row.result.status),
+               row.info.title);
   }
   return cli::kOk;
 }
@@ -72,24 +65,8 @@ int cmd_figures(std::vector<std::string> ids, const fs::path& out) {
   ensure_writable_dir(out);
   // Figures are independent: one thread per figure, at most one per core.
   std::vector<figures::FigureOutput> outputs(todo.size());
-  std::vector<std::exception_ptr> errors(todo.size());
-  std::atomic<std::size_t> next{0};
-  auto worker = [&] {
-    for (std::size_t i = next++; i < todo.size(); i = next++) {
-      try {
-        outputs[i] = figures::make_figure(*todo[i], out);
-      } catch (...) {
-        errors[i] = std::current_exception();
-      }
-    }
-  };
-  std::vector<std::thread> pool;
-  const unsigned jobs = std::max(1u, std::thread::hardware_concurrency());
-  for (unsigned t = 0; t < std::min<std::size_t>(jobs, todo.size()); ++t) pool.emplace_back(worker);
-  for (auto& t : pool) t.join();
-  for (auto& e : errors) {
-    if (e) std::rethrow_exception(e);
-  }
+  parallel_for(todo.size(), 0,
+               [&](std::size_t i) { outputs[i] = figures::make_figure(*todo[i], out); });
   int rc = cli::kOk;
   for (const auto& o : outputs) {
     for (const auto& r : o.results) {

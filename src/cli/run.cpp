@@ -149,6 +149,8 @@ int integrate(const Problem& P, Stepper stepper, bool implicit, const RunOptions
   if (implicit) cols.insert(cols.end(), {"residual", "iterations"});
   TrajectoryRecorder rec(out, cols, o.every);
 
+  // omega is unwrapped between consecutive written rows: exact as long as the perihelion
+  // turns by less than π between two of them.
   std::vector<double> row(cols.size());
   double omega_prev = 0, omega_unwrapped = 0;
   bool first = true;
@@ -190,7 +192,7 @@ int integrate(const Problem& P, Stepper stepper, bool implicit, const RunOptions
       if (!s.q.allFinite() || !s.p.allFinite()) {
         throw NumericalError(fmt::format("state became non-finite at step {}", k));
       }
-      offer(k, k == steps ? T : double(k) * o.h);
+      if (rec.due(k) || k == steps) offer(k, k == steps ? T : double(k) * o.h);
       progress.update(k);
     }
   } catch (const NumericalError& e) {

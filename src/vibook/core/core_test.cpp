@@ -1,6 +1,7 @@
 // Doctests of core/: Newton reports and typed failures, the streaming recorder, order fits.
 #include <sys/resource.h>
 
+#include <atomic>
 #include <cmath>
 #include <limits>
 #include <sstream>
@@ -9,6 +10,7 @@
 
 #include "vibook/core/newton.hpp"
 #include "vibook/core/order.hpp"
+#include "vibook/core/parallel.hpp"
 #include "vibook/core/recorder.hpp"
 #include "vibook/integrators/kernels.hpp"
 #include "vibook/kepler/kepler.hpp"
@@ -136,4 +138,19 @@ TEST_CASE("fit_order recovers a known power and excludes the round-off plateau")
   CHECK(std::abs(f.slope - 2.0) < 1e-12);
   CHECK(f.points == 10);  // h = 2^-11, 2^-12 sit on the plateau
   CHECK_THROWS_AS(fit_order(h, e, 1.0), std::invalid_argument);
+}
+
+TEST_CASE("parallel_for runs every task and rethrows the first failure") {
+  std::vector<int> done(100, 0);
+  vibook::parallel_for(done.size(), 2, [&](std::size_t i) { done[i] = int(i); });
+  for (std::size_t i = 0; i < done.size(); ++i) CHECK(done[i] == int(i));
+  std::atomic<int> ran{0};
+  CHECK_THROWS_WITH_AS(vibook::parallel_for(10, 3,
+                                            [&](std::size_t i) {
+                                              ++ran;
+                                              if (i == 4 || i == 7)
+                                                throw std::runtime_error(std::to_string(i));
+                                            }),
+                       "4", std::runtime_error);
+  CHECK(ran == 10);
 }

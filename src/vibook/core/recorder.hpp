@@ -31,6 +31,9 @@ class TrajectoryRecorder {
   }
 
   std::size_t columns() const { return columns_.size(); }
+  /// True when offer(step, ...) would write the row: build the row only then (and for the
+  /// final step).
+  bool due(std::int64_t step) const { return step % every_ == 0; }
   std::int64_t rows_written() const { return written_; }
 
   /// Offer the state of step `step` (monotonically increasing). `values` has one entry per

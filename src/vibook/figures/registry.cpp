@@ -1,10 +1,9 @@
 #include "vibook/figures/registry.hpp"
 
 #include <algorithm>
-#include <atomic>
 #include <fstream>
-#include <thread>
 
+#include "vibook/core/parallel.hpp"
 #include "vibook/plot/gnuplot.hpp"
 
 namespace vibook::figures {
@@ -44,25 +43,7 @@ FigureOutput make_figure(const Check& check, const std::filesystem::path& out_ro
 std::vector<std::vector<claims::ClaimResult>> run_checks(const std::vector<const Check*>& checks,
                                                          unsigned jobs) {
   std::vector<std::vector<claims::ClaimResult>> results(checks.size());
-  std::vector<std::exception_ptr> errors(checks.size());
-  if (jobs == 0) jobs = std::max(1u, std::thread::hardware_concurrency());
-  std::atomic<std::size_t> next{0};
-  auto worker = [&] {
-    for (std::size_t i = next++; i < checks.size(); i = next++) {
-      try {
-        results[i] = checks[i]->run(Context{});
-      } catch (...) {
-        errors[i] = std::current_exception();
-      }
-    }
-  };
-  std::vector<std::thread> pool;
-  for (unsigned t = 0; t < std::min<std::size_t>(jobs, checks.size()); ++t)
-    pool.emplace_back(worker);
-  for (auto& t : pool) t.join();
-  for (auto& e : errors) {
-    if (e) std::rethrow_exception(e);
-  }
+  parallel_for(checks.size(), jobs, [&](std::size_t i) { results[i] = checks[i]->run(Context{}); });
   return results;
 }
 
