@@ -230,17 +230,36 @@ std::vector<claims::ClaimResult> run(const Context&) {
         "Each of (a) midpoint, (b) Störmer–Verlet, (c) se-adjoint, (d) se equals the generic "
         "discrete Euler–Lagrange solver on its discrete Lagrangian: worst one-step relative "
         "difference {:.2g} (tolerance {:.2g}) on the harmonic oscillator and Kepler e = 0.5, h = "
-        "0.05. Caveat: this holds for h·L_disc. Vermeeren scales L_disc ≈ L and prints the "
-        "Legendre maps (5) without the factor h; applied literally they return p/h (measured "
-        "ratio {:.6g} = 1/h). Measured orders on Kepler: see the order/ values.",
+        "0.05. Caveat: this needs the Legendre maps with the factor h (erratum V-ERR-5); "
+        "applied literally to the paper's L_disc ≈ L, (5) returns p/h (measured ratio {:.6g}). "
+        "Measured orders on Kepler: see the order/ values.",
         worst, kOneStepTolerance, factor);
   } else {
     r.status = claims::Status::not_reproduced;
     r.note = fmt::format("a kernel differs from the generic solver beyond round-off (worst {:.3g})",
                          worst);
   }
+  // Erratum V-ERR-5: with Vermeeren's own scaling (L_disc ≈ L, action Σ h L_disc) the
+  // Legendre maps are p_j = −h D1 L_disc, p_{j+1} = h D2 L_disc; (5) prints them without h.
+  claims::ClaimResult err;
+  err.id = "V-ERR-5";
+  err.source = "check-v-ex1";
+  err.info =
+      claims::ClaimInfo{"V-ERR-5", "V", "§2 (5)",
+                        "Discrete Legendre maps (5) lack the factor h of the paper's scaling"};
+  err.values.push_back({"literal_eq5_momentum_over_p_at_h0.05", factor});
+  err.values.push_back({"corrected_eq5_momentum_over_p_at_h0.05", factor * 0.05});
+  const bool is_erratum = std::abs(factor * 0.05 - 1.0) <= 1e-12;
+  err.status = is_erratum ? claims::Status::erratum : claims::Status::not_reproduced;
+  err.note = fmt::format(
+      "Printed: p_j = −D1 L_disc(x_j, x_(j+1)), p_(j+1) = D2 L_disc(x_j, x_(j+1)). With the "
+      "paper's scaling L_disc ≈ L (Def. 1, S_disc = Σ h L_disc) the maps that generate the "
+      "methods of Example 1 are p_j = −h D1 L_disc, p_(j+1) = h D2 L_disc, as Shen & Sun "
+      "write them ((3.4)–(3.5)). Evidence: along a Störmer–Verlet step of Kepler at h = 0.05 "
+      "the printed map returns {:.6g}·p (= 1/h), the corrected one {:.15g}·p.",
+      factor, factor * 0.05);
   auto p1 = run_p1({});
-  return {r, p1[0]};
+  return {r, p1[0], err};
 }
 }  // namespace
 
@@ -248,7 +267,7 @@ Check check_v_ex1() {
   return {"check-v-ex1",
           "Example 1 discrete Lagrangians generate the classical methods; Prop. 1 consistency",
           false,
-          {"V-EX1", "V-P1"},
+          {"V-EX1", "V-P1", "V-ERR-5"},
           run};
 }
 

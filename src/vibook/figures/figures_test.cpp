@@ -51,7 +51,10 @@ TEST_CASE("ledger: every catalogued claim present, pending until measured") {
   CHECK(claims::catalogue().size() == 38);
   for (const auto& row : ledger.rows()) CHECK(row.result.status == claims::Status::pending);
   const auto measured = figures::measure_all(2);
+  REQUIRE(measured.find("V-ERR-5") != nullptr);  // an erratum added by its check
+  CHECK(measured.rows().size() == claims::catalogue().size() + 1);
   for (const auto& row : measured.rows()) {
+    if (row.info.id == "V-ERR-5") continue;
     const bool has_check =
         row.info.id == "V-EX1" || row.info.id == "V-P1" || row.info.id == "V-EX3";
     INFO(row.info.id);

@@ -27,11 +27,13 @@ TEST_CASE("V-EX1: kernels equal the generic solver on their discrete Lagrangians
   CHECK(std::abs(figures::v_ex1_literal_scaling_factor() - 1.0 / 0.05) <= 1e-12 * 20.0);
   // The ledger check records the same numbers and a measured status.
   const auto results = figures::find("check-v-ex1")->run({});
-  REQUIRE(results.size() == 2);
+  REQUIRE(results.size() == 3);
   CHECK(results[0].id == "V-EX1");
   CHECK(results[0].status == claims::Status::reproduced_with_caveat);
   CHECK(results[1].id == "V-P1");
   CHECK(results[1].status == claims::Status::reproduced);
+  CHECK(results[2].id == "V-ERR-5");
+  CHECK(results[2].status == claims::Status::erratum);
 }
 
 TEST_CASE("measured orders on Kepler e = 0.5, h = 3/64 ... 3/4096 (two-sided, |p - p0| < 0.1)") {

@@ -31,9 +31,9 @@ std::array<Big, 4> reference_state(double t, double e) {
 
 }  // namespace
 
-TEST_CASE("Kepler exact solution: within one ulp for 0 <= e <= 0.99 and |t| up to 1e8") {
+TEST_CASE("Kepler exact solution: within one ulp for 0 <= e <= 0.99 and |t| up to 1e12") {
   std::mt19937_64 rng(20261121);
-  std::uniform_real_distribution<double> ecc(0.0, 0.99), logt(-3.0, 8.0);
+  std::uniform_real_distribution<double> ecc(0.0, 0.99), logt(-3.0, 12.0);
   double worst_q = 0, worst_p = 0;
   for (int i = 0; i < 4000; ++i) {
     const double e = i < 200 ? 0.99 : (i < 400 ? 0.0 : ecc(rng));
