@@ -96,9 +96,7 @@ class ImplicitMidpoint {
       J = Mat<double, N>::Identity() +
           c * ad::jacobian<N>([&](const auto& y) { return P_.gradient(y); }, x);
     };
-    NewtonOptions opt = options_;
-    opt.scale = std::max(opt.scale, q.template lpNorm<Eigen::Infinity>());
-    const SolveReport rep = newton_solve<N>(m, fj, opt, "implicit midpoint step");
+    const SolveReport rep = newton_solve<N>(m, fj, options_, "implicit midpoint step", &q);
     p -= h * P_.gradient(m);
     q = 2.0 * m - q;
     return rep;

@@ -36,8 +36,6 @@ class DelIntegrator {
   SolveReport step(Vec<double, N>& q, Vec<double, N>& p, double h) {
     Vec<double, N> q1 =
         have_increment_ ? Vec<double, N>(q + increment_) : Vec<double, N>(q + h * p);
-    NewtonOptions opt = options_;
-    opt.scale = std::max(opt.scale, q.template lpNorm<Eigen::Infinity>());
     const Vec<double, N> q0 = q;
     const Vec<double, N> p0 = p;
     auto fj = [&](const Vec<double, N>& x, Vec<double, N>& F, Mat<double, N>& J) {
@@ -45,7 +43,8 @@ class DelIntegrator {
       F = p0 + d.D1;
       J = d.D12;
     };
-    const SolveReport rep = newton_solve<N>(q1, fj, opt, "discrete Euler-Lagrange step");
+    const SolveReport rep =
+        newton_solve<N>(q1, fj, options_, "discrete Euler-Lagrange step", &q0);
     p = momentum_plus(q0, q1, h);
     increment_ = q1 - q0;
     have_increment_ = true;
