@@ -1,0 +1,35 @@
+// PNG output of the off-screen renderer (libpng).
+#include <png.h>
+
+#include <cstdio>
+#include <memory>
+
+#include "vibook/plot/render3d.hpp"
+
+namespace vibook::plot {
+
+void write_png(const std::filesystem::path& file, const Image& image) {
+  std::unique_ptr<FILE, int (*)(FILE*)> f(std::fopen(file.c_str(), "wb"), &std::fclose);
+  if (!f) throw std::runtime_error("cannot open " + file.string() + " for writing");
+  png_structp png = png_create_write_struct(PNG_LIBPNG_VER_STRING, nullptr, nullptr, nullptr);
+  png_infop info = png ? png_create_info_struct(png) : nullptr;
+  if (!png || !info) {
+    png_destroy_write_struct(&png, &info);
+    throw std::runtime_error("libpng: out of memory");
+  }
+  if (setjmp(png_jmpbuf(png))) {
+    png_destroy_write_struct(&png, &info);
+    throw std::runtime_error("libpng: error while writing " + file.string());
+  }
+  png_init_io(png, f.get());
+  png_set_IHDR(png, info, image.width, image.height, 8, PNG_COLOR_TYPE_RGBA, PNG_INTERLACE_NONE,
+               PNG_COMPRESSION_TYPE_DEFAULT, PNG_FILTER_TYPE_DEFAULT);
+  png_write_info(png, info);
+  for (int y = 0; y < image.height; ++y) {
+    png_write_row(png, image.rgba.data() + std::size_t(y) * std::size_t(image.width) * 4);
+  }
+  png_write_end(png, nullptr);
+  png_destroy_write_struct(&png, &info);
+}
+
+}  // namespace vibook::plot
