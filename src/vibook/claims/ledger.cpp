@@ -37,10 +37,37 @@ const Ledger::Row* Ledger::find(std::string_view id) const {
   return it == rows_.end() ? nullptr : &*it;
 }
 
+namespace {
+// Severity when two checks measure the same claim: the combined status is the worse one.
+int severity(Status s) {
+  switch (s) {
+    case Status::pending:
+      return 0;
+    case Status::reproduced:
+      return 1;
+    case Status::reproduced_with_caveat:
+      return 2;
+    case Status::erratum:
+      return 3;
+    case Status::not_reproduced:
+      return 4;
+  }
+  return 0;
+}
+}  // namespace
+
 void Ledger::record(const ClaimResult& r) {
   for (auto& row : rows_) {
     if (row.info.id == r.id) {
-      row.result = r;
+      if (row.result.status == Status::pending) {
+        row.result = r;
+      } else {  // a second check of the same claim: keep both measurements
+        auto& m = row.result;
+        m.values.insert(m.values.end(), r.values.begin(), r.values.end());
+        m.note += " | " + r.note;
+        m.source += ", " + r.source;
+        if (severity(r.status) > severity(m.status)) m.status = r.status;
+      }
       return;
     }
   }

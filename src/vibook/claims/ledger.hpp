@@ -49,7 +49,8 @@ class Ledger {
   };
 
   Ledger();
-  /// Record a measurement. An ID outside the catalogue must carry `info` and be an erratum
+  /// Record a measurement. A claim measured by several checks keeps all their values and
+  /// notes, and the worse status. An ID outside the catalogue must carry `info` and be an erratum
   /// claim `PAPER-ERR-EQUATION`; otherwise std::invalid_argument.
   void record(const ClaimResult& r);
   const std::vector<Row>& rows() const { return rows_; }

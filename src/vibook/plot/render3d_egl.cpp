@@ -1,6 +1,7 @@
-// EGL backend of the off-screen renderer: a surfaceless Mesa display (EGL_MESA_platform_surfaceless),
-// a desktop-OpenGL compatibility context without any surface, and a framebuffer object.
-// Used where OSMesa is not available; links libEGL and libOpenGL (GLVND), never libGL.
+// EGL backend of the off-screen renderer: a surfaceless Mesa display
+// (EGL_MESA_platform_surfaceless), a desktop-OpenGL compatibility context without any surface, and
+// a framebuffer object. Used where OSMesa is not available; links libEGL and libOpenGL (GLVND),
+// never libGL.
 #define GL_GLEXT_PROTOTYPES 1
 #include <EGL/egl.h>
 #include <EGL/eglext.h>
@@ -73,7 +74,8 @@ Image render_lines(const std::vector<Polyline3D>& lines, const View3D& view) {
   img.rgba.resize(buf.size());
   const std::size_t row = std::size_t(view.width) * 4;
   for (int y = 0; y < view.height; ++y) {
-    std::copy_n(buf.data() + std::size_t(view.height - 1 - y) * row, row, img.rgba.data() + std::size_t(y) * row);
+    std::copy_n(buf.data() + std::size_t(view.height - 1 - y) * row, row,
+                img.rgba.data() + std::size_t(y) * row);
   }
   return img;
 }

@@ -29,7 +29,8 @@ Image render_lines(const std::vector<Polyline3D>& lines, const View3D& view) {
   img.rgba.resize(buf.size());
   const std::size_t row = std::size_t(view.width) * 4;
   for (int y = 0; y < view.height; ++y) {
-    std::copy_n(buf.data() + std::size_t(view.height - 1 - y) * row, row, img.rgba.data() + std::size_t(y) * row);
+    std::copy_n(buf.data() + std::size_t(view.height - 1 - y) * row, row,
+                img.rgba.data() + std::size_t(y) * row);
   }
   return img;
 }

@@ -50,7 +50,8 @@ void draw_scene(const std::vector<Polyline3D>& lines, const View3D& view) {
   glRotatef(view.azimuth_deg, 0.0f, 0.0f, 1.0f);
 
   if (view.box) {
-    const float bx = float(0.5 * (hi[0] - lo[0]) / span_xy), by = float(0.5 * (hi[1] - lo[1]) / span_xy);
+    const float bx = float(0.5 * (hi[0] - lo[0]) / span_xy),
+                by = float(0.5 * (hi[1] - lo[1]) / span_xy);
     const float bz = 0.6f;
     glColor3f(0.75f, 0.75f, 0.75f);
     glLineWidth(1.0f);

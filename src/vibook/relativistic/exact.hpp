@@ -38,7 +38,12 @@ class ExactOrbit {
     if (!(cl > 1.0)) {
       throw ArgumentError("initial state", "c·|x × u| <= 1: the particle falls into the centre");
     }
-    if (!(E_ < c_ * c_)) throw ArgumentError("initial state", "energy >= c²: the orbit is not bound");
+    // Binding energy E − c² = c²(γ − 1) − 1/r, with γ − 1 = (|u|²/c²)/(γ + 1): no cancellation
+    // even when c is large.
+    const double g1 = (u0.squaredNorm() / (c_ * c_)) / (s0.gamma + 1.0);
+    const double binding = c_ * c_ * g1 - 1.0 / x0.norm();
+    if (!(binding < 0.0))
+      throw ArgumentError("initial state", "energy >= c²: the orbit is not bound");
     Gamma_ = std::sqrt(1.0 - 1.0 / (cl * cl));
     B_ = E_ / (cl * cl * Gamma_ * Gamma_);
     const double r0 = x0.norm(), s = 1.0 / r0;
@@ -83,10 +88,11 @@ class ExactOrbit {
     const double phi = sense_ * psi;
     const double r = 1.0 / s;
     const double vr = ell_ * B_ * e_ * Gamma_ * std::sin(theta);  // dr/dτ
-    const double vt = sense_ * ell_ * s;                            // r dφ/dτ
+    const double vt = sense_ * ell_ * s;                          // r dφ/dτ
     RelState out;
     out.x = Vec<double, 2>(r * std::cos(phi), r * std::sin(phi));
-    out.u = Vec<double, 2>(vr * std::cos(phi) - vt * std::sin(phi), vr * std::sin(phi) + vt * std::cos(phi));
+    out.u = Vec<double, 2>(vr * std::cos(phi) - vt * std::sin(phi),
+                           vr * std::sin(phi) + vt * std::cos(phi));
     out.gamma = (E_ + s) / (c_ * c_);
     out.t = (E_ * tau + (Ea - Ea0_) / (ell_ * B_ * Gamma_ * std::sqrt(1.0 - e_ * e_))) / (c_ * c_);
     return out;

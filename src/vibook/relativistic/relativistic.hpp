@@ -32,7 +32,8 @@ struct Problem {
   double c = 1.0;
 
   explicit Problem(double speed_of_light) : c(speed_of_light) {
-    if (!(c > 0 && std::isfinite(c))) throw ArgumentError("--c", "the speed of light must be positive");
+    if (!(c > 0 && std::isfinite(c)))
+      throw ArgumentError("--c", "the speed of light must be positive");
   }
   /// φ(x) = −1/|x|.
   template <class S>

@@ -24,7 +24,8 @@ LState rhs(const LState& s, long double c) {
   return {s.g, s.u0, s.u1, -(gx * s.u0 + gy * s.u1) / (c * c), -gx * s.g, -gy * s.g};
 }
 LState axpy(const LState& a, long double k, const LState& b) {
-  return {a.t + k * b.t, a.x0 + k * b.x0, a.x1 + k * b.x1, a.g + k * b.g, a.u0 + k * b.u0, a.u1 + k * b.u1};
+  return {a.t + k * b.t, a.x0 + k * b.x0, a.x1 + k * b.x1,
+          a.g + k * b.g, a.u0 + k * b.u0, a.u1 + k * b.u1};
 }
 LState rk4(LState s, long double c, long double tau, int n) {
   const long double h = tau / n;
@@ -104,8 +105,8 @@ TEST_CASE("SS-T8: the generic solver on (3.20), the form (3.22) and the composit
     g1 = from_canonical(P, X, p);
     const auto diff = [](const RelState& u, const RelState& v) {
       return std::max({std::abs(u.t - v.t) / std::max(1.0, std::abs(u.t)),
-                       (u.x - v.x).lpNorm<Eigen::Infinity>(),
-                       std::abs(u.gamma - v.gamma), (u.u - v.u).lpNorm<Eigen::Infinity>()});
+                       (u.x - v.x).lpNorm<Eigen::Infinity>(), std::abs(u.gamma - v.gamma),
+                       (u.u - v.u).lpNorm<Eigen::Infinity>()});
     };
     // Round-off model: 64 ulps of the state, plus the rounding of the clock difference
     // t_{n+1} − t_n (ulp(t)) times |∇φ|, which (3.22) and (3.20) form and (3.19) does not.
@@ -113,7 +114,8 @@ TEST_CASE("SS-T8: the generic solver on (3.20), the form (3.22) and the composit
     worst_ab = std::max(worst_ab, diff(a, b1));
     worst_ag = std::max(worst_ag, diff(a, g1));
   }
-  MESSAGE("one-step differences: (3.22) vs (3.19) ", worst_ab, ", generic (3.20) vs (3.19) ", worst_ag);
+  MESSAGE("one-step differences: (3.22) vs (3.19) ", worst_ab, ", generic (3.20) vs (3.19) ",
+          worst_ag);
   CHECK(worst_ab <= bound);
   CHECK(worst_ag <= bound);
 }
