@@ -23,8 +23,8 @@ execute_process(COMMAND ${VIBOOK} figures --out ${FIGS} RESULT_VARIABLE rc)
 if(NOT rc EQUAL 0)
   message(FATAL_ERROR "vibook figures failed (exit ${rc})")
 endif()
-file(GLOB svgs ${FIGS}/*/*.svg)
-file(COPY ${svgs} DESTINATION ${IMAGES})
+file(GLOB images ${FIGS}/*/*.svg ${FIGS}/*/*-worldline.png)
+file(COPY ${images} DESTINATION ${IMAGES})
 
 # 2. Claims: every check run again, the ledger written as JSON and HTML tables.
 execute_process(COMMAND ${VIBOOK} claims --json-out ${OUT}/claims.json --html-dir ${GEN}

@@ -21,6 +21,8 @@
 #include "vibook/mechanics/del_solver.hpp"
 #include "vibook/mechanics/discrete_lagrangian.hpp"
 #include "vibook/problems/problems.hpp"
+#include "vibook/relativistic/exact.hpp"
+#include "vibook/relativistic/relativistic.hpp"
 
 namespace vibook::cli {
 namespace {
@@ -28,7 +30,7 @@ namespace {
 struct RunOptions {
   std::string problem, method, discrete_lagrangian = "midpoint", csv;
   double h = 0.01;
-  std::optional<double> t_end, periods, e;
+  std::optional<double> t_end, periods, e, c, tau_end;
   std::vector<double> q0, p0;
   long long every = 1;
 };
@@ -71,6 +73,35 @@ class Progress {
   long long total_;
   bool tty_, shown_ = false;
   std::chrono::steady_clock::time_point start_ = std::chrono::steady_clock::now(), last_ = start_;
+};
+
+// Output file handling shared by the runners: FILE.partial, renamed when the run completes.
+class CsvOutput {
+ public:
+  explicit CsvOutput(const std::string& csv) : to_stdout_(csv == "-"), final_(csv) {
+    tmp_ = final_;
+    tmp_ += ".partial";
+    if (!to_stdout_) {
+      file_.open(tmp_, std::ios::out | std::ios::trunc);
+      require(file_.good(), "--csv", fmt::format("cannot open '{}' for writing", csv));
+    }
+  }
+  std::ostream& stream() { return to_stdout_ ? std::cout : file_; }
+  std::string partial_note() const {
+    return to_stdout_ ? "the rows before it were written to standard output"
+                      : fmt::format("the rows before it are in '{}' (incomplete)", tmp_.string());
+  }
+  void commit() {
+    if (to_stdout_) return;
+    file_.close();
+    require(!file_.fail(), "--csv", fmt::format("error while writing '{}'", tmp_.string()));
+    std::filesystem::rename(tmp_, final_);
+  }
+
+ private:
+  bool to_stdout_;
+  std::filesystem::path final_, tmp_;
+  std::ofstream file_;
 };
 
 template <int N>
@@ -129,16 +160,8 @@ int integrate(const Problem& P, Stepper stepper, bool implicit, const RunOptions
   const auto [steps, last_h] = step_plan(T, o.h);
 
   // Output: written to FILE.partial and renamed when the run completes.
-  const bool to_stdout = o.csv == "-";
-  const std::filesystem::path final_path = o.csv;
-  std::filesystem::path tmp_path = final_path;
-  tmp_path += ".partial";
-  std::ofstream file;
-  if (!to_stdout) {
-    file.open(tmp_path, std::ios::out | std::ios::trunc);
-    require(file.good(), "--csv", fmt::format("cannot open '{}' for writing", o.csv));
-  }
-  std::ostream& out = to_stdout ? std::cout : file;
+  CsvOutput csv(o.csv);
+  std::ostream& out = csv.stream();
 
   std::vector<std::string> cols = {"step", "t"};
   if constexpr (kepler) {
@@ -202,17 +225,51 @@ int integrate(const Problem& P, Stepper stepper, bool implicit, const RunOptions
     where += "), p = (";
     for (int i = 0; i < N; ++i) where += fmt::format("{}{:.17g}", i ? ", " : "", s.p(i));
     where += ")";
-    const std::string kept =
-        to_stdout ? "the rows before it were written to standard output"
-                  : fmt::format("the rows before it are in '{}' (incomplete)", tmp_path.string());
-    throw NumericalError(fmt::format("{} at {}; {}", e.what(), where, kept));
+    throw NumericalError(fmt::format("{} at {}; {}", e.what(), where, csv.partial_note()));
   }
   rec.finish();
-  if (!to_stdout) {
-    file.close();
-    require(!file.fail(), "--csv", fmt::format("error while writing '{}'", tmp_path.string()));
-    std::filesystem::rename(tmp_path, final_path);
+  csv.commit();
+  return kOk;
+}
+
+// Relativistic Kepler in proper time (Shen & Sun 2025, (3.16)–(3.22)).
+template <class Method>
+int integrate_relativistic(const relativistic::Problem& P, Method method, const RunOptions& o) {
+  using namespace relativistic;
+  const Vec<double, 2> x0 = o.q0.empty() ? Vec<double, 2>(0.4, 0.0) : vector_arg<2>(o.q0, "--q0");
+  const Vec<double, 2> u0 = o.p0.empty() ? Vec<double, 2>(0.0, 2.0) : vector_arg<2>(o.p0, "--p0");
+  try {
+    ExactOrbit check(P, x0, u0);  // a bound precessing orbit, or a clear error
+  } catch (const ArgumentError& e) {
+    throw ArgumentError("--q0/--p0/--c", e.what());
   }
+  const double T = o.tau_end.value_or(40.0);
+  require(std::isfinite(T) && T > 0, "--tau-end", "must be a positive number");
+  const auto [steps, last_h] = step_plan(T, o.h);
+  CsvOutput out(o.csv);
+  TrajectoryRecorder rec(
+      out.stream(), {"step", "tau", "t", "x1", "x2", "gamma", "u1", "u2", "energy", "L", "shell"},
+      o.every);
+  RelState s = P.initial(x0, u0);
+  auto offer = [&](long long k, double tau) {
+    const Invariants inv = invariants(P, s);
+    rec.offer(k, std::array<double, 11>{double(k), tau, s.t, s.x(0), s.x(1), s.gamma, s.u(0),
+                                        s.u(1), inv.energy, inv.L, inv.shell});
+  };
+  Progress progress(steps);
+  offer(0, 0.0);
+  for (long long k = 1; k <= steps; ++k) {
+    method.step(s, k == steps ? last_h : o.h);
+    if (!s.x.allFinite() || !s.u.allFinite() || !std::isfinite(s.gamma)) {
+      rec.finish();
+      throw NumericalError(fmt::format("state became non-finite at step {} (tau = {:.17g}); {}", k,
+                                       double(k) * o.h, out.partial_note()));
+    }
+    if (rec.due(k) || k == steps) offer(k, k == steps ? T : double(k) * o.h);
+    progress.update(k);
+  }
+  rec.finish();
+  out.commit();
   return kOk;
 }
 
@@ -240,12 +297,14 @@ std::function<int()> add_run_command(CLI::App& app) {
       "run", "Integrate a problem with a method and write the trajectory as CSV");
   run->add_option("--problem", o->problem, "harmonic, pendulum or kepler")
       ->required()
-      ->check(CLI::IsMember({"harmonic", "pendulum", "kepler"}));
+      ->check(CLI::IsMember({"harmonic", "pendulum", "kepler", "relativistic-kepler"}));
   run->add_option("--method", o->method,
                   "se (drift-kick symplectic Euler), se-adjoint (kick-drift), sv (Störmer–Verlet), "
-                  "midpoint (implicit midpoint), del-generic (generic solver)")
+                  "midpoint (implicit midpoint), del-generic (generic solver); for "
+                  "relativistic-kepler: k-symplectic (3.19), vi (3.20)/(3.22), vi2 (3.8)")
       ->required()
-      ->check(CLI::IsMember({"se", "se-adjoint", "sv", "midpoint", "del-generic"}));
+      ->check(CLI::IsMember(
+          {"se", "se-adjoint", "sv", "midpoint", "del-generic", "k-symplectic", "vi", "vi2"}));
   run->add_option("--discrete-lagrangian", o->discrete_lagrangian,
                   "for del-generic: midpoint, sv, se or se-adjoint (default midpoint)")
       ->check(CLI::IsMember({"midpoint", "sv", "se", "se-adjoint"}));
@@ -257,7 +316,12 @@ std::function<int()> add_run_command(CLI::App& app) {
   run->add_option("--e", o->e,
                   "kepler: eccentricity in [0,1); starts at perihelion of the orbit with a = 1");
   run->add_option("--q0", o->q0, "initial position, comma-separated")->delimiter(',');
-  run->add_option("--p0", o->p0, "initial momentum, comma-separated")->delimiter(',');
+  run->add_option("--p0", o->p0,
+                  "initial momentum, comma-separated (relativistic-kepler: u0 = γẋ0; default 0,2 "
+                  "with --q0 0.4,0, the paper's Fig. 7 data)")
+      ->delimiter(',');
+  run->add_option("--c", o->c, "relativistic-kepler: the speed of light (required)");
+  run->add_option("--tau-end", o->tau_end, "relativistic-kepler: final proper time (default 40)");
   run->add_option("--every", o->every, "write every K-th state (first and last always)");
   run->add_option("--csv", o->csv, "output file ('-' for standard output)")->required();
 
@@ -266,6 +330,24 @@ std::function<int()> add_run_command(CLI::App& app) {
     require(std::isfinite(o->h) && o->h > 0, "--h", "must be a positive finite number");
     require(o->every >= 1, "--every", "must be at least 1");
     if (o->e) require(*o->e >= 0 && *o->e < 1, "--e", "eccentricity must lie in [0, 1)");
+    const bool rel = o->problem == "relativistic-kepler";
+    const bool rel_method = o->method == "k-symplectic" || o->method == "vi" || o->method == "vi2";
+    require(rel == rel_method, "--method",
+            rel ? "relativistic-kepler takes k-symplectic, vi or vi2"
+                : "k-symplectic, vi and vi2 are for --problem relativistic-kepler");
+    if (rel) {
+      require(o->c.has_value(), "--c", "the speed of light is required for relativistic-kepler");
+      require(!o->t_end && !o->periods, "--tau-end",
+              "relativistic-kepler runs in proper time: use --tau-end, not --t-end/--periods");
+      require(!o->e, "--e", "does not apply to relativistic-kepler; give --q0 and --p0");
+      const relativistic::Problem P(*o->c);  // c <= 0: ArgumentError naming --c
+      if (o->method == "k-symplectic")
+        return integrate_relativistic(P, relativistic::KSymplectic{P}, *o);
+      if (o->method == "vi") return integrate_relativistic(P, relativistic::Vi322{P}, *o);
+      return integrate_relativistic(P, relativistic::Vi2{P}, *o);
+    }
+    require(!o->c, "--c", "only applies to --problem relativistic-kepler");
+    require(!o->tau_end, "--tau-end", "only applies to --problem relativistic-kepler");
     if (o->problem == "harmonic") return dispatch_method(HarmonicOscillator{}, *o);
     if (o->problem == "pendulum") return dispatch_method(Pendulum{}, *o);
     return dispatch_method(Kepler{}, *o);

@@ -68,6 +68,22 @@ tail -1 "$tmp/b.csv" | grep -q "^4,1," && ok || bad "shortened last step ends at
 expect 0 "" -- run --problem kepler --method sv --e 0.3 --h 0.01 --periods 1 --every 100000 --csv "$tmp/c.csv"
 tail -1 "$tmp/c.csv" | grep -q "^629,6.2831853071795862," && ok || bad "one Kepler period: $(tail -1 "$tmp/c.csv")"
 
+# --- relativistic Kepler (Shen & Sun (3.16)–(3.22)), proper time ----------------------------
+for m in k-symplectic vi vi2; do
+  expect 0 "" -- run --problem relativistic-kepler --method "$m" --c 5 --q0 0.4,0 --p0 0,2 --h 0.05 --tau-end 40 --every 100 --csv "$tmp/rel-$m.csv"
+done
+head -1 "$tmp/rel-vi.csv" | grep -qx "step,tau,t,x1,x2,gamma,u1,u2,energy,L,shell" && ok || bad "relativistic CSV header"
+tail -1 "$tmp/rel-vi2.csv" | grep -q "^800,40," && ok || bad "relativistic run ends at tau = 40"
+expect 2 "--c" -- run --problem relativistic-kepler --method vi --c 0 --csv "$tmp/r.csv"
+expect 2 "--c" -- run --problem relativistic-kepler --method vi --c -2 --csv "$tmp/r.csv"
+expect 2 "--c" -- run --problem relativistic-kepler --method vi --csv "$tmp/r.csv"
+expect 2 "not bound" -- run --problem relativistic-kepler --method vi --c 5 --p0 0,3 --csv "$tmp/r.csv"
+expect 2 "centre" -- run --problem relativistic-kepler --method vi --c 1 --csv "$tmp/r.csv"
+expect 2 "--method" -- run --problem relativistic-kepler --method sv --c 5 --csv "$tmp/r.csv"
+expect 2 "--method" -- run --problem kepler --method vi2 --csv "$tmp/r.csv"
+expect 2 "--tau-end" -- run --problem relativistic-kepler --method vi --c 5 --t-end 3 --csv "$tmp/r.csv"
+[ ! -e "$tmp/r.csv" ] && ok || bad "a rejected relativistic run must not leave an output file"
+
 # --- numerical failure: exit 3, the reason, the partial file named -------------------------
 expect 3 "partial" -- run --problem kepler --method del-generic --q0 1,0 --p0 0,1.4 --h 2 --t-end 100 --csv "$tmp/d.csv"
 [ ! -e "$tmp/d.csv" ] && [ -e "$tmp/d.csv.partial" ] && ok || bad "failed run leaves only FILE.partial"
