@@ -24,6 +24,7 @@ Image render_lines(const std::vector<Polyline3D>& lines, const View3D& view) {
     throw RenderError("OSMesa: could not make the context current");
   }
   internal::draw_scene(lines, view);
+  OSMesaMakeCurrent(nullptr, nullptr, 0, 0, 0);  // unbind before destroying
   OSMesaDestroyContext(ctx);
   // OSMesa's rows run bottom-up; PNG's top-down.
   img.rgba.resize(buf.size());
