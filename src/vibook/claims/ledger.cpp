@@ -1,6 +1,7 @@
 #include "vibook/claims/ledger.hpp"
 
 #include <algorithm>
+#include <limits>
 #include <stdexcept>
 
 #include <fmt/format.h>
@@ -21,6 +22,13 @@ std::string_view to_string(Status s) {
       return "erratum";
   }
   return "pending";
+}
+
+double ClaimResult::value(std::string_view name) const {
+  for (const auto& [k, v] : values) {
+    if (k == name) return v;
+  }
+  return std::numeric_limits<double>::quiet_NaN();
 }
 
 Ledger::Ledger() {

@@ -35,6 +35,10 @@ struct ClaimResult {
   std::string note;                                    ///< what was measured and how
   std::string source;                                  ///< check or figure that measured it
   std::optional<ClaimInfo> info;  ///< required for IDs not in the catalogue (errata)
+
+  /// The measured value of that name, or NaN if there is none (so that any comparison with
+  /// a missing value fails).
+  double value(std::string_view name) const;
 };
 
 /// Every catalogued claim, in the order of CLAIMS.md.

@@ -52,6 +52,8 @@ void write_png(const std::filesystem::path& file, const Image& image);
 namespace internal {
 /// The fixed-function drawing shared by the backends (a current GL context is required).
 void draw_scene(const std::vector<Polyline3D>& lines, const View3D& view);
+/// An image from a bottom-up RGBA buffer as OpenGL reads it (rows reversed).
+Image from_bottom_up(const std::vector<std::uint8_t>& buf, int width, int height);
 }  // namespace internal
 
 }  // namespace vibook::plot

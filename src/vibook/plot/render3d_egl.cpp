@@ -60,9 +60,6 @@ Image render_lines(const std::vector<Polyline3D>& lines, const View3D& view) {
     throw RenderError("EGL: incomplete framebuffer object");
   }
   internal::draw_scene(lines, view);
-  Image img;
-  img.width = view.width;
-  img.height = view.height;
   std::vector<std::uint8_t> buf(std::size_t(view.width) * std::size_t(view.height) * 4);
   glReadPixels(0, 0, view.width, view.height, GL_RGBA, GL_UNSIGNED_BYTE, buf.data());
   glDeleteRenderbuffers(1, &depth);
@@ -71,13 +68,7 @@ Image render_lines(const std::vector<Polyline3D>& lines, const View3D& view) {
   eglMakeCurrent(dpy, EGL_NO_SURFACE, EGL_NO_SURFACE, EGL_NO_CONTEXT);
   eglDestroyContext(dpy, ctx);
   eglTerminate(dpy);
-  img.rgba.resize(buf.size());
-  const std::size_t row = std::size_t(view.width) * 4;
-  for (int y = 0; y < view.height; ++y) {
-    std::copy_n(buf.data() + std::size_t(view.height - 1 - y) * row, row,
-                img.rgba.data() + std::size_t(y) * row);
-  }
-  return img;
+  return internal::from_bottom_up(buf, view.width, view.height);
 }
 
 }  // namespace vibook::plot

@@ -1,12 +1,26 @@
 // PNG output of the off-screen renderer (libpng).
 #include <png.h>
 
+#include <algorithm>
 #include <cstdio>
 #include <memory>
 
 #include "vibook/plot/render3d.hpp"
 
 namespace vibook::plot {
+
+Image internal::from_bottom_up(const std::vector<std::uint8_t>& buf, int width, int height) {
+  Image img;
+  img.width = width;
+  img.height = height;
+  img.rgba.resize(buf.size());
+  const std::size_t row = std::size_t(width) * 4;
+  for (int y = 0; y < height; ++y) {
+    std::copy_n(buf.data() + std::size_t(height - 1 - y) * row, row,
+                img.rgba.data() + std::size_t(y) * row);
+  }
+  return img;
+}
 
 void write_png(const std::filesystem::path& file, const Image& image) {
   std::unique_ptr<FILE, int (*)(FILE*)> f(std::fopen(file.c_str(), "wb"), &std::fclose);
