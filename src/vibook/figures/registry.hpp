@@ -56,6 +56,7 @@ claims::Ledger measure_all(unsigned jobs = 0);
 // The individual checks (one translation unit each).
 Check vermeeren_fig1();
 Check check_v_ex1();
+Check check_s_del();
 Check check_ss_t8();
 Check shen_sun_fig7();
 Check relativistic_precession();
