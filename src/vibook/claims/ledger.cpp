@@ -24,6 +24,19 @@ std::string_view to_string(Status s) {
   return "pending";
 }
 
+ClaimResult erratum(ClaimInfo info, std::string source,
+                    std::vector<std::pair<std::string, double>> values, bool evidence_holds,
+                    std::string note) {
+  ClaimResult r;
+  r.id = info.id;
+  r.status = evidence_holds ? Status::erratum : Status::not_reproduced;
+  r.values = std::move(values);
+  r.note = std::move(note);
+  r.source = std::move(source);
+  r.info = std::move(info);
+  return r;
+}
+
 double ClaimResult::value(std::string_view name) const {
   for (const auto& [k, v] : values) {
     if (k == name) return v;

@@ -41,6 +41,13 @@ struct ClaimResult {
   double value(std::string_view name) const;
 };
 
+/// An erratum claim `PAPER-ERR-EQUATION` measured by `source`: status `erratum` when the
+/// measured evidence holds (the print is wrong and the correction right), `not-reproduced`
+/// otherwise.
+ClaimResult erratum(ClaimInfo info, std::string source,
+                    std::vector<std::pair<std::string, double>> values, bool evidence_holds,
+                    std::string note);
+
 /// Every catalogued claim, in the order of CLAIMS.md.
 const std::vector<ClaimInfo>& catalogue();
 

@@ -97,25 +97,20 @@ std::vector<claims::ClaimResult> run(const Context&) {
       "(erratum S-ERR-14).",
       kSDelTolerance, k.min_step, k.max_step);
 
-  claims::ClaimResult e;
-  e.id = "S-ERR-14";
-  e.source = "check-s-del";
-  e.info =
+  const claims::ClaimResult e = claims::erratum(
       claims::ClaimInfo{"S-ERR-14", "S", "§2.2 (14)",
-                        "Discrete energy printed as +D3 L_d; (12), (16) and (18) need −D3 L_d"};
-  e.values = {{"kepler_printed_eq14_in_eq16_residual_rel", k.printed_eq14_residual},
-              {"kepler_corrected_residual_rel", k.two_step_residual},
-              {"kepler_discrete_energy_-D3", k.discrete_energy},
-              {"kepler_continuous_energy_H_at_end", k.continuous_energy}};
-  e.status = k.printed_eq14_residual > 0.1 && ok ? claims::Status::erratum
-                                                 : claims::Status::not_reproduced;
-  e.note =
+                        "Discrete energy printed as +D3 L_d; (12), (16) and (18) need −D3 L_d"},
+      "check-s-del",
+      {{"kepler_printed_eq14_in_eq16_residual_rel", k.printed_eq14_residual},
+       {"kepler_corrected_residual_rel", k.two_step_residual},
+       {"kepler_discrete_energy_-D3", k.discrete_energy},
+       {"kepler_continuous_energy_H_at_end", k.continuous_energy}},
+      k.printed_eq14_residual > 0.1 && ok,
       "Printed: E_k = D3 L_d(t_(k−1), q_(k−1), t_k, q_k), while (18) writes E_(k+1) = −D3 L_d and "
-      "(16) "
-      "sets D1 L_d(t_k, q_k, t_(k+1), q_(k+1)) = E_k. By (12) only E_k = −D3 L_d makes (16) hold: "
-      "along the Kepler run the printed definition leaves (16) off by 2|E| (relative residual "
-      "shown), the corrected one holds to round-off; and −D3 L_d is the physical energy (≈ H = "
-      "−0.5).";
+      "(16) sets D1 L_d(t_k, q_k, t_(k+1), q_(k+1)) = E_k. By (12) only E_k = −D3 L_d makes (16) "
+      "hold: along the Kepler run the printed definition leaves (16) off by 2|E| (relative "
+      "residual shown), the corrected one holds to round-off; and −D3 L_d is the physical energy "
+      "(≈ H = −0.5).");
   return {r, e};
 }
 }  // namespace

@@ -241,23 +241,20 @@ std::vector<claims::ClaimResult> run(const Context&) {
   }
   // Erratum V-ERR-5: with Vermeeren's own scaling (L_disc ≈ L, action Σ h L_disc) the
   // Legendre maps are p_j = −h D1 L_disc, p_{j+1} = h D2 L_disc; (5) prints them without h.
-  claims::ClaimResult err;
-  err.id = "V-ERR-5";
-  err.source = "check-v-ex1";
-  err.info =
+  const claims::ClaimResult err = claims::erratum(
       claims::ClaimInfo{"V-ERR-5", "V", "§2 (5)",
-                        "Discrete Legendre maps (5) lack the factor h of the paper's scaling"};
-  err.values.push_back({"literal_eq5_momentum_over_p_at_h0.05", factor});
-  err.values.push_back({"corrected_eq5_momentum_over_p_at_h0.05", factor * 0.05});
-  const bool is_erratum = std::abs(factor * 0.05 - 1.0) <= 1e-12;
-  err.status = is_erratum ? claims::Status::erratum : claims::Status::not_reproduced;
-  err.note = fmt::format(
-      "Printed: p_j = −D1 L_disc(x_j, x_(j+1)), p_(j+1) = D2 L_disc(x_j, x_(j+1)). With the "
-      "paper's scaling L_disc ≈ L (Def. 1, S_disc = Σ h L_disc) the maps that generate the "
-      "methods of Example 1 are p_j = −h D1 L_disc, p_(j+1) = h D2 L_disc, as Shen & Sun "
-      "write them ((3.4)–(3.5)). Evidence: along a Störmer–Verlet step of Kepler at h = 0.05 "
-      "the printed map returns {:.6g}·p (= 1/h), the corrected one {:.15g}·p.",
-      factor, factor * 0.05);
+                        "Discrete Legendre maps (5) lack the factor h of the paper's scaling"},
+      "check-v-ex1",
+      {{"literal_eq5_momentum_over_p_at_h0.05", factor},
+       {"corrected_eq5_momentum_over_p_at_h0.05", factor * 0.05}},
+      std::abs(factor * 0.05 - 1.0) <= 1e-12,
+      fmt::format(
+          "Printed: p_j = −D1 L_disc(x_j, x_(j+1)), p_(j+1) = D2 L_disc(x_j, x_(j+1)). With the "
+          "paper's scaling L_disc ≈ L (Def. 1, S_disc = Σ h L_disc) the maps that generate the "
+          "methods of Example 1 are p_j = −h D1 L_disc, p_(j+1) = h D2 L_disc, as Shen & Sun "
+          "write them ((3.4)–(3.5)). Evidence: along a Störmer–Verlet step of Kepler at h = 0.05 "
+          "the printed map returns {:.6g}·p (= 1/h), the corrected one {:.15g}·p.",
+          factor, factor * 0.05));
   auto p1 = run_p1({});
   return {r, p1[0], err};
 }

@@ -9,8 +9,8 @@
 namespace vibook::figures {
 
 const std::vector<Check>& registry() {
-  static const std::vector<Check> all = {check_s_del(), check_v_ex1(), vermeeren_fig1(), check_ss_t8(),
-                                         shen_sun_fig7(), relativistic_precession()};
+  static const std::vector<Check> all = {check_s_del(), check_v_ex1(),   vermeeren_fig1(),
+                                         check_ss_t8(), shen_sun_fig7(), relativistic_precession()};
   return all;
 }
 

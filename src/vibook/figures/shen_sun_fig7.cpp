@@ -99,39 +99,33 @@ std::vector<claims::ClaimResult> run_ss_t8(const Context&) {
       c, h);
   out.push_back(t8);
 
-  claims::ClaimResult e319;
-  e319.id = "SS-ERR-3.19";
-  e319.source = "check-ss-t8";
-  e319.info = claims::ClaimInfo{"SS-ERR-3.19", "SS", "§3 (3.19)",
-                                "K-symplectic composition repeats φ_H1 where φ_Ht belongs"};
-  e319.values = {{"printed_composition_vs_322_one_step_max", m.printed_319_vs_composition},
-                 {"corrected_composition_vs_322_one_step_max", m.vi322_vs_composition}};
-  e319.status = m.printed_319_vs_composition > 1e3 * m.bound && t8_ok
-                    ? claims::Status::erratum
-                    : claims::Status::not_reproduced;
-  e319.note =
+  const claims::ClaimResult e319 = claims::erratum(
+      claims::ClaimInfo{"SS-ERR-3.19", "SS", "§3 (3.19)",
+                        "K-symplectic composition repeats φ_H1 where φ_Ht belongs"},
+      "check-ss-t8",
+      {{"printed_composition_vs_322_one_step_max", m.printed_319_vs_composition},
+       {"corrected_composition_vs_322_one_step_max", m.vi322_vs_composition}},
+      m.printed_319_vs_composition > 1e3 * m.bound && t8_ok,
+
       "Printed: Φ_h = φ_HN∘…∘φ_H1∘φ_H1. The proof's (3.22) is φ_HN∘…∘φ_H1∘φ_Ht (the flow of "
       "H_t = −½c²γ², which advances t and kicks u, applied first). The printed composition never "
       "applies φ_Ht: it differs from (3.22) at first order in h, the corrected one only by "
-      "round-off.";
+      "round-off.");
   out.push_back(e319);
 
-  claims::ClaimResult et8;
-  et8.id = "SS-ERR-T8";
-  et8.source = "check-ss-t8";
-  et8.info = claims::ClaimInfo{"SS-ERR-T8", "SS", "Thm 8",
-                               "Two-step t-equation of (3.20) lacks the factor 1/c²"};
-  et8.values = {{"printed_t_equation_max_residual", m.thm8_printed_residual},
-                {"corrected_t_equation_max_residual", m.thm8_corrected_residual},
-                {"size_of_the_corrected_right_side", m.thm8_scale}};
-  et8.status = m.thm8_corrected_residual <= 1e-6 * m.thm8_scale &&
-                       m.thm8_printed_residual > 0.5 * m.thm8_scale
-                   ? claims::Status::erratum
-                   : claims::Status::not_reproduced;
-  et8.note =
+  const claims::ClaimResult et8 = claims::erratum(
+      claims::ClaimInfo{"SS-ERR-T8", "SS", "Thm 8",
+                        "Two-step t-equation of (3.20) lacks the factor 1/c²"},
+      "check-ss-t8",
+      {{"printed_t_equation_max_residual", m.thm8_printed_residual},
+       {"corrected_t_equation_max_residual", m.thm8_corrected_residual},
+       {"size_of_the_corrected_right_side", m.thm8_scale}},
+      m.thm8_corrected_residual <= 1e-6 * m.thm8_scale &&
+          m.thm8_printed_residual > 0.5 * m.thm8_scale,
+
       "Printed: (t_(n+1) − 2t_n + t_(n−1))/h² = −(φ(x_n) − φ(x_(n−1)))/h. Differentiating (3.20) "
       "with respect to t_n gives −(φ(x_n) − φ(x_(n−1)))/(c² h). Along the integrator's own "
-      "trajectory (c = 5) the corrected equation holds to round-off and the printed one does not.";
+      "trajectory (c = 5) the corrected equation holds to round-off and the printed one does not.");
   out.push_back(et8);
 
   // Signs of φ, measured on the Lagrangians by AutoDiff at x = (0.4, 0), γ = 1.1, u = (0, 2):
@@ -148,19 +142,17 @@ std::vector<claims::ClaimResult> run_ss_t8(const Context&) {
   const double f_sec3 = radial_force([&](const auto& y) -> scalar_t<decltype(y)> {
     return -(1.0 / sqrt(y.squaredNorm())) * gamma;  // (3.17) with §3's φ = 1/|x|: A·ẋ = −φγ
   });
-  claims::ClaimResult ephi;
-  ephi.id = "SS-ERR-PHI";
-  ephi.source = "check-ss-t8";
-  ephi.info = claims::ClaimInfo{
-      "SS-ERR-PHI", "SS", "§3 and §5 Fig. 7",
-      "Sign of the Coulomb potential: φ = 1/|x| (repulsive) vs the attractive Fig. 7 Lagrangian"};
-  ephi.values = {{"radial_force_fig7_lagrangian", f_fig7}, {"radial_force_sec3_phi", f_sec3}};
-  ephi.status = f_fig7 < 0 && f_sec3 > 0 ? claims::Status::erratum : claims::Status::not_reproduced;
-  ephi.note =
+  const claims::ClaimResult ephi = claims::erratum(
+      claims::ClaimInfo{"SS-ERR-PHI", "SS", "§3 and §5 Fig. 7",
+                        "Sign of the Coulomb potential: φ = 1/|x| (repulsive) vs the attractive "
+                        "Fig. 7 Lagrangian"},
+      "check-ss-t8", {{"radial_force_fig7_lagrangian", f_fig7}, {"radial_force_sec3_phi", f_sec3}},
+      f_fig7 < 0 && f_sec3 > 0,
+
       "§3 takes φ(x) = 1/|x| in (2.7)/(3.16)–(3.17): with (3.17)'s A = (−φ, 0) the force on the "
       "particle points outwards (measured radial force > 0): no bound orbit. Fig. 7's Lagrangian "
       "L = −½c²γ² + ½u² + γ/|x| is (3.17) with φ = −1/|x|: the force points inwards (< 0) and the "
-      "orbits are bound. vibook uses φ = −1/|x| (attractive), the reading Fig. 7 needs.";
+      "orbits are bound. vibook uses φ = −1/|x| (attractive), the reading Fig. 7 needs.");
   out.push_back(ephi);
 
   // (2.7): d/dt(γẋ) = −∇φ. Printed Lagrangian L = −c²γ⁻¹ + φ: its ∂L/∂x = +∇φ.
@@ -174,18 +166,14 @@ std::vector<claims::ClaimResult> run_ss_t8(const Context&) {
         return S(-cc * cc * std::sqrt(1.0 - 0.25 / (cc * cc)) + phi);  // v = 0.5: −c²/γ + φ
       },
       x);
-  claims::ClaimResult e27;
-  e27.id = "SS-ERR-2.7";
-  e27.source = "check-ss-t8";
-  e27.info = claims::ClaimInfo{"SS-ERR-2.7", "SS", "§2 (2.7)",
-                               "Lagrangian of (2.7) printed as −c²γ⁻¹ + φ; it must be −c²γ⁻¹ − φ"};
-  e27.values = {{"dL_dx_over_minus_grad_phi", dL.dot(-gphi) / gphi.squaredNorm()}};
-  e27.status = std::abs(dL.dot(-gphi) / gphi.squaredNorm() + 1.0) <= 1e-14
-                   ? claims::Status::erratum
-                   : claims::Status::not_reproduced;
-  e27.note =
+  const claims::ClaimResult e27 = claims::erratum(
+      claims::ClaimInfo{"SS-ERR-2.7", "SS", "§2 (2.7)",
+                        "Lagrangian of (2.7) printed as −c²γ⁻¹ + φ; it must be −c²γ⁻¹ − φ"},
+      "check-ss-t8", {{"dL_dx_over_minus_grad_phi", dL.dot(-gphi) / gphi.squaredNorm()}},
+      std::abs(dL.dot(-gphi) / gphi.squaredNorm() + 1.0) <= 1e-14,
+
       "The Euler–Lagrange equation of L = −c²γ⁻¹(ẋ) + φ(x) is d/dt(γẋ) = ∂L/∂x = +∇φ, the opposite "
-      "of (2.7)'s −∇φ (measured: ∂L/∂x = −1 × (−∇φ)). L = −c²γ⁻¹ − φ gives (2.7).";
+      "of (2.7)'s −∇φ (measured: ∂L/∂x = −1 × (−∇φ)). L = −c²γ⁻¹ − φ gives (2.7).");
   out.push_back(e27);
   return out;
 }
