@@ -92,7 +92,8 @@ std::vector<claims::ClaimResult> run(const Context&) {
       "on Kepler (e = 0.5, first step h0 = 0.01 from the exact solution) and on the pendulum "
       "(q0 = 1.2, h0 = 0.05): the two-step equations (11)–(12) hold along the result to round-off "
       "(tolerance {:.2g} relative to |p| + |E|), with the steps adapting between {:.3g} and {:.3g} "
-      "on Kepler, and the discrete energy is conserved to round-off. Caveat: with the energy sign "
+      "on Kepler; the discrete energy drifts only by accumulated round-off (drift shown). Caveat: "
+      "with the energy sign "
       "of (14) as printed the equations are inconsistent; the marching form uses E_k = −D3 L_d "
       "(erratum S-ERR-14).",
       kSDelTolerance, k.min_step, k.max_step);

@@ -70,7 +70,7 @@ struct ExtendedStepReport {
 /// trial Δt the momentum equations (15) are solved for q_{k+1}(Δt) by Newton (well
 /// conditioned), and the scalar energy equation g(Δt) = D1 L_d − E_k = 0 is solved by a
 /// bracketed root finder (Boost.Math TOMS 748). The bracket is grown geometrically from the
-/// previous step Δt_{k−1} (factor 2, within [Δt_{k−1}/max_ratio, Δt_{k−1}·max_ratio]), which
+/// previous step Δt_{k−1} (ratio first_ratio, squared each time, up to max_ratio), which
 /// keeps to the root that continues the previous step. If no sign change is found there, no
 /// admissible step exists near the previous one, and the step throws SolveError saying so.
 template <int N, class ExtendedDiscreteLagrangian>
@@ -81,6 +81,8 @@ class ExtendedDelIntegrator {
   struct Options {
     NewtonOptions newton{};
     double max_ratio = 64.0;  ///< how far the bracket may grow from the previous step
+    double first_ratio =
+        1.015625;  ///< the first bracket [Δt/r, Δt·r]; r is squared until max_ratio
     int max_root_iterations = 200;
   };
 
@@ -138,7 +140,8 @@ class ExtendedDelIntegrator {
     if (g0 != 0.0) {
       double a_prev = last_dt_, ga_prev = g0, b_prev = last_dt_, gb_prev = g0;
       bool found = false;
-      for (double f = 2.0; f <= options_.max_ratio && !found; f *= 2.0) {
+      for (double f = options_.first_ratio; !found; f *= f) {
+        f = std::min(f, options_.max_ratio);
         const double a = last_dt_ / f, b = last_dt_ * f;
         const double ga = g(a), gb = g(b);
         const bool lower = (ga < 0) != (ga_prev < 0), upper = (gb < 0) != (gb_prev < 0);
@@ -154,6 +157,7 @@ class ExtendedDelIntegrator {
           found = true;
         }
         a_prev = a, ga_prev = ga, b_prev = b, gb_prev = gb;
+        if (f >= options_.max_ratio) break;
       }
       if (!found) {
         throw SolveError(
