@@ -14,8 +14,10 @@
 #include <fmt/format.h>
 
 #include "cli.hpp"
+#include "vibook/avi/avi.hpp"
 #include "vibook/core/errors.hpp"
 #include "vibook/core/recorder.hpp"
+#include "vibook/epavi/epavi.hpp"
 #include "vibook/integrators/kernels.hpp"
 #include "vibook/kepler/kepler.hpp"
 #include "vibook/mechanics/del_solver.hpp"
@@ -30,7 +32,7 @@ namespace {
 struct RunOptions {
   std::string problem, method, discrete_lagrangian = "midpoint", csv;
   double h = 0.01;
-  std::optional<double> t_end, periods, e, c, tau_end;
+  std::optional<double> t_end, periods, e, c, tau_end, h0;
   std::vector<double> q0, p0;
   long long every = 1;
 };
@@ -273,10 +275,111 @@ int integrate_relativistic(const relativistic::Problem& P, Method method, const 
   return kOk;
 }
 
+// Adaptive methods (Sharma et al. 2022): EpAVI and AVI1/AVI2. The run stops at the first
+// step that reaches T (the steps are chosen by the method, not by the user).
+int integrate_adaptive_kepler(const RunOptions& o) {
+  constexpr int N = 2;
+  const Kepler P;
+  const double h0 = o.h0.value_or(o.h);
+  require(std::isfinite(h0) && h0 > 0, "--h0", "must be a positive finite number");
+  State<N> s0 = o.e ? kepler_perihelion_state(*o.e)
+                    : (o.q0.empty() ? kepler_perihelion_state(0.5) : State<N>{});
+  if (!o.e && !o.q0.empty()) {
+    s0.q = vector_arg<N>(o.q0, "--q0");
+    s0.p = vector_arg<N>(o.p0, "--p0");
+  }
+  const KeplerOrbit orbit =
+      o.e ? KeplerOrbit::perihelion(*o.e) : KeplerOrbit::from_state(s0.q, s0.p);
+  const double T = o.periods ? *o.periods * (o.e ? 2 * std::numbers::pi : orbit.period())
+                             : o.t_end.value_or(10.0);
+  require(std::isfinite(T) && T > 0, o.periods ? "--periods" : "--t-end",
+          "must be a positive number");
+
+  CsvOutput csv(o.csv);
+  const bool epavi = o.method == "epavi";
+  std::vector<std::string> cols = {"step", "t", "dt", "q1",  "q2",   "p1",
+                                   "p2",   "H", "L",  "ecc", "omega"};
+  if (epavi) cols.push_back("E_d");
+  cols.insert(cols.end(), {"residual", "iterations"});
+  TrajectoryRecorder rec(csv.stream(), cols, o.every);
+  std::vector<double> row(cols.size());
+  double omega_prev = 0, omega_unwrapped = 0;
+  auto offer = [&](long long k, double t, double dt, const Vec<double, N>& q,
+                   const Vec<double, N>& p, double Ed, double residual, int iterations) {
+    const KeplerInvariants inv = kepler_invariants(q, p);
+    double d = k == 0 ? 0.0 : inv.omega - omega_prev;
+    d -= 2 * std::numbers::pi * std::nearbyint(d / (2 * std::numbers::pi));
+    omega_unwrapped = k == 0 ? inv.omega : omega_unwrapped + d;
+    omega_prev = inv.omega;
+    std::size_t c = 0;
+    for (double v :
+         {double(k), t, dt, q(0), q(1), p(0), p(1), inv.H, inv.L, inv.ecc, omega_unwrapped})
+      row[c++] = v;
+    if (epavi) row[c++] = Ed;
+    row[c++] = residual;
+    row[c++] = double(iterations);
+    rec.offer(k, row);
+  };
+  Progress progress(static_cast<long long>(T / h0));
+  long long k = 0;
+  try {
+    if (epavi) {
+      // Start-up as in the paper: the first step of length h0 from the exact solution.
+      EpAVI<Kepler> m{Kepler{}};
+      ExtendedState<N> s = m.start(0.0, s0.q, h0, orbit.at(h0).q);
+      // The momentum at t0 from the discrete Legendre transform of the first step.
+      offer(0, 0.0, 0.0, s0.q, s0.p, s.E, 0.0, 0);
+      k = 1;
+      offer(1, s.t, h0, s.q, s.p, s.E, 0.0, 0);
+      while (s.t < T) {
+        const double t0 = s.t;
+        const ExtendedStepReport r = m.step(s);
+        ++k;
+        if (rec.due(k) || s.t >= T)
+          offer(k, s.t, s.t - t0, s.q, s.p, s.E, r.energy_residual, r.root_iterations);
+        progress.update(k);
+      }
+    } else {
+      TimedState<N> s{0.0, s0.q, s0.p};
+      const double H0 = energy(P, s0.q, s0.p);
+      auto run = [&](auto monitor) {
+        AdaptiveMidpoint<Kepler, decltype(monitor)> m(Kepler{}, monitor);
+        const double da = m.step_for_first_step(s, h0);
+        offer(0, 0.0, 0.0, s.q, s.p, 0.0, 0.0, 0);
+        while (s.t < T) {
+          const double t0 = s.t;
+          const SolveReport r = m.step(s, da);
+          ++k;
+          if (rec.due(k) || s.t >= T)
+            offer(k, s.t, s.t - t0, s.q, s.p, 0.0, r.residual, r.iterations);
+          progress.update(k);
+        }
+      };
+      if (o.method == "avi1")
+        run(MonitorArclength{H0});
+      else
+        run(MonitorQuadratic{});
+    }
+  } catch (const NumericalError& e) {
+    rec.finish();
+    throw NumericalError(fmt::format("{} at step {}; {}", e.what(), k + 1, csv.partial_note()));
+  }
+  rec.finish();
+  csv.commit();
+  return kOk;
+}
+
 template <class Problem>
 int dispatch_method(const Problem& P, const RunOptions& o) {
   constexpr int N = Problem::N;
   const auto L = mechanical_lagrangian(P);
+  if (o.method == "epavi" || o.method == "avi1" || o.method == "avi2") {
+    if constexpr (std::is_same_v<Problem, Kepler>) {
+      return integrate_adaptive_kepler(o);
+    } else {
+      throw ArgumentError("--method", "epavi, avi1 and avi2 are implemented for --problem kepler");
+    }
+  }
   if (o.method == "se") return integrate(P, SymplecticEuler<Problem>(P), false, o);
   if (o.method == "se-adjoint") return integrate(P, SymplecticEulerAdjoint<Problem>(P), false, o);
   if (o.method == "sv") return integrate(P, StormerVerlet<Problem>(P), false, o);
@@ -301,10 +404,11 @@ std::function<int()> add_run_command(CLI::App& app) {
   run->add_option("--method", o->method,
                   "se (drift-kick symplectic Euler), se-adjoint (kick-drift), sv (Störmer–Verlet), "
                   "midpoint (implicit midpoint), del-generic (generic solver); for "
-                  "relativistic-kepler: k-symplectic (3.19), vi (3.20)/(3.22), vi2 (3.8)")
+                  "relativistic-kepler: k-symplectic (3.19), vi (3.20)/(3.22), vi2 (3.8); adaptive "
+                  "(kepler): epavi, avi1, avi2 (Sharma et al. 2022)")
       ->required()
-      ->check(CLI::IsMember(
-          {"se", "se-adjoint", "sv", "midpoint", "del-generic", "k-symplectic", "vi", "vi2"}));
+      ->check(CLI::IsMember({"se", "se-adjoint", "sv", "midpoint", "del-generic", "epavi", "avi1",
+                             "avi2", "k-symplectic", "vi", "vi2"}));
   run->add_option("--discrete-lagrangian", o->discrete_lagrangian,
                   "for del-generic: midpoint, sv, se or se-adjoint (default midpoint)")
       ->check(CLI::IsMember({"midpoint", "sv", "se", "se-adjoint"}));
@@ -320,6 +424,7 @@ std::function<int()> add_run_command(CLI::App& app) {
                   "initial momentum, comma-separated (relativistic-kepler: u0 = γẋ0; default 0,2 "
                   "with --q0 0.4,0, the paper's Fig. 7 data)")
       ->delimiter(',');
+  run->add_option("--h0", o->h0, "epavi/avi1/avi2: the first step (default: --h)");
   run->add_option("--c", o->c, "relativistic-kepler: the speed of light (required)");
   run->add_option("--tau-end", o->tau_end, "relativistic-kepler: final proper time (default 40)");
   run->add_option("--every", o->every, "write every K-th state (first and last always)");

@@ -68,6 +68,15 @@ tail -1 "$tmp/b.csv" | grep -q "^4,1," && ok || bad "shortened last step ends at
 expect 0 "" -- run --problem kepler --method sv --e 0.3 --h 0.01 --periods 1 --every 100000 --csv "$tmp/c.csv"
 tail -1 "$tmp/c.csv" | grep -q "^629,6.2831853071795862," && ok || bad "one Kepler period: $(tail -1 "$tmp/c.csv")"
 
+# --- adaptive methods (Sharma et al. 2022) on Kepler ----------------------------------------
+for m in epavi avi1 avi2; do
+  expect 0 "" -- run --problem kepler --method "$m" --e 0.7 --h0 0.001 --periods 1 --every 100 --csv "$tmp/ad-$m.csv"
+done
+head -1 "$tmp/ad-epavi.csv" | grep -qx "step,t,dt,q1,q2,p1,p2,H,L,ecc,omega,E_d,residual,iterations" && ok || bad "epavi CSV header"
+head -1 "$tmp/ad-avi2.csv" | grep -qx "step,t,dt,q1,q2,p1,p2,H,L,ecc,omega,residual,iterations" && ok || bad "avi CSV header"
+expect 2 "--method" -- run --problem pendulum --method epavi --csv "$tmp/r.csv"
+expect 2 "--h0" -- run --problem kepler --method avi1 --h0 -1 --csv "$tmp/r.csv"
+
 # --- relativistic Kepler (Shen & Sun (3.16)–(3.22)), proper time ----------------------------
 for m in k-symplectic vi vi2; do
   expect 0 "" -- run --problem relativistic-kepler --method "$m" --c 5 --q0 0.4,0 --p0 0,2 --h 0.05 --tau-end 40 --every 100 --csv "$tmp/rel-$m.csv"
