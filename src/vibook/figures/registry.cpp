@@ -9,7 +9,7 @@
 namespace vibook::figures {
 
 const std::vector<Check>& registry() {
-  static const std::vector<Check> all = {check_s_del(), check_v_ex1(),   vermeeren_fig1(),
+  static const std::vector<Check> all = {check_s_del(), sharma_fig1(), sharma_fig2(), check_v_ex1(),   vermeeren_fig1(),
                                          check_ss_t8(), shen_sun_fig7(), relativistic_precession()};
   return all;
 }

@@ -57,6 +57,8 @@ claims::Ledger measure_all(unsigned jobs = 0);
 Check vermeeren_fig1();
 Check check_v_ex1();
 Check check_s_del();
+Check sharma_fig1();
+Check sharma_fig2();
 Check check_ss_t8();
 Check shen_sun_fig7();
 Check relativistic_precession();
