@@ -181,6 +181,17 @@ claims::ClaimResult mean_steps(double e, const Fig12& r, double printed_epavi,
   return c;
 }
 
+// A claim carrying the measured series of the three methods.
+claims::ClaimResult series_claim(const char* id, const char* source, const Fig12& r) {
+  claims::ClaimResult c;
+  c.id = id;
+  c.source = source;
+  push_series(c, "epavi", r.epavi);
+  push_series(c, "avi1", r.avi1);
+  push_series(c, "avi2", r.avi2);
+  return c;
+}
+
 // Trajectory criterion shared by both figures (fixed before measuring): final errors within a
 // factor 3 of each other, EpAVI not worse than the better AVI by more than 10% ("marginally
 // better"), growth exponent of the error envelope in [0.7, 1.3] ("slow linear growth").
@@ -202,12 +213,7 @@ bool trajectories_ok(const Fig12& r, std::string& why) {
 
 std::vector<claims::ClaimResult> run_fig1(const Context& ctx) {
   const Fig12 r = compute(0.1, ctx);
-  claims::ClaimResult c;
-  c.id = "S-F1";
-  c.source = "sharma-fig1";
-  push_series(c, "epavi", r.epavi);
-  push_series(c, "avi1", r.avi1);
-  push_series(c, "avi2", r.avi2);
+  claims::ClaimResult c = series_claim("S-F1", "sharma-fig1", r);
   std::string why;
   // (a) EpAVI and AVI1 nearly the same steps (mean within 10%), AVI2 marginally larger (mean
   //     ratio to EpAVI in (1, 1.25]); (b) AVI energy errors about 1e-7 (within [1e-8, 1e-6]),
@@ -240,12 +246,7 @@ std::vector<claims::ClaimResult> run_fig1(const Context& ctx) {
 
 std::vector<claims::ClaimResult> run_fig2(const Context& ctx) {
   const Fig12 r = compute(0.7, ctx);
-  claims::ClaimResult c;
-  c.id = "S-F2";
-  c.source = "sharma-fig2";
-  push_series(c, "epavi", r.epavi);
-  push_series(c, "avi1", r.avi1);
-  push_series(c, "avi2", r.avi2);
+  claims::ClaimResult c = series_claim("S-F2", "sharma-fig2", r);
   std::string why;
   // AVI steps significantly larger than EpAVI's (mean ratio ≥ 1.1); steps grow 12–15× h0 (max
   // step of each method in [12, 15]); AVI energy errors about 1e-4 ([1e-5, 1e-3]); EpAVI about
