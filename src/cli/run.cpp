@@ -15,6 +15,7 @@
 
 #include "cli.hpp"
 #include "vibook/avi/avi.hpp"
+#include "vibook/core/angle.hpp"
 #include "vibook/core/errors.hpp"
 #include "vibook/core/recorder.hpp"
 #include "vibook/epavi/epavi.hpp"
@@ -177,8 +178,7 @@ int integrate(const Problem& P, Stepper stepper, bool implicit, const RunOptions
   // omega is unwrapped between consecutive written rows: exact as long as the perihelion
   // turns by less than π between two of them.
   std::vector<double> row(cols.size());
-  double omega_prev = 0, omega_unwrapped = 0;
-  bool first = true;
+  AngleUnwrapper omega;
   SolveReport rep{0.0, 0, true};
   auto offer = [&](long long k, double t) {
     std::size_t c = 0;
@@ -186,15 +186,7 @@ int integrate(const Problem& P, Stepper stepper, bool implicit, const RunOptions
     row[c++] = t;
     if constexpr (kepler) {
       const KeplerInvariants inv = kepler_invariants(s.q, s.p);
-      if (first) {
-        omega_unwrapped = inv.omega;
-      } else {
-        double d = inv.omega - omega_prev;
-        d -= 2 * std::numbers::pi * std::nearbyint(d / (2 * std::numbers::pi));
-        omega_unwrapped += d;
-      }
-      omega_prev = inv.omega;
-      first = false;
+      const double omega_unwrapped = omega(inv.omega);
       for (double v : {s.q(0), s.q(1), s.p(0), s.p(1), inv.H, inv.L, inv.ecc, omega_unwrapped})
         row[c++] = v;
     } else {
@@ -303,14 +295,11 @@ int integrate_adaptive_kepler(const RunOptions& o) {
   cols.insert(cols.end(), {"residual", "iterations"});
   TrajectoryRecorder rec(csv.stream(), cols, o.every);
   std::vector<double> row(cols.size());
-  double omega_prev = 0, omega_unwrapped = 0;
+  AngleUnwrapper omega;
   auto offer = [&](long long k, double t, double dt, const Vec<double, N>& q,
                    const Vec<double, N>& p, double Ed, double residual, int iterations) {
     const KeplerInvariants inv = kepler_invariants(q, p);
-    double d = k == 0 ? 0.0 : inv.omega - omega_prev;
-    d -= 2 * std::numbers::pi * std::nearbyint(d / (2 * std::numbers::pi));
-    omega_unwrapped = k == 0 ? inv.omega : omega_unwrapped + d;
-    omega_prev = inv.omega;
+    const double omega_unwrapped = omega(inv.omega);
     std::size_t c = 0;
     for (double v :
          {double(k), t, dt, q(0), q(1), p(0), p(1), inv.H, inv.L, inv.ecc, omega_unwrapped})

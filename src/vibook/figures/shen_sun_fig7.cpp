@@ -11,6 +11,7 @@
 
 #include <fmt/format.h>
 
+#include "vibook/core/angle.hpp"
 #include "vibook/core/autodiff.hpp"
 #include "vibook/core/recorder.hpp"
 #include "vibook/core/tolerance.hpp"
@@ -40,6 +41,8 @@ SsT8Measurement ss_t8_measure(double c, double h, int steps) {
   auto del = make_del_integrator<3>(discrete_lagrangian_320(P));
   RelState a = P.initial(kX0, kU0);
   SsT8Measurement m;
+  double t_prev2 = 0;  // (t, x) two steps back, for the two-step t-equation
+  Vec<double, 2> x_prev2 = Vec<double, 2>::Zero();
   for (int k = 0; k < steps; ++k) {
     RelState b = a, g = a, lit = a;
     Vec<double, 3> X(g.t, g.x(0), g.x(1));
@@ -61,15 +64,15 @@ SsT8Measurement ss_t8_measure(double c, double h, int steps) {
     m.generic_vs_composition = std::max(m.generic_vs_composition, state_diff(a, g));
     m.printed_319_vs_composition = std::max(m.printed_319_vs_composition, state_diff(a, lit));
     if (k >= 1) {
-      const double lhs = (a.t - 2 * prev.t + m.t_prev2) / (h * h);
-      const double dphi = (P.phi(prev.x) - P.phi(m.x_prev2)) / h;
+      const double lhs = (a.t - 2 * prev.t + t_prev2) / (h * h);
+      const double dphi = (P.phi(prev.x) - P.phi(x_prev2)) / h;
       m.thm8_printed_residual = std::max(m.thm8_printed_residual, std::abs(lhs + dphi));
       m.thm8_corrected_residual =
           std::max(m.thm8_corrected_residual, std::abs(lhs + dphi / (c * c)));
       m.thm8_scale = std::max(m.thm8_scale, std::abs(dphi / (c * c)));
     }
-    m.t_prev2 = prev.t;
-    m.x_prev2 = prev.x;
+    t_prev2 = prev.t;
+    x_prev2 = prev.x;
   }
   return m;
 }
@@ -194,7 +197,7 @@ OrbitRun run_orbit(const Problem& P, const ExactOrbit& ex, Method method, double
   const Invariants i0 = invariants(P, s);
   OrbitRun out;
   PerihelionTracker tracker;
-  double phi_unwrapped = std::atan2(s.x(1), s.x(0)), phi_prev = phi_unwrapped;
+  AngleUnwrapper polar_angle;
   std::optional<TrajectoryRecorder> rec;
   if (csv)
     rec.emplace(*csv, std::vector<std::string>{"step", "tau", "t", "x1", "x2", "gamma", "u1", "u2",
@@ -203,11 +206,7 @@ OrbitRun run_orbit(const Problem& P, const ExactOrbit& ex, Method method, double
     if (k > 0) method.step(s, h);
     const double tau = double(k) * h;
     const Invariants inv = invariants(P, s);
-    double phi = std::atan2(s.x(1), s.x(0));
-    double d = phi - phi_prev;
-    d -= 2 * std::numbers::pi * std::nearbyint(d / (2 * std::numbers::pi));
-    phi_unwrapped += d;
-    phi_prev = phi;
+    const double phi_unwrapped = polar_angle(std::atan2(s.x(1), s.x(0)));
     const double r_ex = ex.radius_at_angle(phi_unwrapped);
     out.orbit_err = std::max(out.orbit_err, std::abs(s.x.norm() - r_ex) / r_ex);
     out.traj_err = std::max(out.traj_err, (s.x - ex.at(tau).x).norm());

@@ -19,9 +19,6 @@ struct SsT8Measurement {
   double bound = 0;  ///< round-off bound 64ε(|u| + |t||∇φ|), the largest along the run
   double thm8_printed_residual = 0, thm8_corrected_residual = 0, thm8_scale = 0;
   int max_newton_iterations = 0;
-  // internal: the two previous states of the t-equation
-  double t_prev2 = 0;
-  Vec<double, 2> x_prev2 = Vec<double, 2>::Zero();
 };
 SsT8Measurement ss_t8_measure(double c, double h, int steps);
 

@@ -8,6 +8,7 @@
 #include <numbers>
 #include <optional>
 
+#include "vibook/core/angle.hpp"
 #include "vibook/core/types.hpp"
 
 namespace vibook::relativistic {
@@ -17,17 +18,14 @@ class PerihelionTracker {
   /// Feed the next position (equally spaced in the orbit's parameter).
   void add(const Vec<double, 2>& x) {
     const double r = x.norm();
-    double phi = std::atan2(x(1), x(0));
-    if (count_ > 0) {  // unwrap
-      double d = phi - last_phi_raw_;
-      d -= 2 * std::numbers::pi * std::nearbyint(d / (2 * std::numbers::pi));
+    const double psi = angle_(std::atan2(x(1), x(0)));
+    if (count_ > 0) {
       psi_[2] = psi_[1];
       psi_[1] = psi_[0];
-      psi_[0] += d;
+      psi_[0] = psi;
     } else {
-      psi_[0] = psi_[1] = psi_[2] = phi;
+      psi_[0] = psi_[1] = psi_[2] = psi;
     }
-    last_phi_raw_ = phi;
     r_[2] = r_[1];
     r_[1] = r_[0];
     r_[0] = r;
@@ -56,7 +54,8 @@ class PerihelionTracker {
 
  private:
   double r_[3] = {0, 0, 0}, psi_[3] = {0, 0, 0};
-  double last_phi_raw_ = 0, first_angle_ = 0, last_angle_ = 0, sense_ = 1;
+  AngleUnwrapper angle_;
+  double first_angle_ = 0, last_angle_ = 0, sense_ = 1;
   long count_ = 0;
   int perihelia_ = 0;
   bool first_ = true;
