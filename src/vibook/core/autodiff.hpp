@@ -16,27 +16,30 @@
 #include <type_traits>
 
 namespace Eigen {
-// Eigen declares AutoDiffScalar<D> (op) D::Scalar; for the nested type D::Scalar is itself
-// an AutoDiffScalar, so `vector / 2.0` would not compile. Declare the double case.
-template <class InnerDer, int R, class BinOp>
-struct ScalarBinaryOpTraits<AutoDiffScalar<Matrix<AutoDiffScalar<InnerDer>, R, 1>>, double, BinOp> {
-  using ReturnType = AutoDiffScalar<Matrix<AutoDiffScalar<InnerDer>, R, 1>>;
+// Eigen declares AutoDiffScalar<D> (op) D::Scalar. When D::Scalar is not double (nested
+// AutoDiff, whose D::Scalar is itself an AutoDiffScalar, or AutoDiff over dd_real and
+// Boost.Multiprecision), `vector * 0.5` would not compile. Declare the double case.
+template <class T, int R, class BinOp>
+requires(!std::is_same_v<T, double>) struct ScalarBinaryOpTraits<AutoDiffScalar<Matrix<T, R, 1>>,
+                                                                 double, BinOp> {
+  using ReturnType = AutoDiffScalar<Matrix<T, R, 1>>;
 };
-template <class InnerDer, int R, class BinOp>
-struct ScalarBinaryOpTraits<double, AutoDiffScalar<Matrix<AutoDiffScalar<InnerDer>, R, 1>>, BinOp> {
-  using ReturnType = AutoDiffScalar<Matrix<AutoDiffScalar<InnerDer>, R, 1>>;
+template <class T, int R, class BinOp>
+requires(!std::is_same_v<T, double>) struct ScalarBinaryOpTraits<
+    double, AutoDiffScalar<Matrix<T, R, 1>>, BinOp> {
+  using ReturnType = AutoDiffScalar<Matrix<T, R, 1>>;
 };
 }  // namespace Eigen
 
 namespace vibook::ad {
 
-/// First-order forward AutoDiff scalar with N directional derivatives.
-template <int N>
-using Dual = Eigen::AutoDiffScalar<Vec<double, N>>;
+/// First-order forward AutoDiff scalar over T with N directional derivatives.
+template <int N, class T = double>
+using Dual = Eigen::AutoDiffScalar<Vec<T, N>>;
 
-/// Second-order (nested) forward AutoDiff scalar: value and derivatives are Dual<N>.
-template <int N>
-using Dual2 = Eigen::AutoDiffScalar<Eigen::Matrix<Dual<N>, N, 1>>;
+/// Second-order (nested) forward AutoDiff scalar: value and derivatives are Dual<N, T>.
+template <int N, class T = double>
+using Dual2 = Eigen::AutoDiffScalar<Eigen::Matrix<Dual<N, T>, N, 1>>;
 
 /// Seed x as the N independent variables of a Dual<N> vector.
 template <int N>
@@ -76,32 +79,32 @@ Mat<double, N> jacobian(F&& f, const Vec<double, N>& x) {
 /// Value and all first and mixed second derivatives of a two-point function F(a, b, c)
 /// (c a parameter, not differentiated): D1 = dF/da, D2 = dF/db, D12(i, j) = d²F/da_i db_j.
 
-template <int N>
+template <int N, class T = double>
 struct TwoPoint {
-  double value = 0.0;
-  Vec<double, N> D1, D2;
-  Mat<double, N> D12;
+  T value{};
+  Vec<T, N> D1, D2;
+  Mat<T, N> D12;
 };
 
 /// Evaluate F(a, b, c) once on nested dual numbers: a carries the inner derivatives,
 /// b the outer ones, so the mixed block comes out of a single evaluation.
-template <int N, class F>
-TwoPoint<N> two_point(F&& f, const Vec<double, N>& a, const Vec<double, N>& b, double c) {
-  using In = Dual<N>;
-  using Out = Dual2<N>;
+template <int N, class F, class T = double>
+TwoPoint<N, T> two_point(F&& f, const Vec<T, N>& a, const Vec<T, N>& b, const T& c) {
+  using In = Dual<N, T>;
+  using Out = Dual2<N, T>;
   Vec<Out, N> A, B;
   for (int i = 0; i < N; ++i) {
     A(i) = Out(In(a(i), N, i));
     A(i).derivatives().setZero();
     B(i) = Out(In(b(i)));
     B(i).derivatives().setZero();
-    B(i).derivatives()(i) = In(1.0);
+    B(i).derivatives()(i) = In(T(1));
   }
   Out C{In(c)};
   C.derivatives().setZero();
   static_assert(returns_scalar<decltype(f(A, B, C)), Out>, VIBOOK_RETURNS_SCALAR_MESSAGE);
   const Out r = f(A, B, C);
-  TwoPoint<N> out;
+  TwoPoint<N, T> out;
   out.value = r.value().value();
   out.D1 = r.value().derivatives();
   for (int j = 0; j < N; ++j) {

@@ -10,6 +10,7 @@
 #include <fmt/format.h>
 
 #include "vibook/core/errors.hpp"
+#include "vibook/core/precision.hpp"
 #include "vibook/core/tolerance.hpp"
 #include "vibook/core/types.hpp"
 
@@ -22,6 +23,8 @@ namespace vibook {
 /// component (a clock t ≈ 40 beside positions ≈ 0.4) does not loosen the small ones, while
 /// the displacement |x − ref| bounds the attainable accuracy of components passing through 0.
 /// The residual criterion |F|_inf <= residual_abs also stops. At most max_iterations.
+/// For a wider scalar type set step_rel to a few units of *its* round-off (unit_roundoff<T>),
+/// or to the tolerance asked for.
 struct NewtonOptions {
   double step_rel = 4 * kEps;
   double step_abs = 1e-300;
@@ -33,35 +36,40 @@ struct NewtonOptions {
 /// Jacobian J at x. Returns the report; x holds the solution. Throws SolveError (with the
 /// report) when the iteration does not converge within max_iterations, when the Jacobian is
 /// singular, or when a non-finite value appears. `what` names the solve in the message.
-template <int N, class FJ>
-SolveReport newton_solve(Vec<double, N>& x, FJ&& fj, const NewtonOptions& opt,
-                         const char* what = "Newton solve",
-                         const Vec<double, N>* reference = nullptr) {
-  const Vec<double, N> ref = reference ? *reference : x;
+template <int N, class FJ, class T = double>
+SolveReport newton_solve(Vec<T, N>& x, FJ&& fj, const NewtonOptions& opt,
+                         const char* what = "Newton solve", const Vec<T, N>* reference = nullptr) {
+  const Vec<T, N> ref = reference ? *reference : x;
   SolveReport rep;
-  Vec<double, N> F;
-  Mat<double, N> J;
+  Vec<T, N> F;
+  Mat<T, N> J;
+  const T step_rel(opt.step_rel), step_abs(opt.step_abs);
   for (rep.iterations = 1; rep.iterations <= opt.max_iterations; ++rep.iterations) {
     fj(x, F, J);
-    rep.residual = F.template lpNorm<Eigen::Infinity>();
+    rep.residual = to_double(T(F.template lpNorm<Eigen::Infinity>()));
     if (!std::isfinite(rep.residual)) break;
     if (rep.residual <= opt.residual_abs) {
       rep.converged = true;
       return rep;
     }
     const auto lu = J.partialPivLu();
-    const Vec<double, N> dx = lu.solve(F);
-    if (!dx.allFinite()) {
+    const Vec<T, N> dx = lu.solve(F);
+    if (!std::isfinite(to_double(T(dx.template lpNorm<Eigen::Infinity>())))) {
       throw SolveError(fmt::format("{}: singular Jacobian (residual {:.3e} after {} iterations)",
                                    what, rep.residual, rep.iterations),
                        rep);
     }
     x -= dx;
-    const double displacement = (x - ref).template lpNorm<Eigen::Infinity>();
-    const Vec<double, N> size = x.cwiseAbs().cwiseMax(ref.cwiseAbs()).cwiseMax(displacement);
-    if ((dx.cwiseAbs().array() <= opt.step_rel * size.array() + opt.step_abs).all()) {
+    const T displacement = (x - ref).template lpNorm<Eigen::Infinity>();
+    bool small = true;
+    for (int i = 0; i < N; ++i) {
+      using std::abs;
+      const T size = std::max({T(abs(x(i))), T(abs(ref(i))), displacement});
+      small = small && abs(dx(i)) <= step_rel * size + step_abs;
+    }
+    if (small) {
       fj(x, F, J);  // report the residual at the returned point
-      rep.residual = F.template lpNorm<Eigen::Infinity>();
+      rep.residual = to_double(T(F.template lpNorm<Eigen::Infinity>()));
       rep.converged = std::isfinite(rep.residual);
       if (rep.converged) return rep;
       break;

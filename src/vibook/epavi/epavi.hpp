@@ -12,22 +12,26 @@
 
 namespace vibook {
 
-template <class Problem>
+/// EpAVI for a mechanical problem (potential templated on its scalar), computed in T.
+template <class Problem, class T = double>
 class EpAVI {
  public:
   static constexpr int N = Problem::N;
   using Lagrangian = decltype(mechanical_lagrangian(std::declval<Problem>()));
   using DiscreteLagrangian = decltype(extended_midpoint_dl(std::declval<Lagrangian>()));
-  using Integrator = ExtendedDelIntegrator<N, DiscreteLagrangian>;
+  using Integrator = ExtendedDelIntegrator<N, DiscreteLagrangian, T>;
+  using State = ExtendedState<N, T>;
+  using Options = typename Integrator::Options;
 
-  explicit EpAVI(Problem P, typename Integrator::Options options = {})
+  explicit EpAVI(Problem P, Options options = {})
       : vi_(extended_midpoint_dl(mechanical_lagrangian(P)), options) {}
 
   /// Start from (t0, q0) with the first step to (t0 + h0, q1), q1 from an accurate solution.
-  ExtendedState<N> start(double t0, const Vec<double, N>& q0, double h0, const Vec<double, N>& q1) {
-    return vi_.start(t0, q0, t0 + h0, q1);
+  State start(const T& t0, const Vec<T, N>& q0, const T& h0, const Vec<T, N>& q1) {
+    return vi_.start(t0, q0, T(t0 + h0), q1);
   }
-  ExtendedStepReport step(ExtendedState<N>& s) { return vi_.step(s); }
+  ExtendedStepReport step(State& s) { return vi_.step(s); }
+  const Integrator& integrator() const { return vi_; }
 
  private:
   Integrator vi_;

@@ -23,7 +23,7 @@ struct Kepler {
   template <class S>
   S potential(const Vec<S, 2>& q) const {
     using std::sqrt;
-    return -1.0 / sqrt(q.squaredNorm());
+    return -constant<S>(1) / sqrt(squared_norm(q));
   }
   template <class S>
   Vec<S, 2> gradient(const Vec<S, 2>& q) const {

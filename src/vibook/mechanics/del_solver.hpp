@@ -43,8 +43,7 @@ class DelIntegrator {
       F = p0 + d.D1;
       J = d.D12;
     };
-    const SolveReport rep =
-        newton_solve<N>(q1, fj, options_, "discrete Euler-Lagrange step", &q0);
+    const SolveReport rep = newton_solve<N>(q1, fj, options_, "discrete Euler-Lagrange step", &q0);
     p = momentum_plus(q0, q1, h);
     increment_ = q1 - q0;
     have_increment_ = true;

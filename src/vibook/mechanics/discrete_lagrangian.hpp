@@ -22,6 +22,8 @@
 #include <type_traits>
 #include <utility>
 
+#include "vibook/core/types.hpp"
+
 namespace vibook {
 
 /// The scalar type of an Eigen expression or of a scalar.
@@ -99,7 +101,8 @@ auto scaled_by_step(DiscreteLagrangian Ldisc) {
 template <class Problem>
 auto mechanical_lagrangian(Problem problem) {
   return [P = std::move(problem)](const auto& q, const auto& v) -> scalar_t<decltype(q)> {
-    return 0.5 * v.squaredNorm() - P.potential(q);
+    using S = scalar_t<decltype(q)>;
+    return constant<S>(0.5) * squared_norm(v) - P.potential(q);
   };
 }
 

@@ -11,25 +11,31 @@
 #pragma once
 
 #include <fmt/format.h>
-#include <boost/math/tools/toms748_solve.hpp>
 #include <cmath>
 #include <cstdint>
 
 #include "vibook/core/autodiff.hpp"
 #include "vibook/core/errors.hpp"
 #include "vibook/core/newton.hpp"
+#include "vibook/core/root.hpp"
 #include "vibook/core/types.hpp"
 #include "vibook/mechanics/discrete_lagrangian.hpp"
 
 namespace vibook {
 
-/// State of the time-marching form: (t_k, q_k, p_k, E_k).
-template <int N>
+/// State of the time-marching form: (t_k, q_k, p_k, E_k), in the scalar type T.
+template <int N, class T = double>
 struct ExtendedState {
-  double t = 0;
-  Vec<double, N> q = Vec<double, N>::Zero();
-  Vec<double, N> p = Vec<double, N>::Zero();
-  double E = 0;
+  T t = T(0);
+  Vec<T, N> q = Vec<T, N>::Zero();
+  Vec<T, N> p = Vec<T, N>::Zero();
+  T E = T(0);
+};
+
+/// Which discrete energy a step solves the energy equation (16) for.
+enum class EnergyTarget {
+  previous,  ///< E_k = −D3 L_d of the previous step, as in (16)–(18): the telescoping of (28)
+  initial,   ///< always E_1, the energy fixed by the start-up step
 };
 
 // Sharma et al. 2022, (25): the midpoint extended discrete Lagrangian.
@@ -42,7 +48,7 @@ auto extended_midpoint_dl(Lagrangian L) {
                             const auto& q1) -> scalar_t<decltype(t0)> {
     using S = scalar_t<decltype(t0)>;
     const S dt = t1 - t0;
-    const auto qm = ((q0 + q1) * 0.5).eval();
+    const auto qm = ((q0 + q1) * constant<S>(0.5)).eval();
     const auto v = ((q1 - q0) / dt).eval();
     return S(dt * L(qm, v));
   };
@@ -69,17 +75,29 @@ struct ExtendedStepReport {
 /// singular and Newton from the previous step diverges (we measured this). Instead, for each
 /// trial Δt the momentum equations (15) are solved for q_{k+1}(Δt) by Newton (well
 /// conditioned), and the scalar energy equation g(Δt) = D1 L_d − E_k = 0 is solved by a
-/// bracketed root finder (Boost.Math TOMS 748). The bracket is grown geometrically from the
-/// previous step Δt_{k−1} (ratio first_ratio, squared each time, up to max_ratio), which
-/// keeps to the root that continues the previous step. If no sign change is found there, no
-/// admissible step exists near the previous one, and the step throws SolveError saying so.
-template <int N, class ExtendedDiscreteLagrangian>
+/// bracketed root finder (Anderson–Björck with bisection safeguard, core/root.hpp). The bracket is
+/// grown geometrically from the previous step Δt_{k−1} (ratio first_ratio, squared each time, up to
+/// max_ratio), which keeps to the root that continues the previous step. If no sign change is found
+/// there, no admissible step exists near the previous one, and the step throws SolveError saying
+/// so.
+///
+/// **Scalar type.** Everything is computed in T (double, long double, dd_real, quad,
+/// mpfr_real; see precision.hpp); the reports are in double. The tolerance of both solves is
+/// Options::tol, relative: Newton stops when every component of the update is below tol times
+/// its size, the root finder when the bracket on Δt is below tol·Δt. Default: 4 units of T's
+/// round-off.
+template <int N, class ExtendedDiscreteLagrangian, class T = double>
 class ExtendedDelIntegrator {
  public:
   static constexpr int M = N + 1;  ///< extended configuration (t, q)
 
+  using State = ExtendedState<N, T>;
+  using VecN = Vec<T, N>;
+
   struct Options {
-    NewtonOptions newton{};
+    double tol = 0;  ///< relative tolerance of both solves; 0 = 4 units of T's round-off
+    EnergyTarget energy_target = EnergyTarget::previous;
+    int max_newton_iterations = 50;
     double max_ratio = 64.0;  ///< how far the bracket may grow from the previous step
     double first_ratio =
         1.015625;  ///< the first bracket [Δt/r, Δt·r]; r is squared until max_ratio
@@ -87,17 +105,29 @@ class ExtendedDelIntegrator {
   };
 
   explicit ExtendedDelIntegrator(ExtendedDiscreteLagrangian Ld, Options options = {})
-      : extended_{std::move(Ld)}, options_(options) {}
+      : extended_{std::move(Ld)}, options_(options) {
+    const double u = to_double(unit_roundoff<T>());
+    if (options_.tol == 0) options_.tol = 4 * u;
+    if (!(options_.tol >= u && options_.tol < 1e-2))
+      throw ArgumentError("--tol", fmt::format("must lie in [{:.3g}, 1e-2) (the round-off of the "
+                                               "chosen precision up to 1e-2), got {:.3g}",
+                                               u, options_.tol));
+    newton_.step_rel = options_.tol;
+    newton_.max_iterations = options_.max_newton_iterations;
+  }
+
+  const Options& options() const { return options_; }
 
   /// The state after a first step from (t0, q0) to (t1, q1) (e.g. taken from an exact
   /// solution): p1 = D4 L_d, E1 = −D3 L_d (17)–(18).
-  ExtendedState<N> start(double t0, const Vec<double, N>& q0, double t1, const Vec<double, N>& q1) {
+  State start(const T& t0, const VecN& q0, const T& t1, const VecN& q1) {
     const auto d = derivatives(t0, q0, t1, q1);
-    ExtendedState<N> s;
+    State s;
     s.t = t1;
     s.q = q1;
     s.p = d.D2.template tail<N>();
     s.E = -d.D2(0);
+    E_start_ = s.E;
     last_dt_ = t1 - t0;
     increment_ = q1 - q0;
     return s;
@@ -105,49 +135,61 @@ class ExtendedDelIntegrator {
 
   /// One step of (15)–(18). Throws SolveError when no admissible step exists near the
   /// previous one, or when a solve fails.
-  ExtendedStepReport step(ExtendedState<N>& s) {
+  ExtendedStepReport step(State& s) {
     ExtendedStepReport rep;
-    const ExtendedState<N> k = s;
+    const State k = s;
+    const T target = options_.energy_target == EnergyTarget::previous ? k.E : E_start_;
     // q_{k+1}(Δt): Newton on (15), started from the previous increment scaled to Δt.
-    auto solve_q = [&](double dt) {
-      Vec<double, N> q1 = k.q + increment_ * (dt / last_dt_);
-      auto fj = [&](const Vec<double, N>& x, Vec<double, N>& F, Mat<double, N>& J) {
+    auto solve_q = [&](const T& dt) {
+      VecN q1 = k.q + increment_ * T(dt / last_dt_);
+      auto fj = [&](const VecN& x, VecN& F, Mat<T, N>& J) {
         const auto d = derivatives(k.t, k.q, k.t + dt, x);
         F = d.D1.template tail<N>() + k.p;
         J = d.D12.template bottomRightCorner<N, N>();
       };
       const SolveReport r =
-          newton_solve<N>(q1, fj, options_.newton, "extended step: momentum equation (15)", &k.q);
+          newton_solve<N>(q1, fj, newton_, "extended step: momentum equation (15)", &k.q);
       rep.newton_iterations += r.iterations;
       rep.momentum_residual = r.residual;
       return q1;
     };
-    auto g = [&](double dt) {
+    auto g = [&](const T& dt) -> T {
       ++rep.root_iterations;
-      const Vec<double, N> q1 = solve_q(dt);
-      return derivatives(k.t, k.q, k.t + dt, q1).D1(0) - k.E;
+      const VecN q1 = solve_q(dt);
+      return derivatives(k.t, k.q, T(k.t + dt), q1).D1(0) - target;
     };
+    const T tol(options_.tol);
     // Bracket the root that continues the previous step: grow geometrically on both sides of
     // Δt_{k−1}; if both sides change sign at the same level, keep the root nearer in ratio.
-    auto solve_in = [&](double lo, double hi, double glo, double ghi) {
-      std::uintmax_t it = std::uintmax_t(options_.max_root_iterations);
-      const auto r = boost::math::tools::toms748_solve(
-          g, lo, hi, glo, ghi, boost::math::tools::eps_tolerance<double>(52), it);
-      return std::abs(g(r.first)) <= std::abs(g(r.second)) ? r.first : r.second;
+    auto solve_in = [&](const T& lo, const T& hi, const T& glo, const T& ghi) {
+      const RootResult<T> r =
+          bracketed_root(g, lo, hi, glo, ghi, tol, options_.max_root_iterations);
+      if (!r.converged)
+        throw SolveError(fmt::format("extended step at t = {:.17g}: the energy equation did not "
+                                     "converge in {} evaluations (residual {:.3e})",
+                                     to_double(k.t), r.evaluations, std::abs(to_double(r.fx))),
+                         SolveReport{std::abs(to_double(r.fx)), rep.root_iterations, false});
+      return r.x;
     };
-    const double g0 = g(last_dt_);
-    double dt = last_dt_;
-    if (g0 != 0.0) {
-      double a_prev = last_dt_, ga_prev = g0, b_prev = last_dt_, gb_prev = g0;
+    auto log_ratio = [&](const T& x) {
+      using std::log;
+      using std::abs;
+      return abs(log(x / last_dt_));
+    };
+    const T g0 = g(last_dt_);
+    T dt = last_dt_;
+    if (g0 != T(0)) {
+      T a_prev = last_dt_, ga_prev = g0, b_prev = last_dt_, gb_prev = g0;
       bool found = false;
       for (double f = options_.first_ratio; !found; f *= f) {
         f = std::min(f, options_.max_ratio);
-        const double a = last_dt_ / f, b = last_dt_ * f;
-        const double ga = g(a), gb = g(b);
-        const bool lower = (ga < 0) != (ga_prev < 0), upper = (gb < 0) != (gb_prev < 0);
+        const T a = last_dt_ / T(f), b = last_dt_ * T(f);
+        const T ga = g(a), gb = g(b);
+        const T zero(0);
+        const bool lower = (ga < zero) != (ga_prev < zero), upper = (gb < zero) != (gb_prev < zero);
         if (lower && upper) {
-          const double r1 = solve_in(a, a_prev, ga, ga_prev), r2 = solve_in(b_prev, b, gb_prev, gb);
-          dt = std::abs(std::log(r1 / last_dt_)) <= std::abs(std::log(r2 / last_dt_)) ? r1 : r2;
+          const T r1 = solve_in(a, a_prev, ga, ga_prev), r2 = solve_in(b_prev, b, gb_prev, gb);
+          dt = log_ratio(r1) <= log_ratio(r2) ? r1 : r2;
           found = true;
         } else if (lower) {
           dt = solve_in(a, a_prev, ga, ga_prev);
@@ -164,14 +206,14 @@ class ExtendedDelIntegrator {
             fmt::format("extended step at t = {:.17g}: the energy equation D1 L_d = E_k "
                         "has no root for a step in [{:.3g}, {:.3g}] (previous step "
                         "{:.3g}): no admissible time step",
-                        k.t, last_dt_ / options_.max_ratio, last_dt_ * options_.max_ratio,
-                        last_dt_),
-            SolveReport{std::abs(g0), rep.root_iterations, false});
+                        to_double(k.t), to_double(last_dt_) / options_.max_ratio,
+                        to_double(last_dt_) * options_.max_ratio, to_double(last_dt_)),
+            SolveReport{std::abs(to_double(g0)), rep.root_iterations, false});
       }
     }
-    const Vec<double, N> q1 = solve_q(dt);
-    const auto d = derivatives(k.t, k.q, k.t + dt, q1);
-    rep.energy_residual = std::abs(d.D1(0) - k.E);
+    const VecN q1 = solve_q(dt);
+    const auto d = derivatives(k.t, k.q, T(k.t + dt), q1);
+    rep.energy_residual = std::abs(to_double(T(d.D1(0) - target)));
     last_dt_ = dt;
     increment_ = q1 - k.q;
     s.t = k.t + dt;
@@ -184,11 +226,10 @@ class ExtendedDelIntegrator {
   /// Residuals of the two-step equations (11) (N components) and (12) (last component) at
   /// (t_{k−1}, q_{k−1}), (t_k, q_k), (t_{k+1}, q_{k+1}):
   ///   D4 L_d(k−1, k) + D2 L_d(k, k+1)   and   D3 L_d(k−1, k) + D1 L_d(k, k+1).
-  Vec<double, M> two_step_residual(double tm, const Vec<double, N>& qm, double t,
-                                   const Vec<double, N>& q, double tp,
-                                   const Vec<double, N>& qp) const {
+  Vec<T, M> two_step_residual(const T& tm, const VecN& qm, const T& t, const VecN& q, const T& tp,
+                              const VecN& qp) const {
     const auto a = derivatives(tm, qm, t, q), b = derivatives(t, q, tp, qp);
-    Vec<double, M> r;
+    Vec<T, M> r;
     r.template head<N>() = a.D2.template tail<N>() + b.D1.template tail<N>();
     r(N) = a.D2(0) + b.D1(0);
     return r;
@@ -196,12 +237,11 @@ class ExtendedDelIntegrator {
 
   /// All first derivatives of L_d at (t0, q0, t1, q1): D1 = ∇ w.r.t. (t0, q0), D2 = ∇ w.r.t.
   /// (t1, q1) (component 0 is the time derivative).
-  ad::TwoPoint<M> derivatives(double t0, const Vec<double, N>& q0, double t1,
-                              const Vec<double, N>& q1) const {
-    Vec<double, M> X0, X1;
+  ad::TwoPoint<M, T> derivatives(const T& t0, const VecN& q0, const T& t1, const VecN& q1) const {
+    Vec<T, M> X0, X1;
     X0 << t0, q0;
     X1 << t1, q1;
-    return ad::two_point<M>(extended_, X0, X1, 0.0);
+    return ad::two_point<M>(extended_, X0, X1, T(0));
   }
 
  private:
@@ -217,15 +257,17 @@ class ExtendedDelIntegrator {
 
   Extended extended_;
   Options options_;
-  double last_dt_ = 0;
-  Vec<double, N> increment_ = Vec<double, N>::Zero();
+  NewtonOptions newton_{};
+  T E_start_ = T(0);
+  T last_dt_ = T(0);
+  VecN increment_ = VecN::Zero();
 };
 
-template <int N, class ExtendedDiscreteLagrangian>
-ExtendedDelIntegrator<N, ExtendedDiscreteLagrangian> make_extended_del_integrator(
+template <int N, class T = double, class ExtendedDiscreteLagrangian>
+ExtendedDelIntegrator<N, ExtendedDiscreteLagrangian, T> make_extended_del_integrator(
     ExtendedDiscreteLagrangian Ld,
-    typename ExtendedDelIntegrator<N, ExtendedDiscreteLagrangian>::Options options = {}) {
-  return ExtendedDelIntegrator<N, ExtendedDiscreteLagrangian>(std::move(Ld), options);
+    typename ExtendedDelIntegrator<N, ExtendedDiscreteLagrangian, T>::Options options = {}) {
+  return ExtendedDelIntegrator<N, ExtendedDiscreteLagrangian, T>(std::move(Ld), options);
 }
 
 }  // namespace vibook

@@ -16,7 +16,7 @@ struct HarmonicOscillator {
   static constexpr const char* name = "harmonic";
   template <class S>
   S potential(const Vec<S, 1>& q) const {
-    return 0.5 * q(0) * q(0);
+    return constant<S>(0.5) * q(0) * q(0);
   }
   template <class S>
   Vec<S, 1> gradient(const Vec<S, 1>& q) const {
