@@ -17,6 +17,7 @@
 #include "vibook/avi/avi.hpp"
 #include "vibook/core/angle.hpp"
 #include "vibook/core/errors.hpp"
+#include "vibook/core/precision.hpp"
 #include "vibook/core/recorder.hpp"
 #include "vibook/epavi/epavi.hpp"
 #include "vibook/integrators/kernels.hpp"
@@ -33,7 +34,9 @@ namespace {
 struct RunOptions {
   std::string problem, method, discrete_lagrangian = "midpoint", csv;
   double h = 0.01;
-  std::optional<double> t_end, periods, e, c, tau_end, h0;
+  std::optional<double> t_end, periods, e, c, tau_end, h0, tol;
+  std::string precision = "double", energy_target = "previous";
+  std::optional<unsigned> digits;
   std::vector<double> q0, p0;
   long long every = 1;
 };
@@ -282,65 +285,93 @@ int integrate_adaptive_kepler(const RunOptions& o) {
   }
   const KeplerOrbit orbit =
       o.e ? KeplerOrbit::perihelion(*o.e) : KeplerOrbit::from_state(s0.q, s0.p);
-  const double T = o.periods ? *o.periods * (o.e ? 2 * std::numbers::pi : orbit.period())
-                             : o.t_end.value_or(10.0);
-  require(std::isfinite(T) && T > 0, o.periods ? "--periods" : "--t-end",
+  const double Tend = o.periods ? *o.periods * (o.e ? 2 * std::numbers::pi : orbit.period())
+                                : o.t_end.value_or(10.0);
+  require(std::isfinite(Tend) && Tend > 0, o.periods ? "--periods" : "--t-end",
           "must be a positive number");
 
-  CsvOutput csv(o.csv);
   const bool epavi = o.method == "epavi";
+  if (!epavi) {
+    require(o.precision == "double", "--precision",
+            "only epavi is templated on the scalar; avi1 and avi2 run in double");
+    require(!o.tol, "--tol", "applies to epavi only (avi1/avi2 use Newton at 4 ulp)");
+    require(o.energy_target == "previous", "--energy-target", "applies to epavi only");
+  }
+  require(!o.digits || o.precision == "mpfr", "--digits", "applies to --precision mpfr only");
+  if (o.tol) require(std::isfinite(*o.tol) && *o.tol > 0, "--tol", "must be a positive number");
+  CsvOutput csv(o.csv);
   std::vector<std::string> cols = {"step", "t", "dt", "q1",  "q2",   "p1",
                                    "p2",   "H", "L",  "ecc", "omega"};
-  if (epavi) cols.push_back("E_d");
+  if (epavi) cols.insert(cols.end(), {"E_d", "E_d_drift"});
   cols.insert(cols.end(), {"residual", "iterations"});
   TrajectoryRecorder rec(csv.stream(), cols, o.every);
   std::vector<double> row(cols.size());
   AngleUnwrapper omega;
   auto offer = [&](long long k, double t, double dt, const Vec<double, N>& q,
-                   const Vec<double, N>& p, double Ed, double residual, int iterations) {
+                   const Vec<double, N>& p, double Ed, double Ed_drift, double residual,
+                   int iterations) {
     const KeplerInvariants inv = kepler_invariants(q, p);
     const double omega_unwrapped = omega(inv.omega);
     std::size_t c = 0;
     for (double v :
          {double(k), t, dt, q(0), q(1), p(0), p(1), inv.H, inv.L, inv.ecc, omega_unwrapped})
       row[c++] = v;
-    if (epavi) row[c++] = Ed;
+    if (epavi) {
+      row[c++] = Ed;
+      row[c++] = Ed_drift;
+    }
     row[c++] = residual;
     row[c++] = double(iterations);
     rec.offer(k, row);
   };
-  Progress progress(static_cast<long long>(T / h0));
+  Progress progress(static_cast<long long>(Tend / h0));
   long long k = 0;
   try {
     if (epavi) {
-      // Start-up as in the paper: the first step of length h0 from the exact solution.
-      EpAVI<Kepler> m{Kepler{}};
-      ExtendedState<N> s = m.start(0.0, s0.q, h0, orbit.at(h0).q);
-      // The momentum at t0 from the discrete Legendre transform of the first step.
-      offer(0, 0.0, 0.0, s0.q, s0.p, s.E, 0.0, 0);
-      k = 1;
-      offer(1, s.t, h0, s.q, s.p, s.E, 0.0, 0);
-      while (s.t < T) {
-        const double t0 = s.t;
-        const ExtendedStepReport r = m.step(s);
-        ++k;
-        if (rec.due(k) || s.t >= T)
-          offer(k, s.t, s.t - t0, s.q, s.p, s.E, r.energy_residual, r.root_iterations);
-        progress.update(k);
-      }
+      // Start-up as in the paper: the first step of length h0 from the exact solution. The
+      // state is carried in the chosen precision T; E_d_drift = E_k − E_1 is formed in T.
+      const Precision prec = parse_precision(o.precision);
+      with_precision(prec, o.digits.value_or(18), [&](auto zero) {
+        using T = decltype(zero);
+        typename EpAVI<Kepler, T>::Options opt;
+        opt.tol = o.tol.value_or(0.0);
+        opt.energy_target =
+            o.energy_target == "initial" ? EnergyTarget::initial : EnergyTarget::previous;
+        EpAVI<Kepler, T> m{Kepler{}, opt};
+        auto lift = [](const Vec<double, 2>& v) { return Vec<T, 2>(T(v(0)), T(v(1))); };
+        auto down = [](const Vec<T, 2>& v) {
+          return Vec<double, 2>(to_double(v(0)), to_double(v(1)));
+        };
+        auto s = m.start(T(0), lift(s0.q), T(h0), lift(orbit.at(h0).q));
+        const T E1 = s.E;
+        // The momentum at t0 from the discrete Legendre transform of the first step.
+        offer(0, 0.0, 0.0, s0.q, s0.p, to_double(s.E), 0.0, 0.0, 0);
+        k = 1;
+        offer(1, to_double(s.t), h0, down(s.q), down(s.p), to_double(s.E), 0.0, 0.0, 0);
+        while (s.t < T(Tend)) {
+          const T t0 = s.t;
+          const ExtendedStepReport r = m.step(s);
+          ++k;
+          if (rec.due(k) || s.t >= T(Tend))
+            offer(k, to_double(s.t), to_double(T(s.t - t0)), down(s.q), down(s.p), to_double(s.E),
+                  to_double(T(s.E - E1)), r.energy_residual, r.root_iterations);
+          progress.update(k);
+        }
+        return 0;
+      });
     } else {
       TimedState<N> s{0.0, s0.q, s0.p};
       const double H0 = energy(P, s0.q, s0.p);
       auto run = [&](auto monitor) {
         AdaptiveMidpoint<Kepler, decltype(monitor)> m(Kepler{}, monitor);
         const double da = m.step_for_first_step(s, h0);
-        offer(0, 0.0, 0.0, s.q, s.p, 0.0, 0.0, 0);
-        while (s.t < T) {
+        offer(0, 0.0, 0.0, s.q, s.p, 0.0, 0.0, 0.0, 0);
+        while (s.t < Tend) {
           const double t0 = s.t;
           const SolveReport r = m.step(s, da);
           ++k;
-          if (rec.due(k) || s.t >= T)
-            offer(k, s.t, s.t - t0, s.q, s.p, 0.0, r.residual, r.iterations);
+          if (rec.due(k) || s.t >= Tend)
+            offer(k, s.t, s.t - t0, s.q, s.p, 0.0, 0.0, r.residual, r.iterations);
           progress.update(k);
         }
       };
@@ -414,6 +445,19 @@ std::function<int()> add_run_command(CLI::App& app) {
                   "with --q0 0.4,0, the paper's Fig. 7 data)")
       ->delimiter(',');
   run->add_option("--h0", o->h0, "epavi/avi1/avi2: the first step (default: --h)");
+  run->add_option("--precision", o->precision,
+                  "epavi: arithmetic of the whole step: double (default), long-double, "
+                  "double-double (libqd), quad (float128), mpfr (see --digits)")
+      ->check(CLI::IsMember({"double", "long-double", "double-double", "quad", "mpfr"}));
+  run->add_option("--digits", o->digits,
+                  "--precision mpfr: significant decimal digits (default 18, the paper's VPA)");
+  run->add_option("--tol", o->tol,
+                  "epavi: relative tolerance of the step solves (default 4 units of round-off "
+                  "of the precision)");
+  run->add_option("--energy-target", o->energy_target,
+                  "epavi: solve the energy equation for the previous step's E_k (previous, the "
+                  "paper) or always for E_1 (initial)")
+      ->check(CLI::IsMember({"previous", "initial"}));
   run->add_option("--c", o->c, "relativistic-kepler: the speed of light (required)");
   run->add_option("--tau-end", o->tau_end, "relativistic-kepler: final proper time (default 40)");
   run->add_option("--every", o->every, "write every K-th state (first and last always)");
@@ -441,6 +485,10 @@ std::function<int()> add_run_command(CLI::App& app) {
       return integrate_relativistic(P, relativistic::Vi2{P}, *o);
     }
     require(!o->c, "--c", "only applies to --problem relativistic-kepler");
+    const bool adaptive = o->method == "epavi" || o->method == "avi1" || o->method == "avi2";
+    require(adaptive || (o->precision == "double" && !o->digits && !o->tol &&
+                         o->energy_target == "previous"),
+            "--precision", "--precision, --digits, --tol and --energy-target apply to epavi");
     require(!o->tau_end, "--tau-end", "only applies to --problem relativistic-kepler");
     if (o->problem == "harmonic") return dispatch_method(HarmonicOscillator{}, *o);
     if (o->problem == "pendulum") return dispatch_method(Pendulum{}, *o);

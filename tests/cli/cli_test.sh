@@ -72,7 +72,32 @@ tail -1 "$tmp/c.csv" | grep -q "^629,6.2831853071795862," && ok || bad "one Kepl
 for m in epavi avi1 avi2; do
   expect 0 "" -- run --problem kepler --method "$m" --e 0.7 --h0 0.001 --periods 1 --every 100 --csv "$tmp/ad-$m.csv"
 done
-head -1 "$tmp/ad-epavi.csv" | grep -qx "step,t,dt,q1,q2,p1,p2,H,L,ecc,omega,E_d,residual,iterations" && ok || bad "epavi CSV header"
+head -1 "$tmp/ad-epavi.csv" | grep -qx "step,t,dt,q1,q2,p1,p2,H,L,ecc,omega,E_d,E_d_drift,residual,iterations" && ok || bad "epavi CSV header"
+# Precisions: each runs half a period at e = 0.5; the drift E_k − E_1 shrinks with the precision.
+for pr in double long-double double-double quad; do
+  expect 0 "" -- run --problem kepler --method epavi --e 0.5 --h0 0.01 --periods 0.5 --precision "$pr" --every 100000 --csv "$tmp/pr-$pr.csv"
+done
+expect 0 "" -- run --problem kepler --method epavi --e 0.5 --h0 0.01 --periods 0.5 --precision mpfr --digits 25 --every 100000 --csv "$tmp/pr-mpfr.csv"
+python3 - "$tmp" <<'PY' && ok || bad "drift should shrink with the precision"
+import sys, csv
+t = sys.argv[1]
+d = {p: abs(float(list(csv.DictReader(open(f"{t}/pr-{p}.csv")))[-1]["E_d_drift"]))
+     for p in ["double", "long-double", "double-double", "quad", "mpfr"]}
+assert d["double-double"] < 1e-24 and d["quad"] < 1e-24 and d["mpfr"] < 1e-18, d
+assert d["long-double"] < 1e-15 and d["double"] < 1e-12, d
+PY
+expect 0 "" -- run --problem kepler --method epavi --e 0.5 --h0 0.01 --periods 0.5 --energy-target initial --tol 1e-10 --every 100000 --csv "$tmp/target.csv"
+expect 2 "--precision" -- run --problem kepler --method epavi --precision octuple --csv "$tmp/r.csv"
+expect 2 "--precision" -- run --problem kepler --method avi1 --precision quad --csv "$tmp/r.csv"
+expect 2 "--digits" -- run --problem kepler --method epavi --digits 30 --csv "$tmp/r.csv"
+expect 2 "--digits" -- run --problem kepler --method epavi --precision mpfr --digits 1 --csv "$tmp/r.csv"
+expect 2 "--tol" -- run --problem kepler --method epavi --tol 0 --csv "$tmp/r.csv"
+expect 2 "--tol" -- run --problem kepler --method epavi --tol 1e-20 --csv "$tmp/r.csv"
+expect 2 "--energy-target" -- run --problem kepler --method epavi --energy-target final --csv "$tmp/r.csv"
+expect 2 "--precision" -- run --problem kepler --method sv --precision quad --csv "$tmp/r.csv"
+# No admissible step (e = 0.9 from perihelion, see the EpAVI chapter): exit 3, time and state.
+expect 3 "no admissible time step" -- run --problem kepler --method epavi --e 0.9 --h0 0.001 --periods 1 --csv "$tmp/r.csv"
+grep -q "at t = 0.07.*q = (.*), p = (" "$tmp/err" && ok || bad "failure names time and state: $(cat "$tmp/err")"
 head -1 "$tmp/ad-avi2.csv" | grep -qx "step,t,dt,q1,q2,p1,p2,H,L,ecc,omega,residual,iterations" && ok || bad "avi CSV header"
 expect 2 "--method" -- run --problem pendulum --method epavi --csv "$tmp/r.csv"
 expect 2 "--h0" -- run --problem kepler --method avi1 --h0 -1 --csv "$tmp/r.csv"

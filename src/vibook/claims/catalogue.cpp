@@ -22,6 +22,9 @@ const std::vector<ClaimInfo>& catalogue() {
        "EpAVI equals a fixed-Δa VI of the time-transformed Lagrangian"},
       {"S-EQ58", "S", "§4.4 (56)–(66)",
        "Modified equation and Lagrangian of the transformed midpoint VI"},
+      // Beyond the paper (issue #3): where EpAVI's energy equation has no admissible root.
+      {"S-X-EXIST", "S", "§2.2 (16); Shibberu",
+       "EpAVI's energy equation can have no admissible root: where it steps, over e and h0"},
       // Vermeeren 2017 — modified equations for variational integrators
       {"V-EX1", "V", "§2 Example 1",
        "Discrete Lagrangians (a)–(d) generate midpoint, Störmer–Verlet, symplectic Euler"},

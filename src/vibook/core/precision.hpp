@@ -43,8 +43,9 @@ using quad = boost::multiprecision::float128;
 using mpfr_real = boost::multiprecision::number<boost::multiprecision::mpfr_float_backend<0>,
                                                 boost::multiprecision::et_off>;
 
-/// Sets the precision (decimal digits) of mpfr_real values created in this thread while the
-/// object lives; restores the previous precision afterwards.
+/// Sets the precision (decimal digits) of mpfr_real values created while the object lives;
+/// restores the previous precision afterwards. In Boost 1.74 this default is process-wide, not
+/// per thread: set it before starting threads that create mpfr_real values, never inside them.
 class MpfrDigits {
  public:
   explicit MpfrDigits(unsigned digits) : previous_(mpfr_real::default_precision()) {

@@ -24,10 +24,11 @@ struct RootResult {
 };
 
 /// Finds a root of f in [a, b] given fa = f(a), fb = f(b) of opposite signs. Stops when
-/// |b − a| <= tol · min(|a|, |b|) (relative, for a bracket away from 0), when f is exactly 0, or
-/// after max_evaluations (converged = false).
+/// |b − a| <= tol · min(|a|, |b|) (relative, for a bracket away from 0), when |f| <= f_tol at a
+/// new point (f_tol = 0: only an exact zero), or after max_evaluations (converged = false).
 template <class T, class F>
-RootResult<T> bracketed_root(F&& f, T a, T b, T fa, T fb, const T& tol, int max_evaluations) {
+RootResult<T> bracketed_root(F&& f, T a, T b, T fa, T fb, const T& tol, int max_evaluations,
+                             const T& f_tol = T(0)) {
   using std::abs;
   const T zero(0), half(0.5);
   RootResult<T> r{a, fa, 0, false};
@@ -51,7 +52,7 @@ RootResult<T> bracketed_root(F&& f, T a, T b, T fa, T fb, const T& tol, int max_
     }
     const T fc = f(c);
     ++r.evaluations;
-    if (fc == zero) {
+    if (abs(fc) <= f_tol || fc == zero) {
       a = b = c;
       true_fa = true_fb = fc;
       r.converged = true;

@@ -32,6 +32,7 @@ class EpAVI {
   }
   ExtendedStepReport step(State& s) { return vi_.step(s); }
   const Integrator& integrator() const { return vi_; }
+  Integrator& integrator() { return vi_; }
 
  private:
   Integrator vi_;

@@ -175,8 +175,8 @@ claims::ClaimResult mean_steps(double e, const Fig12& r, double printed_epavi,
       "e = {}: mean steps EpAVI {:.3f} h0 (printed {}), AVI2 {:.3f} h0 (printed {}); every step "
       "positive and bounded (0 < t'(a) ≤ const). Caveats: averaged over 10 periods of the Fig. "
       "{} run; tolerance 0.01 h0 (twice the printed rounding) chosen after first seeing the "
-      "values; "
-      "the t(a) figure itself is still to be drawn.",
+      "values. "
+      "The t(a) curves over one cycle are sharma-fig3.",
       e, r.epavi.mean_step, printed_epavi, r.avi2.mean_step, printed_avi2, e < 0.5 ? 1 : 2);
   return c;
 }

@@ -13,6 +13,8 @@
 #include <fmt/format.h>
 #include <cmath>
 #include <cstdint>
+#include <limits>
+#include <string>
 
 #include "vibook/core/autodiff.hpp"
 #include "vibook/core/errors.hpp"
@@ -82,10 +84,13 @@ struct ExtendedStepReport {
 /// so.
 ///
 /// **Scalar type.** Everything is computed in T (double, long double, dd_real, quad,
-/// mpfr_real; see precision.hpp); the reports are in double. The tolerance of both solves is
-/// Options::tol, relative: Newton stops when every component of the update is below tol times
-/// its size, the root finder when the bracket on Δt is below tol·Δt. Default: 4 units of T's
-/// round-off.
+/// mpfr_real; see precision.hpp); the reports are in double.
+///
+/// **Tolerance.** Options::tol is a tolerance on the *equations*, relative: the energy equation
+/// stops when |D1 L_d − E_k| <= tol·|E_k|, the momentum equations when |p_k + D2 L_d|_inf <=
+/// tol·|p_k|_inf. Both also stop when the unknowns no longer move by more than 4 units of T's
+/// round-off, which is what the default tol (4 units of round-off) amounts to. A loose tol
+/// leaves a residual of that size in every step (Sharma et al.'s Fig. 5 study).
 template <int N, class ExtendedDiscreteLagrangian, class T = double>
 class ExtendedDelIntegrator {
  public:
@@ -112,7 +117,7 @@ class ExtendedDelIntegrator {
       throw ArgumentError("--tol", fmt::format("must lie in [{:.3g}, 1e-2) (the round-off of the "
                                                "chosen precision up to 1e-2), got {:.3g}",
                                                u, options_.tol));
-    newton_.step_rel = options_.tol;
+    newton_.step_rel = 4 * u;
     newton_.max_iterations = options_.max_newton_iterations;
   }
 
@@ -147,23 +152,31 @@ class ExtendedDelIntegrator {
         F = d.D1.template tail<N>() + k.p;
         J = d.D12.template bottomRightCorner<N, N>();
       };
+      NewtonOptions nopt = newton_;
+      nopt.residual_abs = options_.tol * to_double(T(k.p.template lpNorm<Eigen::Infinity>()));
       const SolveReport r =
-          newton_solve<N>(q1, fj, newton_, "extended step: momentum equation (15)", &k.q);
+          newton_solve<N>(q1, fj, nopt, "extended step: momentum equation (15)", &k.q);
       rep.newton_iterations += r.iterations;
       rep.momentum_residual = r.residual;
       return q1;
     };
+    T closest(std::numeric_limits<double>::infinity());
     auto g = [&](const T& dt) -> T {
+      using std::abs;
       ++rep.root_iterations;
       const VecN q1 = solve_q(dt);
-      return derivatives(k.t, k.q, T(k.t + dt), q1).D1(0) - target;
+      const T r = derivatives(k.t, k.q, T(k.t + dt), q1).D1(0) - target;
+      if (abs(r) < closest) closest = abs(r);
+      return r;
     };
-    const T tol(options_.tol);
+    using std::abs;
+    const T bracket_tol(4 * to_double(unit_roundoff<T>()));
+    const T f_tol = T(options_.tol) * abs(target);
     // Bracket the root that continues the previous step: grow geometrically on both sides of
     // Δt_{k−1}; if both sides change sign at the same level, keep the root nearer in ratio.
     auto solve_in = [&](const T& lo, const T& hi, const T& glo, const T& ghi) {
       const RootResult<T> r =
-          bracketed_root(g, lo, hi, glo, ghi, tol, options_.max_root_iterations);
+          bracketed_root(g, lo, hi, glo, ghi, bracket_tol, options_.max_root_iterations, f_tol);
       if (!r.converged)
         throw SolveError(fmt::format("extended step at t = {:.17g}: the energy equation did not "
                                      "converge in {} evaluations (residual {:.3e})",
@@ -178,7 +191,7 @@ class ExtendedDelIntegrator {
     };
     const T g0 = g(last_dt_);
     T dt = last_dt_;
-    if (g0 != T(0)) {
+    if (abs(g0) > f_tol) {
       T a_prev = last_dt_, ga_prev = g0, b_prev = last_dt_, gb_prev = g0;
       bool found = false;
       for (double f = options_.first_ratio; !found; f *= f) {
@@ -202,13 +215,20 @@ class ExtendedDelIntegrator {
         if (f >= options_.max_ratio) break;
       }
       if (!found) {
+        std::string q, p;
+        for (int i = 0; i < N; ++i) {
+          q += fmt::format("{}{:.17g}", i ? ", " : "", to_double(k.q(i)));
+          p += fmt::format("{}{:.17g}", i ? ", " : "", to_double(k.p(i)));
+        }
         throw SolveError(
-            fmt::format("extended step at t = {:.17g}: the energy equation D1 L_d = E_k "
-                        "has no root for a step in [{:.3g}, {:.3g}] (previous step "
-                        "{:.3g}): no admissible time step",
-                        to_double(k.t), to_double(last_dt_) / options_.max_ratio,
-                        to_double(last_dt_) * options_.max_ratio, to_double(last_dt_)),
-            SolveReport{std::abs(to_double(g0)), rep.root_iterations, false});
+            fmt::format(
+                "extended step at t = {:.17g}, q = ({}), p = ({}), E = {:.17g}: the "
+                "energy equation D1 L_d = E_k has no root for a step in [{:.3g}, {:.3g}] "
+                "(previous step {:.3g}; closest |D1 L_d - E_k| = {:.3e}): no admissible "
+                "time step",
+                to_double(k.t), q, p, to_double(target), to_double(last_dt_) / options_.max_ratio,
+                to_double(last_dt_) * options_.max_ratio, to_double(last_dt_), to_double(closest)),
+            SolveReport{to_double(closest), rep.root_iterations, false});
       }
     }
     const VecN q1 = solve_q(dt);
@@ -222,6 +242,21 @@ class ExtendedDelIntegrator {
     s.E = -d.D2(0);
     return rep;
   }
+
+  /// The energy equation at a trial step: D1 L_d(t_k, q_k, t_k + Δt, q_{k+1}(Δt)) − E, where
+  /// q_{k+1}(Δt) solves the momentum equation (15) from state k. For studying where (16) has
+  /// roots (the integrator's previous-step memory is used only for the Newton start).
+  T energy_equation(const State& k, const T& dt, const T& E) {
+    VecN q1 = k.q + increment_ * T(dt / last_dt_);
+    auto fj = [&](const VecN& x, VecN& F, Mat<T, N>& J) {
+      const auto d = derivatives(k.t, k.q, T(k.t + dt), x);
+      F = d.D1.template tail<N>() + k.p;
+      J = d.D12.template bottomRightCorner<N, N>();
+    };
+    newton_solve<N>(q1, fj, newton_, "energy_equation: momentum equation (15)", &k.q);
+    return derivatives(k.t, k.q, T(k.t + dt), q1).D1(0) - E;
+  }
+  T last_step() const { return last_dt_; }
 
   /// Residuals of the two-step equations (11) (N components) and (12) (last component) at
   /// (t_{k−1}, q_{k−1}), (t_k, q_k), (t_{k+1}, q_{k+1}):

@@ -1,0 +1,86 @@
+// Doctests of the Sharma et al. 2022 studies: the same functions as `vibook figure sharma-fig3
+// sharma-fig4 sharma-fig5 epavi-existence` and the checks of `vibook claims`. Each asserts the
+// measured status and the numbers its criterion rests on (criteria: in sharma_studies.cpp).
+#include <cmath>
+
+#include <doctest/doctest.h>
+
+#include "vibook/figures/registry.hpp"
+
+using namespace vibook;
+
+namespace {
+std::vector<claims::ClaimResult> run(const char* id) {
+  const auto* c = figures::find(id);
+  REQUIRE(c != nullptr);
+  return c->run({});
+}
+}  // namespace
+
+TEST_CASE("sharma-fig3: t(a) over one cycle, the printed mean steps") {
+  const auto r = run("sharma-fig3");
+  REQUIRE(r.size() == 1);
+  INFO(r[0].note);
+  CHECK(std::abs(r[0].value("e01_epavi_mean_step_over_h0") - 1.17) <= 0.01);
+  CHECK(std::abs(r[0].value("e07_avi2_mean_step_over_h0") - 7.93) <= 0.01);
+  CHECK(r[0].value("e07_epavi_min_step_over_h0") > 0);
+  CHECK(r[0].status == claims::Status::reproduced);
+}
+
+TEST_CASE("sharma-fig4: the h0 study at e = 0.7") {
+  const auto r = run("sharma-fig4");
+  REQUIRE(r.size() == 1);
+  INFO(r[0].note);
+  CHECK(r[0].value("avi2_energy_err_ratio_h0_0.01_over_0.001") > 10);
+  CHECK(r[0].value("epavi_energy_err_ratio_h0_0.01_over_0.001") < 1);  // smaller at larger h0
+  CHECK(r[0].status == claims::Status::reproduced_with_caveat);
+}
+
+TEST_CASE("sharma-fig5: 18-digit MPFR, drift against the solver tolerance") {
+  const auto r = run("sharma-fig5");
+  REQUIRE(r.size() == 1);
+  INFO(r[0].note);
+  // The trend holds (drift falls with the tolerance) ...
+  CHECK(r[0].value("tol_1e-17_max_dE_d") < r[0].value("tol_1e-10_max_dE_d") * 1e-5);
+  CHECK(r[0].value("max_rel_change_of_mean_step") <= 1e-4);
+  // ... but not conservation "up to precision": residuals well above 10 u|E| at 1e-17.
+  CHECK(r[0].value("tol_1e-17_max_residual") > 10 * r[0].value("mpfr18_unit_roundoff") * 0.5);
+  CHECK(r[0].status == claims::Status::not_reproduced);
+}
+
+TEST_CASE("epavi-existence: EpAVI fails with a typed error where no step exists") {
+  const auto r = run("epavi-existence");
+  REQUIRE(r.size() == 1);
+  INFO(r[0].note);
+  CHECK(r[0].value("h0_0.001_largest_e_completed") >= 0.7);  // Fig. 2's e = 0.7 must run
+  CHECK(r[0].value("e0.8_h0_0.001_scan_sign_changes") == 0);
+  CHECK(r[0].value("e0.8_h0_0.001_scan_min_energy_residual") > 0);
+  CHECK(r[0].status == claims::Status::reproduced);
+}
+
+TEST_CASE("check-s-eq39: printed (39)-(41) against AutoDiff of (25)") {
+  const auto r = run("check-s-eq39");
+  REQUIRE(r.size() == 2);
+  INFO(r[0].note, "\n", r[1].note);
+  CHECK(r[0].value("max_rel_dev_printed_41") <= 1e3 * 2.220446049250313e-16);
+  CHECK(r[0].value("max_rel_dev_printed_39_40") > 1e-3);
+  CHECK(r[0].status == claims::Status::not_reproduced);
+  CHECK(r[1].id == "S-ERR-39");
+  CHECK(r[1].status == claims::Status::erratum);
+}
+
+TEST_CASE("check-s-l1: the fixed-step VI of the transformed Lagrangian is EpAVI") {
+  const auto r = run("check-s-l1");
+  REQUIRE(r.size() == 1);
+  INFO(r[0].note);
+  CHECK(r[0].status == claims::Status::reproduced);
+}
+
+TEST_CASE("check-s-eq29: accumulated discrete-energy error over 1e6 steps against (29)") {
+  const auto r = run("check-s-eq29");
+  REQUIRE(r.size() == 1);
+  INFO(r[0].note);
+  CHECK(r[0].value("steps") >= 1e6);
+  CHECK(r[0].value("max_abs_dE_d") <= r[0].value("k_times_max_jump"));
+  CHECK(r[0].status == claims::Status::reproduced);
+}
