@@ -54,6 +54,9 @@ TEST_CASE("epavi-existence: EpAVI fails with a typed error where no step exists"
   INFO(r[0].note);
   CHECK(r[0].value("h0_0.001_largest_e_completed") >= 0.7);  // Fig. 2's e = 0.7 must run
   CHECK(r[0].value("e0.8_h0_0.001_scan_sign_changes") == 0);
+  // The spurious far root exists, and the step taken is the near (physical) one.
+  CHECK(r[0].value("e0.7_t0.3_roots_found") == 2);
+  CHECK(r[0].value("e0.7_t0.3_far_root") > 64 * r[0].value("e0.7_t0.3_step_taken"));
   CHECK(r[0].value("e0.8_h0_0.001_scan_min_energy_residual") > 0);
   CHECK(r[0].status == claims::Status::reproduced);
 }
