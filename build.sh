@@ -71,7 +71,7 @@ case "$action" in
   book)
     cmake --build "$bdir" -j "$jobs"
     # The book shows the benchmark table: run the benchmarks now (about 10 s).
-    VIBOOK_BOOK_BENCH=1 cmake --build "$bdir" --target book
+    VIBOOK_BOOK_BENCH=1 VIBOOK_LONG_STUDIES=1 cmake --build "$bdir" --target book
     echo "book: $PWD/$bdir/book/html/index.html"
     ;;
   test)

@@ -25,6 +25,14 @@ if(NOT rc EQUAL 0)
 endif()
 file(GLOB images ${FIGS}/*/*.svg ${FIGS}/*/*-worldline.png)
 file(COPY ${images} DESTINATION ${IMAGES})
+# Long studies run only when VIBOOK_LONG_STUDIES is set (./build.sh book). Otherwise their
+# image is a notice saying so, never a stand-in plot.
+foreach(study sharma-eq29-long)
+  if(NOT EXISTS ${IMAGES}/${study}.svg)
+    file(WRITE ${IMAGES}/${study}.svg
+"<svg xmlns='http://www.w3.org/2000/svg' width='900' height='80'><rect width='900' height='80' fill='#f6f6f6' stroke='#999'/><text x='20' y='45' font-family='DejaVu Sans' font-size='16'>Long study '${study}' not run in this build: ./build.sh book runs it (VIBOOK_LONG_STUDIES=1).</text></svg>\n")
+  endif()
+endforeach()
 
 # 2. Claims: every check run again, the ledger written as JSON and HTML tables.
 execute_process(COMMAND ${VIBOOK} claims --json-out ${OUT}/claims.json --html-dir ${GEN}

@@ -19,12 +19,14 @@ namespace {
 
 int cmd_list() {
   fmt::print("FIGURES AND CHECKS\n");
-  for (const auto& c : figures::registry()) {
+  auto print = [](const figures::Check& c, const char* kind) {
     std::string ids;
     for (const auto& id : c.claims) ids += (ids.empty() ? "" : " ") + id;
-    fmt::print("  {:<16} {:<7} {}  [claims: {}]\n", c.id, c.is_figure ? "figure" : "check", c.title,
-               ids);
-  }
+    fmt::print("  {:<16} {:<7} {}  [claims: {}]\n", c.id, kind, c.title, ids);
+  };
+  for (const auto& c : figures::registry()) print(c, c.is_figure ? "figure" : "check");
+  fmt::print("LONG STUDIES (./build.sh book, or `vibook figure ID`)\n");
+  for (const auto& c : figures::long_studies()) print(c, "study");
   // Statuses are measured, not stored: list runs every check (the same ones as `claims`).
   const claims::Ledger ledger = figures::measure_all();
   fmt::print("\nCLAIMS (status as measured now)\n");
@@ -54,6 +56,8 @@ int cmd_figures(std::vector<std::string> ids, const fs::path& out) {
     for (const auto& c : figures::registry()) {
       if (c.is_figure) todo.push_back(&c);
     }
+    if (figures::long_studies_enabled())
+      for (const auto& c : figures::long_studies()) todo.push_back(&c);
   } else {
     for (const auto& id : ids) {
       const auto* c = figures::find(id);
@@ -99,8 +103,9 @@ int cmd_claims(bool json, const std::string& json_out, const std::string& html_d
       write(fs::path(html_dir) / fmt::format("claims-{}.html", paper), ledger.to_html(paper),
             "--html-dir");
     }
-    for (const auto& c : figures::registry()) {
-      write(fs::path(html_dir) / (c.id + ".html"), ledger.to_html({}, c.claims), "--html-dir");
+    for (const auto* list : {&figures::registry(), &figures::long_studies()}) {
+      for (const auto& c : *list)
+        write(fs::path(html_dir) / (c.id + ".html"), ledger.to_html({}, c.claims), "--html-dir");
     }
   }
   if (json) {

@@ -87,3 +87,17 @@ TEST_CASE("check-s-eq29: accumulated discrete-energy error over 1e6 steps agains
   CHECK(r[0].value("max_abs_dE_d") <= r[0].value("k_times_max_jump"));
   CHECK(r[0].status == claims::Status::reproduced);
 }
+
+TEST_CASE("sharma-eq29-long: the long study's machinery, at 1e-3 of its length") {
+  // The study itself (1e7 steps) runs in the book build only; this checks that it runs, fits
+  // β and records the claim, on short runs.
+  const auto r = figures::run_eq29_long({}, 1e-3);
+  REQUIRE(r.size() == 1);
+  INFO(r[0].note);
+  CHECK(r[0].id == "S-EQ29");
+  CHECK(r[0].value("double_steps") == 10000);
+  CHECK(std::isfinite(r[0].value("double_beta")));
+  CHECK(r[0].value("quad_final_abs_dE_d") < 1e-25);
+  CHECK(r[0].status == claims::Status::reproduced);
+  CHECK(figures::find("sharma-eq29-long") != nullptr);
+}

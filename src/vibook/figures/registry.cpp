@@ -6,6 +6,8 @@
 #include "vibook/core/parallel.hpp"
 #include "vibook/plot/gnuplot.hpp"
 
+#include <cstdlib>
+
 namespace vibook::figures {
 
 const std::vector<Check>& registry() {
@@ -16,7 +18,20 @@ const std::vector<Check>& registry() {
   return all;
 }
 
+const std::vector<Check>& long_studies() {
+  static const std::vector<Check> all = {sharma_eq29_long()};
+  return all;
+}
+
+bool long_studies_enabled() {
+  const char* v = std::getenv("VIBOOK_LONG_STUDIES");
+  return v != nullptr && *v != '\0' && std::string_view(v) != "0";
+}
+
 const Check* find(std::string_view id) {
+  for (const auto& c : long_studies()) {
+    if (c.id == id) return &c;
+  }
   for (const auto& c : registry()) {
     if (c.id == id) return &c;
   }
@@ -53,6 +68,8 @@ std::vector<std::vector<claims::ClaimResult>> run_checks(const std::vector<const
 claims::Ledger measure_all(unsigned jobs) {
   std::vector<const Check*> all;
   for (const auto& c : registry()) all.push_back(&c);
+  if (long_studies_enabled())
+    for (const auto& c : long_studies()) all.push_back(&c);
   claims::Ledger ledger;
   for (const auto& rs : run_checks(all, jobs)) {
     for (const auto& r : rs) ledger.record(r);

@@ -28,9 +28,14 @@ struct Check {
   std::function<std::vector<claims::ClaimResult>(const Context&)> run;
 };
 
-/// Every check and figure, in a fixed order.
+/// Every check and figure, in a fixed order (the ones CI runs).
 const std::vector<Check>& registry();
-/// The check with this ID, or nullptr.
+/// Long studies (minutes to hours): run by `./build.sh book`, which sets VIBOOK_LONG_STUDIES=1,
+/// or by name (`vibook figure ID`); never by the tests.
+const std::vector<Check>& long_studies();
+/// True when VIBOOK_LONG_STUDIES is set to a non-empty value other than 0.
+bool long_studies_enabled();
+/// The check with this ID (in either list), or nullptr.
 const Check* find(std::string_view id);
 
 /// Outcome of regenerating one figure into `out_root/ID/`.
@@ -50,7 +55,8 @@ FigureOutput make_figure(const Check& check, const std::filesystem::path& out_ro
 std::vector<std::vector<claims::ClaimResult>> run_checks(const std::vector<const Check*>& checks,
                                                          unsigned jobs = 0);
 
-/// Run every check and record the results in a fresh ledger.
+/// Run every check (and the long studies when long_studies_enabled()) and record the results
+/// in a fresh ledger.
 claims::Ledger measure_all(unsigned jobs = 0);
 
 // The individual checks (one translation unit each).
@@ -69,5 +75,8 @@ Check epavi_existence();
 Check check_ss_t8();
 Check shen_sun_fig7();
 Check relativistic_precession();
+Check sharma_eq29_long();
+/// The long study at a fraction `scale` of its length (the doctest runs it small).
+std::vector<claims::ClaimResult> run_eq29_long(const Context& ctx, double scale);
 
 }  // namespace vibook::figures

@@ -11,6 +11,7 @@
 #pragma once
 
 #include <fmt/format.h>
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <limits>
@@ -78,10 +79,10 @@ struct ExtendedStepReport {
 /// trial Δt the momentum equations (15) are solved for q_{k+1}(Δt) by Newton (well
 /// conditioned), and the scalar energy equation g(Δt) = D1 L_d − E_k = 0 is solved by a
 /// bracketed root finder (Anderson–Björck with bisection safeguard, core/root.hpp). The bracket is
-/// grown geometrically from the previous step Δt_{k−1} (ratio first_ratio, squared each time, up to
-/// max_ratio), which keeps to the root that continues the previous step. If no sign change is found
-/// there, no admissible step exists near the previous one, and the step throws SolveError saying
-/// so.
+/// grown geometrically (ratio first_ratio, squared each time, up to max_ratio) around the step
+/// predicted from the last two, Δt_{k−1}²/Δt_{k−2} (the ratio of successive steps changes
+/// slowly), which keeps to the root that continues the motion. If no sign change is found there,
+/// no admissible step exists near the previous one, and the step throws SolveError saying so.
 ///
 /// **Scalar type.** Everything is computed in T (double, long double, dd_real, quad,
 /// mpfr_real; see precision.hpp); the reports are in double.
@@ -105,8 +106,9 @@ class ExtendedDelIntegrator {
     int max_newton_iterations = 50;
     double max_ratio = 64.0;  ///< how far the bracket may grow from the previous step
     double first_ratio =
-        1.015625;  ///< the first bracket [Δt/r, Δt·r]; r is squared until max_ratio
+        1.0 + 1.0 / 1024;  ///< the first bracket [Δt/r, Δt·r]; r is squared until max_ratio
     int max_root_iterations = 200;
+    int max_secant_iterations = 12;
   };
 
   explicit ExtendedDelIntegrator(ExtendedDiscreteLagrangian Ld, Options options = {})
@@ -133,6 +135,7 @@ class ExtendedDelIntegrator {
     s.p = d.D2.template tail<N>();
     s.E = -d.D2(0);
     E_start_ = s.E;
+    prev_dt_ = T(0);
     last_dt_ = t1 - t0;
     increment_ = q1 - q0;
     return s;
@@ -145,8 +148,11 @@ class ExtendedDelIntegrator {
     const State k = s;
     const T target = options_.energy_target == EnergyTarget::previous ? k.E : E_start_;
     // q_{k+1}(Δt): Newton on (15), started from the previous increment scaled to Δt.
+    // Newton starts from the increment of the latest solve, scaled to the trial Δt.
+    T dt_seen = last_dt_;
+    VecN increment_seen = increment_;
     auto solve_q = [&](const T& dt) {
-      VecN q1 = k.q + increment_ * T(dt / last_dt_);
+      VecN q1 = k.q + increment_seen * T(dt / dt_seen);
       auto fj = [&](const VecN& x, VecN& F, Mat<T, N>& J) {
         const auto d = derivatives(k.t, k.q, k.t + dt, x);
         F = d.D1.template tail<N>() + k.p;
@@ -158,6 +164,8 @@ class ExtendedDelIntegrator {
           newton_solve<N>(q1, fj, nopt, "extended step: momentum equation (15)", &k.q);
       rep.newton_iterations += r.iterations;
       rep.momentum_residual = r.residual;
+      dt_seen = dt;
+      increment_seen = q1 - k.q;
       return q1;
     };
     T closest(std::numeric_limits<double>::infinity());
@@ -184,19 +192,59 @@ class ExtendedDelIntegrator {
                          SolveReport{std::abs(to_double(r.fx)), rep.root_iterations, false});
       return r.x;
     };
+    // The predicted step: geometric extrapolation of the last two, the ratio clamped to [1/2, 2].
+    T center = last_dt_;
+    if (prev_dt_ > T(0)) {
+      const T ratio = std::clamp(T(last_dt_ / prev_dt_), T(0.5), T(2));
+      center = last_dt_ * ratio;
+    }
     auto log_ratio = [&](const T& x) {
       using std::log;
       using std::abs;
-      return abs(log(x / last_dt_));
+      return abs(log(x / center));
     };
-    const T g0 = g(last_dt_);
-    T dt = last_dt_;
-    if (abs(g0) > f_tol) {
-      T a_prev = last_dt_, ga_prev = g0, b_prev = last_dt_, gb_prev = g0;
+    const T g0 = g(center);
+    T dt = center;
+    // Secant from the prediction first (a few evaluations when the prediction is good); it
+    // stops at |g| <= f_tol, at an update below 4 units of round-off, or when |g| no longer
+    // falls (the evaluation noise of g is reached: g is nearly flat in Δt). A secant iterate
+    // leaving [center/2, 2·center] or not converging hands over to the bracket search.
+    bool secant_ok = abs(g0) <= f_tol;
+    if (!secant_ok) {
+      T x0 = center, f0 = g0, x1 = center * T(1 + 1.0 / (1 << 20));
+      T f1 = g(x1);
+      T best_x = abs(f1) < abs(f0) ? x1 : x0, best_f = abs(f1) < abs(f0) ? f1 : f0;
+      int stalls = 0;
+      for (int it = 0; it < options_.max_secant_iterations; ++it) {
+        if (abs(best_f) <= f_tol) {
+          secant_ok = true;
+          break;
+        }
+        if (f1 == f0) break;
+        const T x2 = x1 - f1 * (x1 - x0) / (f1 - f0);
+        if (!(x2 > center / T(2) && x2 < center * T(2))) break;
+        const T f2 = g(x2);
+        if (abs(f2) < abs(best_f)) best_x = x2, best_f = f2;
+        // At the noise floor of g (g is nearly flat in Δt) the updates wander at random; two
+        // evaluations without progress, or an update below round-off, end the iteration with
+        // the best point seen. Stopping at the first stall would keep the residual one-signed
+        // (a one-sided approach), and the residuals add up in E_k.
+        if (abs(f2) >= abs(f1)) ++stalls;
+        if (abs(x2 - x1) <= bracket_tol * abs(x2) || stalls >= 2) {
+          secant_ok = true;
+          break;
+        }
+        x0 = x1, f0 = f1, x1 = x2, f1 = f2;
+      }
+      if (secant_ok) dt = best_x;
+    }
+    if (!secant_ok) {
+      dt = center;
+      T a_prev = center, ga_prev = g0, b_prev = center, gb_prev = g0;
       bool found = false;
       for (double f = options_.first_ratio; !found; f *= f) {
         f = std::min(f, options_.max_ratio);
-        const T a = last_dt_ / T(f), b = last_dt_ * T(f);
+        const T a = center / T(f), b = center * T(f);
         const T ga = g(a), gb = g(b);
         const T zero(0);
         const bool lower = (ga < zero) != (ga_prev < zero), upper = (gb < zero) != (gb_prev < zero);
@@ -226,14 +274,15 @@ class ExtendedDelIntegrator {
                 "energy equation D1 L_d = E_k has no root for a step in [{:.3g}, {:.3g}] "
                 "(previous step {:.3g}; closest |D1 L_d - E_k| = {:.3e}): no admissible "
                 "time step",
-                to_double(k.t), q, p, to_double(target), to_double(last_dt_) / options_.max_ratio,
-                to_double(last_dt_) * options_.max_ratio, to_double(last_dt_), to_double(closest)),
+                to_double(k.t), q, p, to_double(target), to_double(center) / options_.max_ratio,
+                to_double(center) * options_.max_ratio, to_double(last_dt_), to_double(closest)),
             SolveReport{to_double(closest), rep.root_iterations, false});
       }
     }
     const VecN q1 = solve_q(dt);
     const auto d = derivatives(k.t, k.q, T(k.t + dt), q1);
     rep.energy_residual = std::abs(to_double(T(d.D1(0) - target)));
+    prev_dt_ = last_dt_;
     last_dt_ = dt;
     increment_ = q1 - k.q;
     s.t = k.t + dt;
@@ -295,6 +344,7 @@ class ExtendedDelIntegrator {
   NewtonOptions newton_{};
   T E_start_ = T(0);
   T last_dt_ = T(0);
+  T prev_dt_ = T(0);  ///< Δt_{k−2}, for the prediction; 0 until two steps are known
   VecN increment_ = VecN::Zero();
 };
 
