@@ -21,6 +21,7 @@
 #include "vibook/core/recorder.hpp"
 #include "vibook/epavi/epavi.hpp"
 #include "vibook/integrators/kernels.hpp"
+#include "vibook/integrators/splitting.hpp"
 #include "vibook/kepler/kepler.hpp"
 #include "vibook/mechanics/del_solver.hpp"
 #include "vibook/mechanics/discrete_lagrangian.hpp"
@@ -34,7 +35,7 @@ namespace {
 struct RunOptions {
   std::string problem, method, discrete_lagrangian = "midpoint", csv;
   double h = 0.01;
-  std::optional<double> t_end, periods, e, c, tau_end, h0, tol;
+  std::optional<double> t_end, periods, e, c, tau_end, h0, tol, alpha;
   std::string precision = "double", energy_target = "previous";
   std::optional<unsigned> digits;
   std::vector<double> q0, p0;
@@ -404,6 +405,17 @@ int dispatch_method(const Problem& P, const RunOptions& o) {
   if (o.method == "se-adjoint") return integrate(P, SymplecticEulerAdjoint<Problem>(P), false, o);
   if (o.method == "sv") return integrate(P, StormerVerlet<Problem>(P), false, o);
   if (o.method == "midpoint") return integrate(P, ImplicitMidpoint<Problem>(P), true, o);
+  if (o.method == "vi1" || o.method == "vi1-adjoint" || o.method == "vi2" ||
+      o.method == "vi2-adjoint") {
+    if constexpr (std::is_same_v<Problem, Kepler>) {
+      const auto split = WeightedSplit<Kepler>::alpha(o.alpha.value_or(0.5));
+      return integrate(
+          P, SplittingKernel<WeightedSplit<Kepler>>(split, parse_splitting_method(o.method)), false,
+          o);
+    } else {
+      throw ArgumentError("--method", "the splitting methods are implemented for --problem kepler");
+    }
+  }
   // del-generic: the generic discrete Euler–Lagrange solver on the chosen discrete Lagrangian.
   const auto& d = o.discrete_lagrangian;
   if (d == "midpoint") return integrate(P, make_del_integrator<N>(midpoint_dl(L)), true, o);
@@ -425,10 +437,12 @@ std::function<int()> add_run_command(CLI::App& app) {
                   "se (drift-kick symplectic Euler), se-adjoint (kick-drift), sv (Störmer–Verlet), "
                   "midpoint (implicit midpoint), del-generic (generic solver); for "
                   "relativistic-kepler: k-symplectic (3.19), vi (3.20)/(3.22), vi2 (3.8); adaptive "
-                  "(kepler): epavi, avi1, avi2 (Sharma et al. 2022)")
+                  "(kepler): epavi, avi1, avi2 (Sharma et al. 2022); splitting (kepler, Shen & "
+                  "Sun 2025): vi1, vi1-adjoint, vi2 (3.8), vi2-adjoint (3.7)")
       ->required()
       ->check(CLI::IsMember({"se", "se-adjoint", "sv", "midpoint", "del-generic", "epavi", "avi1",
-                             "avi2", "k-symplectic", "vi", "vi2"}));
+                             "avi2", "k-symplectic", "vi", "vi1", "vi1-adjoint", "vi2",
+                             "vi2-adjoint"}));
   run->add_option("--discrete-lagrangian", o->discrete_lagrangian,
                   "for del-generic: midpoint, sv, se or se-adjoint (default midpoint)")
       ->check(CLI::IsMember({"midpoint", "sv", "se", "se-adjoint"}));
@@ -458,6 +472,8 @@ std::function<int()> add_run_command(CLI::App& app) {
                   "epavi: solve the energy equation for the previous step's E_k (previous, the "
                   "paper) or always for E_1 (initial)")
       ->check(CLI::IsMember({"previous", "initial"}));
+  run->add_option("--alpha", o->alpha,
+                  "vi1/vi2 on kepler: split φ^[1] = αφ, φ^[2] = (1−α)φ (default 0.5, the paper's)");
   run->add_option("--c", o->c, "relativistic-kepler: the speed of light (required)");
   run->add_option("--tau-end", o->tau_end, "relativistic-kepler: final proper time (default 40)");
   run->add_option("--every", o->every, "write every K-th state (first and last always)");
@@ -469,10 +485,20 @@ std::function<int()> add_run_command(CLI::App& app) {
     require(o->every >= 1, "--every", "must be at least 1");
     if (o->e) require(*o->e >= 0 && *o->e < 1, "--e", "eccentricity must lie in [0, 1)");
     const bool rel = o->problem == "relativistic-kepler";
-    const bool rel_method = o->method == "k-symplectic" || o->method == "vi" || o->method == "vi2";
-    require(rel == rel_method, "--method",
-            rel ? "relativistic-kepler takes k-symplectic, vi or vi2"
-                : "k-symplectic, vi and vi2 are for --problem relativistic-kepler");
+    const bool rel_only = o->method == "k-symplectic" || o->method == "vi";
+    const bool splitting = o->method == "vi1" || o->method == "vi1-adjoint" || o->method == "vi2" ||
+                           o->method == "vi2-adjoint";
+    if (rel) {
+      require(rel_only || o->method == "vi2", "--method",
+              "relativistic-kepler takes k-symplectic, vi or vi2");
+    } else {
+      require(!rel_only, "--method", "k-symplectic and vi are for --problem relativistic-kepler");
+      require(!splitting || o->problem == "kepler", "--method",
+              "vi1, vi1-adjoint, vi2 and vi2-adjoint split the Kepler potential: use --problem "
+              "kepler");
+    }
+    require(!o->alpha || (splitting && !rel), "--alpha",
+            "applies to the splitting methods vi1, vi1-adjoint, vi2, vi2-adjoint on kepler");
     if (rel) {
       require(o->c.has_value(), "--c", "the speed of light is required for relativistic-kepler");
       require(!o->t_end && !o->periods, "--tau-end",

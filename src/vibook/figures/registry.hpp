@@ -75,6 +75,13 @@ Check epavi_existence();
 Check check_ss_t8();
 Check shen_sun_fig7();
 Check relativistic_precession();
+Check check_ss_t2();
+Check check_ss_p4();
+Check check_ss_t6();
+Check shen_sun_fig2();
+Check shen_sun_fig345();
+Check shen_sun_fig6();
+Check shen_sun_work_precision();
 Check sharma_eq29_long();
 /// The long study at a fraction `scale` of its length (the doctest runs it small).
 std::vector<claims::ClaimResult> run_eq29_long(const Context& ctx, double scale);

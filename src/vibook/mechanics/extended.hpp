@@ -107,7 +107,12 @@ class ExtendedDelIntegrator {
     double max_ratio = 64.0;  ///< how far the bracket may grow from the previous step
     double first_ratio =
         1.0 + 1.0 / 1024;  ///< the first bracket [Δt/r, Δt·r]; r is squared until max_ratio
-    int max_root_iterations = 200;
+    int max_root_iterations = 0;  ///< 0: 40 + 4 × (bits of T), enough to bisect to round-off
+    /// L_d depends on the times only through t1 − t0 (time-translation invariant, e.g. (25)
+    /// for an autonomous L): evaluate it at (0, q_k, Δt, q_{k+1}), so that Δt is not quantized
+    /// to ulp(t_k), and accumulate t_k with Kahan's compensated summation. Without this, the
+    /// resolution of Δt — and with it the energy residual — degrades in proportion to t.
+    bool time_translation_invariant = false;
     int max_secant_iterations = 12;
   };
 
@@ -121,6 +126,8 @@ class ExtendedDelIntegrator {
                                                u, options_.tol));
     newton_.step_rel = 4 * u;
     newton_.max_iterations = options_.max_newton_iterations;
+    if (options_.max_root_iterations == 0)
+      options_.max_root_iterations = 40 + 4 * int(std::ceil(-std::log2(u)));
   }
 
   const Options& options() const { return options_; }
@@ -128,7 +135,10 @@ class ExtendedDelIntegrator {
   /// The state after a first step from (t0, q0) to (t1, q1) (e.g. taken from an exact
   /// solution): p1 = D4 L_d, E1 = −D3 L_d (17)–(18).
   State start(const T& t0, const VecN& q0, const T& t1, const VecN& q1) {
-    const auto d = derivatives(t0, q0, t1, q1);
+    const T dt0 = t1 - t0;
+    const auto d = options_.time_translation_invariant ? derivatives(T(0), q0, dt0, q1)
+                                                       : derivatives(t0, q0, t1, q1);
+    t_compensation_ = T(0);
     State s;
     s.t = t1;
     s.q = q1;
@@ -147,6 +157,7 @@ class ExtendedDelIntegrator {
     ExtendedStepReport rep;
     const State k = s;
     const T target = options_.energy_target == EnergyTarget::previous ? k.E : E_start_;
+    const T t0e = options_.time_translation_invariant ? T(0) : k.t;
     // q_{k+1}(Δt): Newton on (15), started from the previous increment scaled to Δt.
     // Newton starts from the increment of the latest solve, scaled to the trial Δt.
     T dt_seen = last_dt_;
@@ -154,7 +165,7 @@ class ExtendedDelIntegrator {
     auto solve_q = [&](const T& dt) {
       VecN q1 = k.q + increment_seen * T(dt / dt_seen);
       auto fj = [&](const VecN& x, VecN& F, Mat<T, N>& J) {
-        const auto d = derivatives(k.t, k.q, k.t + dt, x);
+        const auto d = derivatives(t0e, k.q, T(t0e + dt), x);
         F = d.D1.template tail<N>() + k.p;
         J = d.D12.template bottomRightCorner<N, N>();
       };
@@ -173,7 +184,7 @@ class ExtendedDelIntegrator {
       using std::abs;
       ++rep.root_iterations;
       const VecN q1 = solve_q(dt);
-      const T r = derivatives(k.t, k.q, T(k.t + dt), q1).D1(0) - target;
+      const T r = derivatives(t0e, k.q, T(t0e + dt), q1).D1(0) - target;
       if (abs(r) < closest) closest = abs(r);
       return r;
     };
@@ -280,12 +291,19 @@ class ExtendedDelIntegrator {
       }
     }
     const VecN q1 = solve_q(dt);
-    const auto d = derivatives(k.t, k.q, T(k.t + dt), q1);
+    const auto d = derivatives(t0e, k.q, T(t0e + dt), q1);
     rep.energy_residual = std::abs(to_double(T(d.D1(0) - target)));
     prev_dt_ = last_dt_;
     last_dt_ = dt;
     increment_ = q1 - k.q;
-    s.t = k.t + dt;
+    if (options_.time_translation_invariant) {  // Kahan: t_{k+1} = t_k + Δt, compensated
+      const T y = dt - t_compensation_;
+      const T t1 = k.t + y;
+      t_compensation_ = (t1 - k.t) - y;
+      s.t = t1;
+    } else {
+      s.t = k.t + dt;
+    }
     s.q = q1;
     s.p = d.D2.template tail<N>();
     s.E = -d.D2(0);
@@ -296,14 +314,15 @@ class ExtendedDelIntegrator {
   /// q_{k+1}(Δt) solves the momentum equation (15) from state k. For studying where (16) has
   /// roots (the integrator's previous-step memory is used only for the Newton start).
   T energy_equation(const State& k, const T& dt, const T& E) {
+    const T t0e = options_.time_translation_invariant ? T(0) : k.t;
     VecN q1 = k.q + increment_ * T(dt / last_dt_);
     auto fj = [&](const VecN& x, VecN& F, Mat<T, N>& J) {
-      const auto d = derivatives(k.t, k.q, T(k.t + dt), x);
+      const auto d = derivatives(t0e, k.q, T(t0e + dt), x);
       F = d.D1.template tail<N>() + k.p;
       J = d.D12.template bottomRightCorner<N, N>();
     };
     newton_solve<N>(q1, fj, newton_, "energy_equation: momentum equation (15)", &k.q);
-    return derivatives(k.t, k.q, T(k.t + dt), q1).D1(0) - E;
+    return derivatives(t0e, k.q, T(t0e + dt), q1).D1(0) - E;
   }
   T last_step() const { return last_dt_; }
 
@@ -344,7 +363,8 @@ class ExtendedDelIntegrator {
   NewtonOptions newton_{};
   T E_start_ = T(0);
   T last_dt_ = T(0);
-  T prev_dt_ = T(0);  ///< Δt_{k−2}, for the prediction; 0 until two steps are known
+  T prev_dt_ = T(0);         ///< Δt_{k−2}, for the prediction; 0 until two steps are known
+  T t_compensation_ = T(0);  ///< Kahan compensation of t (time_translation_invariant only)
   VecN increment_ = VecN::Zero();
 };
 
