@@ -5,12 +5,20 @@ import json
 import sys
 
 data = json.load(open(sys.argv[1]))
-med, its = {}, {}
+med, its, wp = {}, {}, {}
 for b in data["benchmarks"]:
-    if b.get("aggregate_name") == "median":
-        name = b["run_name"].replace("BM_", "").split("/")[0]
-        med[name] = b["ns_per_step"]
-        its[name] = b.get("iterations_per_step", 0.0)
+    if b.get("aggregate_name") != "median":
+        continue
+    run = b["run_name"].replace("BM_", "")
+    if run.startswith("wp_"):  # work-precision: method/j -> (seconds per run, angle error)
+        method, j = run[3:].split("/")
+        scale = {"ns": 1e-9, "us": 1e-6, "ms": 1e-3, "s": 1.0}[b.get("time_unit", "ns")]
+        wp.setdefault(method, []).append((int(j), b["real_time"] * scale, b["angle_error"],
+                                          b["steps"]))
+        continue
+    name = run.split("/")[0]
+    med[name] = b["ns_per_step"]
+    its[name] = b.get("iterations_per_step", 0.0)
 hand = med.get("hand_loop")
 ctx = data.get("context", {})
 print("<table class=\"vibook-bench\">")
@@ -54,3 +62,21 @@ if sv and ep:
           "of the energy equation, each with a Newton solve of the momentum equations by "
           "nested AutoDiff; AVI's are Newton iterations. mpfr18: one repetition of 300 steps "
           "(MPFR at 18 digits, the paper's VPA).</p>")
+
+# Work-precision against wall-clock time (Shen & Sun methods): table, and the CSV of the diagram
+# when a second argument names it.
+if wp:
+    print("<table class=\"vibook-bench\">")
+    print("<tr><th>Kepler e = 0.6, 10 periods</th><th>steps</th><th>time per run (median)</th>"
+          "<th>LRL-angle error</th></tr>")
+    for method in ("se", "sv", "vi1", "vi2"):
+        for j, sec, err, steps in sorted(wp.get(method, [])):
+            print(f"<tr><td>{method}</td><td>{int(steps)}</td><td>{sec * 1e3:.3f} ms</td>"
+                  f"<td>{err:.3g}</td></tr>")
+    print("</table>")
+    if len(sys.argv) > 2:
+        with open(sys.argv[2], "w") as f:
+            f.write("method,steps,seconds,angle_error\n")
+            for method in ("se", "sv", "vi1", "vi2"):
+                for j, sec, err, steps in sorted(wp.get(method, [])):
+                    f.write(f"{method},{int(steps)},{sec:.9g},{err:.17g}\n")
