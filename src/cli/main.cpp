@@ -87,8 +87,15 @@ int cmd_figures(std::vector<std::string> ids, const fs::path& out) {
   return rc;
 }
 
-int cmd_claims(bool json, const std::string& json_out, const std::string& html_dir) {
-  const claims::Ledger ledger = figures::measure_all();
+int cmd_claims(bool json, const std::string& json_out, const std::string& html_dir,
+               const std::string& figures_dir) {
+  std::optional<fs::path> fdir;
+  if (!figures_dir.empty()) {
+    if (!fs::is_directory(figures_dir))
+      throw ArgumentError("--figures-dir", fmt::format("'{}' is not a directory", figures_dir));
+    fdir = figures_dir;
+  }
+  const claims::Ledger ledger = figures::measure_all(0, fdir);
   auto write = [](const fs::path& path, const std::string& text, const char* arg) {
     std::ofstream f(path);
     if (!f) throw ArgumentError(arg, fmt::format("cannot open '{}' for writing", path.string()));
@@ -140,11 +147,14 @@ int main(int argc, char** argv) {
 
   auto* cl = app.add_subcommand("claims", "Run every claim check and print the ledger");
   bool cl_json = false;
-  std::string cl_json_out, cl_html_dir;
+  std::string cl_json_out, cl_html_dir, cl_figures_dir;
   cl->add_flag("--json", cl_json, "print the ledger as JSON");
   cl->add_option("--json-out", cl_json_out, "also write the JSON ledger to this file");
   cl->add_option("--html-dir", cl_html_dir,
                  "also write the book's HTML claims tables into this directory");
+  cl->add_option("--figures-dir", cl_figures_dir,
+                 "with VIBOOK_LONG_STUDIES set: read the long studies' results from "
+                 "DIR/ID/claims.json (written by `vibook figures`) instead of running them again");
 
   const auto run = cli::add_run_command(app);
 
@@ -169,7 +179,8 @@ int main(int argc, char** argv) {
     if (app.got_subcommand("list")) return cmd_list();
     if (app.got_subcommand("figure")) return cmd_figures(fig_ids, fig_out);
     if (app.got_subcommand("figures")) return cmd_figures({}, figs_out);
-    if (app.got_subcommand("claims")) return cmd_claims(cl_json, cl_json_out, cl_html_dir);
+    if (app.got_subcommand("claims"))
+      return cmd_claims(cl_json, cl_json_out, cl_html_dir, cl_figures_dir);
     return run();
   } catch (const ArgumentError& e) {
     fmt::print(stderr, "vibook: error: {}\n", e.what());

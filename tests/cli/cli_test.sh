@@ -102,6 +102,8 @@ head -1 "$tmp/ad-avi2.csv" | grep -qx "step,t,dt,q1,q2,p1,p2,H,L,ecc,omega,resid
 expect 2 "--method" -- run --problem pendulum --method epavi --csv "$tmp/r.csv"
 expect 2 "--h0" -- run --problem kepler --method avi1 --h0 -1 --csv "$tmp/r.csv"
 
+expect 2 "--figures-dir" -- claims --figures-dir "$tmp/does-not-exist"
+
 # --- splitting variational integrators (Shen & Sun 2025) on Kepler ---------------------------
 for m in vi1 vi1-adjoint vi2 vi2-adjoint; do
   expect 0 "" -- run --problem kepler --method "$m" --e 0.6 --h 0.05 --periods 1 --every 1000 --csv "$tmp/split-$m.csv"

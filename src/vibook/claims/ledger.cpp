@@ -1,5 +1,8 @@
 #include "vibook/claims/ledger.hpp"
 
+#include <cmath>
+#include <stdexcept>
+
 #include <algorithm>
 #include <limits>
 #include <stdexcept>
@@ -111,6 +114,29 @@ nlohmann::json results_to_json(const std::vector<ClaimResult>& results) {
                    {"source", r.source}});
   }
   return {{"claims", arr}};
+}
+
+std::vector<ClaimResult> results_from_json(const nlohmann::json& js) {
+  std::vector<ClaimResult> out;
+  if (!js.contains("claims") || !js["claims"].is_array())
+    throw std::runtime_error("claims.json: no \"claims\" array");
+  for (const auto& c : js["claims"]) {
+    ClaimResult r;
+    r.id = c.at("id").get<std::string>();
+    const std::string st = c.at("status").get<std::string>();
+    bool known = false;
+    for (Status s : {Status::pending, Status::reproduced, Status::reproduced_with_caveat,
+                     Status::not_reproduced, Status::erratum}) {
+      if (to_string(s) == st) r.status = s, known = true;
+    }
+    if (!known) throw std::runtime_error("claims.json: unknown status '" + st + "'");
+    for (const auto& [k, v] : c.at("values").items())
+      r.values.push_back({k, v.is_number() ? v.get<double>() : std::nan("")});
+    r.note = c.at("note").get<std::string>();
+    r.source = c.at("source").get<std::string>();
+    out.push_back(std::move(r));
+  }
+  return out;
 }
 
 nlohmann::json Ledger::to_json() const {

@@ -82,5 +82,8 @@ class Ledger {
 
 /// JSON of a list of results (one figure's claims.json).
 nlohmann::json results_to_json(const std::vector<ClaimResult>& results);
+/// The inverse of results_to_json for catalogued claims (errata carry no description there):
+/// reads a figure's claims.json back. Throws std::runtime_error on a malformed file.
+std::vector<ClaimResult> results_from_json(const nlohmann::json& js);
 
 }  // namespace vibook::claims

@@ -57,7 +57,10 @@ std::vector<std::vector<claims::ClaimResult>> run_checks(const std::vector<const
 
 /// Run every check (and the long studies when long_studies_enabled()) and record the results
 /// in a fresh ledger.
-claims::Ledger measure_all(unsigned jobs = 0);
+/// With `figures_dir`, a long study whose figure output DIR/ID/claims.json exists is read from
+/// there instead of being run again (the book build runs `vibook figures` first).
+claims::Ledger measure_all(unsigned jobs = 0,
+                           const std::optional<std::filesystem::path>& figures_dir = {});
 
 // The individual checks (one translation unit each).
 Check vermeeren_fig1();
