@@ -15,7 +15,7 @@ do for [fmt in "svg png"] {
   set xlabel "steps k"
   set ylabel "discrete-energy error envelope"
   set key top left font ",9"
-  plot for [i=1:6] data_dir . "/" . word(runs, i) . ".csv" using 1:($2 > 0 ? $2 : 1/0) with linespoints pt 7 ps 0.5 lw 1.5 lc rgb word(colors, i) title word(runs, i), \
+  plot for [i=1:6] data_dir . "/" . word(runs, i) . ".csv" using 1:($2 > 0 ? $2 : 1/0) with linespoints pt 7 ps 0.5 lw 1.5 lc rgb word(colors, i) title word(runs, i) noenhanced, \
        1e-16 * sqrt(x) with lines dt 2 lc rgb "#888888" title "∝ k^{1/2}", \
        1e-16 * x with lines dt 3 lc rgb "#444444" title "∝ k"
   unset output
