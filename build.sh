@@ -32,7 +32,7 @@ esac
 packages=(g++ cmake ninja-build pkg-config libeigen3-dev doctest-dev libcli11-dev
   nlohmann-json3-dev libfmt-dev libboost-dev libbenchmark-dev gnuplot-nox doxygen
   libjs-mathjax fonts-mathjax python3 libpng-dev libosmesa6-dev libegl-dev libopengl-dev
-  libqd-dev libmpfr-dev libgmp-dev)
+  libqd-dev libmpfr-dev libgmp-dev libginac-dev)
 if [ "$action" = test ]; then
   packages+=(chromium chromium-driver python3-selenium)
 fi

@@ -11,5 +11,7 @@ enum Exit : int { kOk = 0, kFailure = 1, kBadArgument = 2, kNumerical = 3 };
 
 /// Register `vibook run` on the app; the returned function executes it after parsing.
 std::function<int()> add_run_command(CLI::App& app);
+/// Register `vibook modified` (the symbolic modified-equation engine).
+std::function<int()> add_modified_command(CLI::App& app);
 
 }  // namespace vibook::cli

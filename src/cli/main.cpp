@@ -157,6 +157,7 @@ int main(int argc, char** argv) {
                  "DIR/ID/claims.json (written by `vibook figures`) instead of running them again");
 
   const auto run = cli::add_run_command(app);
+  const auto modified = cli::add_modified_command(app);
 
   try {
     app.parse(argc, argv);
@@ -181,6 +182,7 @@ int main(int argc, char** argv) {
     if (app.got_subcommand("figures")) return cmd_figures({}, figs_out);
     if (app.got_subcommand("claims"))
       return cmd_claims(cl_json, cl_json_out, cl_html_dir, cl_figures_dir);
+    if (app.got_subcommand("modified")) return modified();
     return run();
   } catch (const ArgumentError& e) {
     fmt::print(stderr, "vibook: error: {}\n", e.what());

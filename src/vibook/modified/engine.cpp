@@ -1,0 +1,537 @@
+// The modified-equation engine: Vermeeren 2017 §3.2 (direct route), §4.2 (13) and Lemma 6 /
+// Definition 6 (meshed modified Lagrangian), §4.6 (recursive elimination), Definition 8
+// (modified Lagrangian); the series Legendre transform of §5.2; Shen & Sun 2025 §4.
+#include "vibook/modified/engine.hpp"
+
+#include <array>
+#include <sstream>
+
+#include <fmt/format.h>
+
+#include "vibook/integrators/splitting.hpp"
+#include "vibook/kepler/kepler.hpp"
+#include "vibook/mechanics/discrete_lagrangian.hpp"
+#include "vibook/problems/problems.hpp"
+
+namespace vibook::modified {
+
+using GiNaC::numeric;
+using SubsMap = std::map<ex, Series, GiNaC::ex_is_less>;
+
+// ---------------------------------------------------------------------------------------------
+// Parsing
+// ---------------------------------------------------------------------------------------------
+
+Method parse_method(const std::string& s) {
+  if (s == "sv") return Method::sv;
+  if (s == "se") return Method::se;
+  if (s == "se-adjoint") return Method::se_adjoint;
+  if (s == "midpoint") return Method::midpoint;
+  if (s == "vi1") return Method::vi1;
+  if (s == "vi1-adjoint") return Method::vi1_adjoint;
+  if (s == "vi2") return Method::vi2;
+  throw ArgumentError("--method", fmt::format("unknown method '{}' (sv, se, se-adjoint, midpoint, "
+                                              "vi1, vi1-adjoint, vi2)",
+                                              s));
+}
+
+Potential parse_potential(const std::string& s) {
+  if (s == "generic") return Potential::generic;
+  if (s == "kepler") return Potential::kepler;
+  if (s == "pendulum") return Potential::pendulum;
+  if (s == "harmonic") return Potential::harmonic;
+  throw ArgumentError(
+      "--potential",
+      fmt::format("unknown potential '{}' (generic, kepler, pendulum, harmonic)", s));
+}
+
+Format parse_format(const std::string& s) {
+  if (s == "text") return Format::text;
+  if (s == "latex") return Format::latex;
+  if (s == "python") return Format::python;
+  throw ArgumentError("--format", fmt::format("unknown format '{}' (text, latex, python)", s));
+}
+
+// ---------------------------------------------------------------------------------------------
+// Discrete Lagrangians from the integrators' templates
+// ---------------------------------------------------------------------------------------------
+
+namespace {
+
+// Shen & Sun (3.3): the pieces φ^[i] of a splitting, as symbolic expressions.
+template <int N_, class Problem>
+struct WeightedExprSplit {
+  static constexpr int N = N_;
+  Problem problem;
+  std::array<ex, N_> weight;
+  template <class S>
+  S piece(int i, const Vec<S, N>& x) const {
+    return weight[i] * problem.potential(x);
+  }
+};
+template <int N_>
+struct AbstractSplit {
+  static constexpr int N = N_;
+  std::array<int, N_> family;
+  template <class S>
+  S piece(int i, const Vec<S, N>& x) const {
+    return AbstractPotential<N>{family[i]}.potential(x);
+  }
+};
+
+template <int N, class Problem, class Split>
+SymbolicDL build(Method m, const Problem& P, const Split& split, std::shared_ptr<JetSpace> J,
+                 const std::string& what) {
+  const auto L = mechanical_lagrangian(P);
+  switch (m) {
+    case Method::sv:
+      return symbolic_dl<N>(stormer_verlet_dl(L), J, "Störmer–Verlet, " + what);
+    case Method::se:
+      return symbolic_dl<N>(symplectic_euler_dl(L), J, "symplectic Euler (L(x1, v)), " + what);
+    case Method::se_adjoint:
+      return symbolic_dl<N>(symplectic_euler_adjoint_dl(L), J,
+                            "symplectic Euler adjoint (L(x0, v)), " + what);
+    case Method::midpoint:
+      return symbolic_dl<N>(midpoint_dl(L), J, "midpoint, " + what);
+    case Method::vi1:
+      return symbolic_dl<N>(splitting_dl(split), J, "VI-1 (3.3), " + what);
+    case Method::vi1_adjoint:
+      return symbolic_dl<N>(splitting_dl_adjoint(split), J, "VI-1 adjoint, " + what);
+    case Method::vi2:
+      break;
+  }
+  throw ArgumentError("--method",
+                      "vi2 composes two discrete Lagrangians over half steps (Shen & Sun (3.8)); "
+                      "the engine expands one discrete Lagrangian per step and does not derive it");
+}
+
+template <int N>
+SymbolicDL generic_dl(Method m) {
+  auto J = std::make_shared<JetSpace>(N);
+  const int U = J->add_family("U", "U");
+  AbstractSplit<N> split{};
+  for (int i = 0; i < N; ++i)
+    split.family[i] =
+        J->add_family(fmt::format("phi{}", i + 1), fmt::format("\\phi^{{[{}]}}", i + 1));
+  const std::string what =
+      fmt::format("generic potential, {} degree{} of freedom", N, N == 1 ? "" : "s");
+  if (m == Method::vi1 || m == Method::vi1_adjoint) {
+    // U is not used: the pieces are the potential.
+    return build<N>(m, AbstractPotential<N>{U}, split, J, what + " split as phi1 + phi2 + …");
+  }
+  return build<N>(m, AbstractPotential<N>{U}, split, J, what);
+}
+
+}  // namespace
+
+SymbolicDL make_discrete_lagrangian(Method m, Potential p, int dim,
+                                    std::optional<GiNaC::numeric> alpha) {
+  const ex a = alpha ? ex(*alpha) : ex(GiNaC::symbol("alpha", "\\alpha"));
+  switch (p) {
+    case Potential::generic:
+      if (dim == 1) return generic_dl<1>(m);
+      if (dim == 2) return generic_dl<2>(m);
+      if (dim == 3) return generic_dl<3>(m);
+      throw ArgumentError("--dim", fmt::format("{}: a generic potential has 1, 2 or 3 degrees of "
+                                               "freedom",
+                                               dim));
+    case Potential::kepler: {
+      if (dim != 2) throw ArgumentError("--dim", "the Kepler potential is two-dimensional");
+      auto J = std::make_shared<JetSpace>(2);
+      WeightedExprSplit<2, Kepler> split{Kepler{}, {a, 1 - a}};
+      return build<2>(m, Kepler{}, split, J, "Kepler U = −1/|x|");
+    }
+    case Potential::pendulum: {
+      if (dim != 1) throw ArgumentError("--dim", "the pendulum is one-dimensional");
+      auto J = std::make_shared<JetSpace>(1);
+      WeightedExprSplit<1, Pendulum> split{Pendulum{}, {ex(1)}};
+      return build<1>(m, Pendulum{}, split, J, "pendulum U = −cos x");
+    }
+    case Potential::harmonic: {
+      if (dim != 1) throw ArgumentError("--dim", "the harmonic oscillator is one-dimensional");
+      auto J = std::make_shared<JetSpace>(1);
+      WeightedExprSplit<1, HarmonicOscillator> split{HarmonicOscillator{}, {ex(1)}};
+      return build<1>(m, HarmonicOscillator{}, split, J, "harmonic oscillator U = x²/2");
+    }
+  }
+  throw ArgumentError("--potential", "unknown potential");
+}
+
+// ---------------------------------------------------------------------------------------------
+// The engine
+// ---------------------------------------------------------------------------------------------
+
+Engine::Engine(SymbolicDL dl, int order) : dl_(std::move(dl)), K_(order) {
+  if (order < 0 || order > max_order)
+    throw ArgumentError("--order",
+                        fmt::format("{}: supported orders are 0 to {}", order, max_order));
+}
+
+GiNaC::numeric Engine::mesh_coefficient(int i) {
+  // Vermeeren, Lemma 6: (2^{1−2i} − 1) B_{2i} / (2i)!
+  const numeric two_pow = i == 0 ? numeric(2) : numeric(1, 1L << (2 * i - 1));
+  return (two_pow - 1) * GiNaC::bernoulli(numeric(2 * i)) / GiNaC::factorial(numeric(2 * i));
+}
+
+// V (13): x(t ∓ h/2) expanded around the midpoint t, then L_disc = L_d / h.
+const std::vector<ex>& Engine::l_disc() {
+  if (!ldisc_.empty()) return ldisc_;
+  const JetSpace& J = *dl_.jets;
+  const int P0 = K_ + 4;
+  SubsMap subs;
+  for (int i = 0; i < J.dofs(); ++i) {
+    subs[dl_.q0[i]] = shifted_jet(J, i, numeric(-1, 2), P0);
+    subs[dl_.q1[i]] = shifted_jet(J, i, numeric(1, 2), P0);
+  }
+  subs[J.h()] = Series::h();
+  SeriesEvaluator eval(J, subs, K_ + 3);
+  const Series L = eval(dl_.Ld) / Series::h();
+  if (L.prec < K_ + 1) throw std::logic_error("L_disc expansion lost precision");
+  if (L.valuation() < 0)
+    throw NumericalError(
+        "the discrete Lagrangian is not consistent: L_d/h has negative powers of h");
+  for (int k = 0; k <= K_; ++k) ldisc_.push_back(GiNaC::expand(L.coeff(k)));
+  return ldisc_;
+}
+
+// V Definition 6 with the coefficients of Lemma 6.
+const std::vector<ex>& Engine::l_mesh() {
+  if (!lmesh_.empty()) return lmesh_;
+  const auto& l = l_disc();
+  const JetSpace& J = *dl_.jets;
+  // Dl[k][r] = D^r ℓ_k
+  std::vector<std::vector<ex>> Dl(K_ + 1);
+  for (int k = 0; k <= K_; ++k) Dl[k].push_back(l[k]);
+  for (int k = 0; k <= K_; ++k) {
+    ex m = 0;
+    for (int i = 0; 2 * i <= k; ++i) {
+      auto& row = Dl[k - 2 * i];
+      while (static_cast<int>(row.size()) <= 2 * i)
+        row.push_back(GiNaC::expand(J.total(row.back())));
+      m += mesh_coefficient(i) * row[2 * i];
+    }
+    lmesh_.push_back(GiNaC::expand(m));
+  }
+  return lmesh_;
+}
+
+std::vector<std::vector<ex>> Engine::euler_lagrange(const std::vector<ex>& L) const {
+  const JetSpace& J = *dl_.jets;
+  std::vector<std::vector<ex>> E;
+  for (const ex& Lk : L) {
+    std::vector<ex> row;
+    const int top = std::max(J.max_order(Lk), 0);
+    for (int j = 0; j < J.dofs(); ++j) {
+      ex acc = 0;
+      for (int l = 0; l <= top; ++l) {
+        ex term = J.partial(Lk, l, j);
+        for (int r = 0; r < l; ++r) term = GiNaC::expand(J.total(term));
+        acc += (l % 2 ? -1 : 1) * term;
+      }
+      row.push_back(GiNaC::expand(acc));
+    }
+    E.push_back(std::move(row));
+  }
+  return E;
+}
+
+std::vector<std::vector<Series>> Engine::jets_along(const std::vector<Series>& F, int top,
+                                                    int cap) const {
+  const JetSpace& J = *dl_.jets;
+  const int n = J.dofs();
+  std::vector<std::vector<Series>> out(std::max(top, 2) + 1);
+  out[2] = F;
+  for (int l = 3; l <= top; ++l) {
+    out[l].resize(n);
+    for (int i = 0; i < n; ++i) {
+      // D along ẍ = F: ∂/∂x · ẋ (with the chain rule) + ∂/∂ẋ · F.
+      const Series& S = out[l - 1][i];
+      Series A;
+      A.prec = S.prec;
+      A.low = S.low;
+      std::vector<Series> B(n);
+      for (int j = 0; j < n; ++j) {
+        B[j].prec = S.prec;
+        B[j].low = S.low;
+      }
+      for (const ex& c : S.c) {
+        ex a = 0;
+        for (int j = 0; j < n; ++j) a += J.partial(c, 0, j) * J.x(1, j);
+        A.c.push_back(GiNaC::expand(a));
+        for (int j = 0; j < n; ++j) B[j].c.push_back(GiNaC::expand(c.diff(J.x(1, j))));
+      }
+      Series r = A;
+      for (int j = 0; j < n; ++j) r = r + (B[j] * F[j]).truncated(cap);
+      out[l][i] = r.truncated(cap);
+    }
+  }
+  return out;
+}
+
+namespace {
+SubsMap jet_subs(const JetSpace& J, const std::vector<std::vector<Series>>& jets) {
+  SubsMap subs;
+  for (int l = 2; l < static_cast<int>(jets.size()); ++l)
+    for (int i = 0; i < J.dofs(); ++i) subs[J.x(l, i)] = jets[l][i];
+  return subs;
+}
+
+// Σ_k h^k (e[k] evaluated with subs), truncated at cap.
+Series shifted_sum(const JetSpace& J, const std::vector<ex>& e, const SubsMap& subs, int cap) {
+  SeriesEvaluator eval(J, subs, cap);
+  Series out = Series::constant(0).truncated(cap);
+  for (int k = 0; k < static_cast<int>(e.size()) && k < cap; ++k) {
+    Series term = eval(e[k]);
+    Series hk = Series::constant(1);
+    for (int r = 0; r < k; ++r) hk = hk * Series::h();
+    out = out + (hk * term).truncated(cap);
+  }
+  return out.truncated(cap);
+}
+
+GiNaC::matrix inverse_checked(const GiNaC::matrix& A, const char* what) {
+  const ex det = GiNaC::normal(A.determinant());
+  if (det.is_zero())
+    throw NumericalError(fmt::format("{} is singular: the Lagrangian is not regular", what));
+  GiNaC::matrix inv = A.inverse();
+  for (unsigned i = 0; i < inv.rows(); ++i)
+    for (unsigned j = 0; j < inv.cols(); ++j) inv(i, j) = GiNaC::normal(inv(i, j));
+  return inv;
+}
+}  // namespace
+
+Series Engine::along(const std::vector<ex>& e, const std::vector<std::vector<Series>>& jets,
+                     int cap) const {
+  return shifted_sum(*dl_.jets, e, jet_subs(*dl_.jets, jets), cap);
+}
+
+// V §4.6: recursive elimination. E_0 is affine in ẍ with matrix A = ∂E_0/∂ẍ; once ẍ = F is
+// known to O(h^m), the h^m coefficient r_m of E along F gives f_m = −A^{-1} r_m.
+std::vector<std::vector<ex>> Engine::solve_for_acceleration(const std::vector<std::vector<ex>>& E,
+                                                            int order) const {
+  const JetSpace& J = *dl_.jets;
+  const int n = J.dofs();
+  if (E.empty()) throw std::logic_error("empty Euler–Lagrange series");
+  for (const ex& e : E[0])
+    if (J.max_order(e) > 2)
+      throw NumericalError("the leading Euler–Lagrange term involves derivatives beyond ẍ");
+  GiNaC::matrix A(n, n);
+  for (int i = 0; i < n; ++i)
+    for (int j = 0; j < n; ++j) {
+      A(i, j) = GiNaC::expand(E[0][i].diff(J.x(2, j)));
+      for (int l = 0; l < n; ++l)
+        if (!vanishes(A(i, j).diff(J.x(2, l))))
+          throw NumericalError("the leading Euler–Lagrange term is not affine in ẍ");
+    }
+  const GiNaC::matrix Ainv = inverse_checked(A, "∂E_0/∂ẍ");
+  GiNaC::exmap zero;
+  for (int j = 0; j < n; ++j) zero[J.x(2, j)] = 0;
+  std::vector<Series> F(n);
+  std::vector<std::vector<ex>> f(1, std::vector<ex>(n));
+  for (int i = 0; i < n; ++i) {
+    ex acc = 0;
+    for (int j = 0; j < n; ++j) acc -= Ainv(i, j) * E[0][j].subs(zero);
+    f[0][i] = GiNaC::expand(acc);
+    F[i] = Series::constant(f[0][i]);  // the truncated ansatz, a polynomial in h
+  }
+  for (int m = 1; m <= order; ++m) {
+    if (m >= static_cast<int>(E.size())) throw std::logic_error("Euler–Lagrange series too short");
+    const int cap = m + 1;
+    int top = 2;
+    for (int k = 0; k <= m; ++k)
+      for (const ex& e : E[k]) top = std::max(top, J.max_order(e));
+    const auto jets = jets_along(F, top, cap);
+    std::vector<ex> r(n);
+    for (int i = 0; i < n; ++i) {
+      std::vector<ex> col;
+      for (int k = 0; k <= m; ++k) col.push_back(E[k][i]);
+      const Series R = along(col, jets, cap);
+      for (int k = 0; k < m; ++k)
+        if (!vanishes(R.coeff(k)))
+          throw std::logic_error(fmt::format("recursive elimination: h^{} term left over", k));
+      r[i] = R.coeff(m);
+    }
+    f.emplace_back(n);
+    for (int i = 0; i < n; ++i) {
+      ex acc = 0;
+      for (int j = 0; j < n; ++j) acc -= Ainv(i, j) * r[j];
+      f[m][i] = GiNaC::expand(acc);
+      F[i].c.push_back(f[m][i]);
+    }
+  }
+  return f;
+}
+
+const std::vector<std::vector<ex>>& Engine::modified_equation() {
+  if (f_.empty()) f_ = solve_for_acceleration(euler_lagrange(l_mesh()), K_);
+  return f_;
+}
+
+// V §3.2: Ψ = D2 L_d(x(t−h), x(t)) + D1 L_d(x(t), x(t+h)), divided by h (vibook's scaling).
+std::vector<std::vector<ex>> Engine::modified_equation_direct() {
+  const JetSpace& J = *dl_.jets;
+  const int n = J.dofs();
+  const int P0 = K_ + 5;
+  SubsMap back, fwd;
+  for (int i = 0; i < n; ++i) {
+    back[dl_.q0[i]] = shifted_jet(J, i, -1, P0);
+    back[dl_.q1[i]] = shifted_jet(J, i, 0, P0);
+    fwd[dl_.q0[i]] = shifted_jet(J, i, 0, P0);
+    fwd[dl_.q1[i]] = shifted_jet(J, i, 1, P0);
+  }
+  back[J.h()] = Series::h();
+  fwd[J.h()] = Series::h();
+  std::vector<std::vector<ex>> E(K_ + 1, std::vector<ex>(n));
+  for (int i = 0; i < n; ++i) {
+    SeriesEvaluator eb(J, back, K_ + 3), ef(J, fwd, K_ + 3);
+    const Series psi = (eb(dl_.Ld.diff(dl_.q1[i])) + ef(dl_.Ld.diff(dl_.q0[i]))) / Series::h();
+    if (psi.prec < K_ + 1)
+      throw std::logic_error("discrete Euler–Lagrange expansion lost precision");
+    if (psi.valuation() < 0)
+      throw NumericalError("the discrete Euler–Lagrange expression has negative powers of h");
+    for (int k = 0; k <= K_; ++k) E[k][i] = GiNaC::expand(psi.coeff(k));
+  }
+  return solve_for_acceleration(E, K_);
+}
+
+// V Definition 8: L_mod,K = T_K(L_mesh with x^{(ℓ)}, ℓ ≥ 2, replaced along the modified
+// equation).
+const std::vector<ex>& Engine::l_mod() {
+  if (!lmod_.empty()) return lmod_;
+  const auto& m = l_mesh();
+  const auto& f = modified_equation();
+  const JetSpace& J = *dl_.jets;
+  const int n = J.dofs();
+  // The modified equation truncated after h^{K−1} (a polynomial in h): what it leaves out
+  // enters L_mesh at h^{K+1} at the earliest.
+  const int terms = std::max(K_, 1);
+  std::vector<Series> F(n);
+  for (int i = 0; i < n; ++i)
+    for (int k = 0; k < terms; ++k) F[i].c.push_back(f[k][i]);
+  int top = 2;
+  for (const ex& e : m) top = std::max(top, J.max_order(e));
+  const Series L = along(m, jets_along(F, top, K_ + 1), K_ + 1);
+  for (int k = 0; k <= K_; ++k) lmod_.push_back(GiNaC::expand(L.coeff(k)));
+  return lmod_;
+}
+
+// Series Legendre transform: p = ∂L/∂ẋ solved for ẋ order by order, H = p·ẋ − L.
+std::vector<ex> Engine::h_mod() {
+  const auto& L = l_mod();
+  const JetSpace& J = *dl_.jets;
+  const int n = J.dofs();
+  std::vector<std::vector<ex>> P(L.size(), std::vector<ex>(n));
+  for (std::size_t k = 0; k < L.size(); ++k)
+    for (int j = 0; j < n; ++j) P[k][j] = GiNaC::expand(L[k].diff(J.x(1, j)));
+  GiNaC::matrix M(n, n);
+  for (int i = 0; i < n; ++i)
+    for (int j = 0; j < n; ++j) {
+      M(i, j) = GiNaC::expand(P[0][i].diff(J.x(1, j)));
+      for (int l = 0; l < n; ++l)
+        if (!vanishes(M(i, j).diff(J.x(1, l))))
+          throw NumericalError(
+              "series Legendre transform needs a kinetic energy quadratic in ẋ at order h^0");
+    }
+  const GiNaC::matrix Minv = inverse_checked(M, "∂²L/∂ẋ²");
+  GiNaC::exmap zero;
+  for (int j = 0; j < n; ++j) zero[J.x(1, j)] = 0;
+  std::vector<Series> V(n);
+  for (int i = 0; i < n; ++i) {
+    ex acc = 0;
+    for (int j = 0; j < n; ++j) acc += Minv(i, j) * (J.p(j) - P[0][j].subs(zero));
+    V[i] = Series::constant(GiNaC::expand(acc));  // truncated ansatz, a polynomial in h
+  }
+  auto vsubs = [&] {
+    SubsMap s;
+    for (int j = 0; j < n; ++j) s[J.x(1, j)] = V[j];
+    return s;
+  };
+  for (int m = 1; m <= K_; ++m) {
+    const SubsMap s = vsubs();
+    std::vector<ex> r(n);
+    for (int i = 0; i < n; ++i) {
+      std::vector<ex> col;
+      for (int k = 0; k <= m; ++k) col.push_back(P[k][i]);
+      r[i] = shifted_sum(J, col, s, m + 1).coeff(m);
+    }
+    for (int i = 0; i < n; ++i) {
+      ex acc = 0;
+      for (int j = 0; j < n; ++j) acc -= Minv(i, j) * r[j];
+      V[i].c.push_back(GiNaC::expand(acc));
+    }
+  }
+  const SubsMap s = vsubs();
+  Series H = Series::constant(0);
+  for (int j = 0; j < n; ++j) H = H + Series::constant(J.p(j)) * V[j];
+  H = (H - shifted_sum(J, L, s, K_ + 1)).truncated(K_ + 1);
+  std::vector<ex> out;
+  for (int k = 0; k <= K_; ++k) out.push_back(GiNaC::expand(H.coeff(k)));
+  return out;
+}
+
+// ---------------------------------------------------------------------------------------------
+// Output
+// ---------------------------------------------------------------------------------------------
+
+namespace {
+void python_numeric(const numeric& x, const GiNaC::print_python& c, unsigned) {
+  std::ostringstream os;
+  if (x.is_integer()) {
+    os << GiNaC::dflt << x;
+  } else if (x.is_rational()) {
+    os << "Rational(" << GiNaC::dflt << x.numer() << ", " << x.denom() << ")";
+  } else {
+    os << GiNaC::dflt << x;
+  }
+  c.s << os.str();
+}
+}  // namespace
+
+std::string format_series(const std::vector<ex>& c, const GiNaC::symbol& h, Format f) {
+  static const bool registered = [] {
+    GiNaC::set_print_func<numeric, GiNaC::print_python>(python_numeric);
+    return true;
+  }();
+  (void)registered;
+  std::ostringstream os;
+  const int K = static_cast<int>(c.size()) - 1;
+  bool first = true;
+  for (int k = 0; k <= K; ++k) {
+    if (c[k].is_zero()) continue;
+    switch (f) {
+      case Format::text:
+        os << "h^" << k << ": " << GiNaC::dflt << c[k] << "\n";
+        break;
+      case Format::latex:
+        if (!first) os << " + ";
+        if (k == 0)
+          os << "\\left(" << GiNaC::latex << c[k] << "\\right)";
+        else
+          os << "h^{" << k << "}\\left(" << GiNaC::latex << c[k] << "\\right)";
+        break;
+      case Format::python:
+        if (!first) os << " + ";
+        if (k == 0)
+          os << "(" << GiNaC::python << c[k] << ")";
+        else
+          os << h.get_name() << "**" << k << "*(" << GiNaC::python << c[k] << ")";
+        break;
+    }
+    first = false;
+  }
+  if (first) os << (f == Format::text ? "0\n" : "0");
+  switch (f) {
+    case Format::text:
+      os << "+ O(h^" << K + 1 << ")\n";
+      break;
+    case Format::latex:
+      os << " + \\mathcal{O}(h^{" << K + 1 << "})";
+      break;
+    case Format::python:
+      os << "  # + O(" << h.get_name() << "**" << K + 1 << ")";
+      break;
+  }
+  return os.str();
+}
+
+}  // namespace vibook::modified

@@ -1,0 +1,145 @@
+/// \file engine.hpp
+/// \brief The modified-equation engine (Vermeeren 2017, §3–5; Shen & Sun 2025, §4): from a
+/// discrete Lagrangian, written once as the C++ template the integrators use, to the
+/// expansion L_disc([x], h) (V (13)), the meshed modified Lagrangian (V Def. 6), the modified
+/// equation (V §4.6, and V §3.2 as a cross-check), the modified Lagrangian L_mod,k (V Def. 8)
+/// and the modified Hamiltonian (series Legendre transform).
+///
+/// Every result is a list of coefficients of h^0, h^1, …, h^K: scalars in the jet symbols
+/// x1…xN, v1…vN (ẋ), x1_2 (ẍ1), … and the derivative symbols U, U_1, U_11, … of an abstract
+/// potential; vectors (one entry per degree of freedom) for equations.
+///
+/// Example (Störmer–Verlet, generic 1-DOF potential, Vermeeren (22)):
+/// \code
+///   using namespace vibook::modified;
+///   Engine E(make_discrete_lagrangian(Method::sv, Potential::generic, 1), 4);
+///   auto f = E.modified_equation();  // f[0][0] = -U_1, f[2][0] = (U_111 v1^2 - U_11 U_1)/12
+/// \endcode
+#pragma once
+
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "vibook/core/errors.hpp"
+#include "vibook/core/types.hpp"
+#include "vibook/modified/ginac_eigen.hpp"
+#include "vibook/modified/jets.hpp"
+#include "vibook/modified/series.hpp"
+
+namespace vibook::modified {
+
+/// Highest order in h the engine accepts (the command line checks it).
+inline constexpr int max_order = 10;
+
+/// A discrete Lagrangian as a symbolic expression in (q0, q1, h), in vibook's scaling
+/// L_d ≈ h·L (Vermeeren's L_disc is L_d / h).
+struct SymbolicDL {
+  std::shared_ptr<JetSpace> jets;
+  std::vector<GiNaC::symbol> q0, q1;
+  ex Ld;
+  std::string description;
+};
+
+/// Evaluate a discrete-Lagrangian template (any callable `dl(q0, q1, h)` generic in its
+/// scalar, as written for the integrators) on GiNaC symbols. Floating-point literals in the
+/// template become the rationals they represent.
+template <int N, class DL>
+SymbolicDL symbolic_dl(const DL& dl, std::shared_ptr<JetSpace> jets, std::string description) {
+  SymbolicDL out;
+  out.jets = std::move(jets);
+  out.description = std::move(description);
+  Vec<ex, N> a, b;
+  for (int i = 0; i < N; ++i) {
+    out.q0.emplace_back(N == 1 ? "q0" : "q0_" + std::to_string(i + 1));
+    out.q1.emplace_back(N == 1 ? "q1" : "q1_" + std::to_string(i + 1));
+    a(i) = out.q0.back();
+    b(i) = out.q1.back();
+  }
+  const ex h = out.jets->h();
+  out.Ld = exact_rationals(dl(a, b, h));
+  return out;
+}
+
+/// An abstract potential U_f(q) of N degrees of freedom for the templates' `potential(q)`.
+template <int N>
+struct AbstractPotential {
+  static constexpr int N_ = N;
+  int family = 0;
+  template <class S>
+  S potential(const Vec<S, N>& q) const {
+    std::vector<ex> args;
+    for (int i = 0; i < N; ++i) args.push_back(q(i));
+    return abstract_call(family, args);
+  }
+};
+
+enum class Method { sv, se, se_adjoint, midpoint, vi1, vi1_adjoint, vi2 };
+enum class Potential { generic, kepler, pendulum, harmonic };
+
+/// "sv", "se", … ; ArgumentError("--method") otherwise.
+Method parse_method(const std::string& s);
+/// "generic", "kepler", …; ArgumentError("--potential") otherwise.
+Potential parse_potential(const std::string& s);
+
+/// The discrete Lagrangian of a method on a mechanical Lagrangian ½|v|² − U(q), built from
+/// the integrators' templates (discrete_lagrangian.hpp, splitting.hpp). Kepler is 2-D; the
+/// pendulum and the oscillator 1-D; a generic potential has `dim` degrees of freedom (1–3).
+/// For vi1/vi1-adjoint with a generic potential the pieces φ^[i] are abstract functions
+/// phi1, phi2, …; with a concrete one they are α·U and (1 − α)·U with `alpha` (a symbol
+/// named alpha when not given). vi2 is not supported (ArgumentError).
+SymbolicDL make_discrete_lagrangian(Method m, Potential p, int dim,
+                                    std::optional<GiNaC::numeric> alpha = std::nullopt);
+
+/// Derivations to order K in h, computed on demand and cached.
+class Engine {
+ public:
+  /// `order` ≥ 0 and ≤ max_order (ArgumentError("--order") otherwise).
+  Engine(SymbolicDL dl, int order);
+
+  int order() const { return K_; }
+  const JetSpace& jets() const { return *dl_.jets; }
+  const SymbolicDL& discrete_lagrangian() const { return dl_; }
+
+  /// V (13): L_disc([x], h) = Σ h^k ℓ_k, in Vermeeren's scaling (L_disc = L_d / h).
+  const std::vector<ex>& l_disc();
+  /// V Def. 6: L_mesh = Σ_i (2^{1−2i} − 1) B_{2i}/(2i)! h^{2i} D^{2i} L_disc.
+  const std::vector<ex>& l_mesh();
+  /// The modified equation ẍ = Σ h^k f_k(x, ẋ) from the Euler–Lagrange equation of L_mesh
+  /// (V §4.6); f[k][i] is the h^k coefficient of component i.
+  const std::vector<std::vector<ex>>& modified_equation();
+  /// The same from the Taylor expansion of the discrete Euler–Lagrange equation (V §3.2).
+  std::vector<std::vector<ex>> modified_equation_direct();
+  /// V Def. 8: L_mod,K(x, ẋ, h).
+  const std::vector<ex>& l_mod();
+  /// Series Legendre transform of L_mod,K: H_mod,K(x, p, h) in the symbols x_i, p_i.
+  std::vector<ex> h_mod();
+
+  /// Euler–Lagrange expression Σ_ℓ (−1)^ℓ D^ℓ ∂L/∂x^{(ℓ)} of L = Σ h^k L[k] (any order).
+  std::vector<std::vector<ex>> euler_lagrange(const std::vector<ex>& L) const;
+  /// Solve E = Σ h^k E[k] = 0 for ẍ to order `order` by recursive elimination (V §4.6).
+  std::vector<std::vector<ex>> solve_for_acceleration(const std::vector<std::vector<ex>>& E,
+                                                      int order) const;
+  /// The Lagrange coefficient (2^{1−2i} − 1) B_{2i}/(2i)! of Lemma 6.
+  static GiNaC::numeric mesh_coefficient(int i);
+
+ private:
+  SymbolicDL dl_;
+  int K_;
+  std::vector<ex> ldisc_, lmesh_, lmod_;
+  std::vector<std::vector<ex>> f_;
+  /// Series of x^{(ℓ)}, ℓ = 2…top, on solutions of ẍ = F (F to precision F.prec).
+  std::vector<std::vector<Series>> jets_along(const std::vector<Series>& F, int top, int cap) const;
+  /// Σ h^k (e[k] with x^{(ℓ)} → jets), truncated at cap.
+  Series along(const std::vector<ex>& e, const std::vector<std::vector<Series>>& jets,
+               int cap) const;
+};
+
+/// Output formats of `vibook modified`.
+enum class Format { text, latex, python };
+Format parse_format(const std::string& s);
+/// Σ h^k c[k] + O(h^{K+1}) as text, LaTeX or Python (SymPy) source.
+std::string format_series(const std::vector<ex>& c, const GiNaC::symbol& h, Format f);
+
+}  // namespace vibook::modified

@@ -1,0 +1,76 @@
+/// \file jets.hpp
+/// \brief Jet space of the modified-equation engine (Vermeeren 2017, §3–4): the derivatives
+/// x, ẋ, ẍ, … of a curve as independent GiNaC symbols, abstract functions whose partial
+/// derivatives at x are symbols, and the operators ∂/∂x^{(ℓ)} and the total time derivative
+/// D = Σ x^{(ℓ+1)} ∂/∂x^{(ℓ)}.
+#pragma once
+
+#include <map>
+#include <string>
+#include <vector>
+
+#include <ginac/ginac.h>
+
+namespace vibook::modified {
+
+using GiNaC::ex;
+
+/// An abstract function U(x_1, …, x_N) inside a discrete Lagrangian expression:
+/// `abstract_fn(family, x_1, …, x_N)`. The engine never looks inside it; its partial
+/// derivatives at the expansion point become symbols (JetSpace::derivative).
+ex abstract_call(int family, const std::vector<ex>& args);
+/// True if e is an abstract_call or a derivative of one; sets family, arguments and the
+/// multi-index of the derivative (sorted, 0-based degrees of freedom).
+bool match_abstract(const ex& e, int& family, std::vector<ex>& args, std::vector<int>& index);
+
+/// Jets of an N-degree-of-freedom curve, and the derivative symbols of abstract functions.
+class JetSpace {
+ public:
+  explicit JetSpace(int dofs);
+  int dofs() const { return n_; }
+
+  /// x_i^{(order)}: x1, v1 (ẋ1), x1_2 (ẍ1), x1_3, … (names valid in Python).
+  GiNaC::symbol x(int order, int i) const;
+  /// The momentum p_i of the Legendre transform.
+  GiNaC::symbol p(int i) const;
+  /// The step size h.
+  const GiNaC::symbol& h() const { return h_; }
+
+  /// Register an abstract function family ("U", "phi1", …); returns its id.
+  int add_family(const std::string& name, const std::string& tex);
+  int families() const { return static_cast<int>(families_.size()); }
+  const std::string& family_name(int f) const { return families_.at(f).name; }
+  /// The symbol for ∂^{|I|} U_f / ∂x_{I} at x (I sorted; empty = the value).
+  GiNaC::symbol derivative(int family, std::vector<int> index) const;
+
+  /// ∂e/∂x_i^{(order)}; for order 0 the chain rule through the abstract derivatives.
+  ex partial(const ex& e, int order, int i) const;
+  /// The total time derivative D e, on the free jets (every x^{(ℓ)} independent).
+  ex total(const ex& e) const;
+  /// Highest jet order that occurs in e (0 if none beyond x; −1 if e has no x at all).
+  int max_order(const ex& e) const;
+  /// Highest jet order created so far.
+  int created_order() const { return static_cast<int>(jets_.size()) - 1; }
+
+ private:
+  struct Family {
+    std::string name, tex;
+  };
+  int n_;
+  GiNaC::symbol h_;
+  mutable std::vector<std::vector<GiNaC::symbol>> jets_;
+  mutable std::vector<GiNaC::symbol> p_;
+  std::vector<Family> families_;
+  struct Key {
+    int family;
+    std::vector<int> index;
+    bool operator<(const Key& o) const {
+      return family != o.family ? family < o.family : index < o.index;
+    }
+  };
+  mutable std::map<Key, GiNaC::symbol> deriv_;
+  mutable std::vector<std::pair<GiNaC::symbol, Key>> deriv_list_;
+  void ensure_order(int order) const;
+};
+
+}  // namespace vibook::modified

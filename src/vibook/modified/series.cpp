@@ -1,0 +1,351 @@
+// Truncated power series in h with GiNaC coefficients: the arithmetic behind the expansion
+// (13) of Vermeeren 2017 and every later step of the modified-equation engine.
+#include "vibook/modified/series.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <functional>
+#include <sstream>
+#include <stdexcept>
+
+#include <fmt/format.h>
+
+namespace vibook::modified {
+
+using GiNaC::numeric;
+
+namespace {
+
+// The truncation used where an exact series would otherwise be infinite (1/(1 + h), …).
+thread_local int g_cap = 16;
+
+int clamp_prec(long long p) { return static_cast<int>(std::min<long long>(p, Series::exact)); }
+
+// Drop stored terms at or beyond prec, and zero terms at the low end.
+Series& normalise(Series& s) {
+  const long long len = static_cast<long long>(s.prec) - s.low;
+  if (len < static_cast<long long>(s.c.size())) s.c.resize(std::max<long long>(len, 0));
+  std::size_t z = 0;
+  while (z < s.c.size() && s.c[z].is_zero()) ++z;
+  if (z > 0) {
+    s.c.erase(s.c.begin(), s.c.begin() + static_cast<std::ptrdiff_t>(z));
+    s.low += static_cast<int>(z);
+  }
+  if (s.c.empty()) s.low = 0;
+  return s;
+}
+
+// Σ_m d(m)/m! δ^m with δ = a − a0: the Taylor series of a function about the constant term.
+Series compose(const Series& a, const std::function<ex(int)>& d) {
+  if (a.valuation() < 0) throw std::domain_error("function of a series with negative powers of h");
+  Series delta = a;
+  if (delta.low == 0 && !delta.c.empty()) delta.c[0] = 0;
+  normalise(delta);
+  if (delta.c.empty() && a.prec == Series::exact) return Series::constant(d(0));
+  const int top = std::min(a.prec, g_cap);
+  Series out = Series::constant(d(0)).truncated(top);
+  Series power = Series::constant(1);
+  numeric factorial = 1;
+  for (int m = 1; m < top; ++m) {
+    power = (power * delta).truncated(top);
+    factorial *= m;
+    if (power.valuation() >= top) break;
+    out = out + Series::constant(d(m) / factorial) * power;
+  }
+  return out.truncated(top);
+}
+
+}  // namespace
+
+Series Series::constant(const ex& value) {
+  Series s;
+  s.c = {value};
+  return normalise(s);
+}
+
+Series Series::h() {
+  Series s;
+  s.c = {ex(1)};
+  s.low = 1;
+  return s;
+}
+
+ex Series::coeff(int k) const {
+  if (k >= prec)
+    throw std::logic_error(fmt::format("series coefficient h^{} beyond O(h^{})", k, prec));
+  const long long idx = static_cast<long long>(k) - low;
+  return idx >= 0 && idx < static_cast<long long>(c.size()) ? c[idx] : ex(0);
+}
+
+int Series::valuation() const {
+  for (std::size_t k = 0; k < c.size(); ++k)
+    if (!c[k].is_zero() && low + static_cast<int>(k) < prec) return low + static_cast<int>(k);
+  return prec;
+}
+
+Series Series::truncated(int p) const {
+  Series s = *this;
+  s.prec = std::min(prec, p);
+  return normalise(s);
+}
+
+Series operator+(const Series& a, const Series& b) {
+  Series s;
+  s.prec = std::min(a.prec, b.prec);
+  if (a.c.empty()) {
+    s.c = b.c;
+    s.low = b.low;
+  } else if (b.c.empty()) {
+    s.c = a.c;
+    s.low = a.low;
+  } else {
+    s.low = std::min(a.low, b.low);
+    const int hi =
+        std::max(a.low + static_cast<int>(a.c.size()), b.low + static_cast<int>(b.c.size()));
+    const int top = std::min(hi, s.prec);
+    for (int k = s.low; k < top; ++k) {
+      const long long ia = static_cast<long long>(k) - a.low,
+                      ib = static_cast<long long>(k) - b.low;
+      ex x = 0;
+      if (ia >= 0 && ia < static_cast<long long>(a.c.size())) x += a.c[ia];
+      if (ib >= 0 && ib < static_cast<long long>(b.c.size())) x += b.c[ib];
+      s.c.push_back(x);
+    }
+  }
+  return normalise(s);
+}
+
+Series operator-(const Series& a) {
+  Series s = a;
+  for (auto& x : s.c) x = -x;
+  return s;
+}
+
+Series operator-(const Series& a, const Series& b) { return a + (-b); }
+
+Series operator*(const Series& a, const Series& b) {
+  Series s;
+  if (a.c.empty() || b.c.empty()) {
+    const int va = a.valuation(), vb = b.valuation();
+    s.prec = clamp_prec(
+        std::min(static_cast<long long>(a.prec) + vb, static_cast<long long>(b.prec) + va));
+    return s;
+  }
+  const int va = a.low, vb = b.low;  // normalised: the first stored term is not zero
+  s.prec = clamp_prec(
+      std::min(static_cast<long long>(a.prec) + vb, static_cast<long long>(b.prec) + va));
+  s.low = va + vb;
+  const long long len = std::min<long long>(static_cast<long long>(a.c.size() + b.c.size()) - 1,
+                                            static_cast<long long>(s.prec) - s.low);
+  for (long long k = 0; k < len; ++k) {
+    ex acc = 0;
+    for (long long i = 0; i <= k && i < static_cast<long long>(a.c.size()); ++i) {
+      const long long j = k - i;
+      if (j >= static_cast<long long>(b.c.size()) || a.c[i].is_zero() || b.c[j].is_zero()) continue;
+      acc += GiNaC::expand(a.c[i] * b.c[j]);
+    }
+    s.c.push_back(acc);
+  }
+  return normalise(s);
+}
+
+Series operator/(const Series& a, const Series& b) {
+  Series den = b;
+  // The leading coefficient must really be non-zero (not only syntactically).
+  while (!den.c.empty() && vanishes(den.c.front())) {
+    den.c.erase(den.c.begin());
+    ++den.low;
+  }
+  if (den.c.empty() || den.low >= den.prec) throw std::domain_error("series division by O(h^p)");
+  const int v = den.low;
+  den.low = 0;
+  if (den.prec != Series::exact) den.prec -= v;
+  const ex d0 = den.c.front();
+  const Series inv = compose(den, [&](int m) {
+    // m-th derivative of 1/y at d0: (−1)^m m! / d0^{m+1}
+    numeric f = 1;
+    for (int j = 2; j <= m; ++j) f *= j;
+    return ex((m % 2 ? -1 : 1) * f) * GiNaC::pow(d0, -(m + 1));
+  });
+  Series out = a * inv;
+  out.low -= v;
+  if (out.prec != Series::exact) out.prec -= v;
+  return normalise(out);
+}
+
+Series pow(const Series& a, const numeric& r) {
+  if (r.is_integer()) {
+    const long n = r.to_long();
+    if (n < 0) return Series::constant(1) / pow(a, numeric(-n));
+    Series out = Series::constant(1), base = a;
+    for (long k = n; k > 0; k >>= 1) {
+      if (k & 1) out = out * base;
+      if (k > 1) base = base * base;
+    }
+    return out;
+  }
+  const ex a0 = a.coeff(0);
+  if (vanishes(a0)) throw std::domain_error("non-integer power of a series without constant term");
+  return compose(a, [&](int m) {
+    ex f = 1;
+    for (int j = 0; j < m; ++j) f *= (r - j);
+    return f * GiNaC::pow(a0, r - m);
+  });
+}
+
+Series shifted_jet(const JetSpace& J, int i, const ex& s, int p) {
+  Series out;
+  out.prec = p;
+  numeric factorial = 1;
+  for (int k = 0; k < p; ++k) {
+    if (k > 0) factorial *= k;
+    const ex sk = k == 0 ? ex(1) : GiNaC::pow(s, k);
+    out.c.push_back(GiNaC::expand(sk / factorial * J.x(k, i)));
+  }
+  return out;
+}
+
+bool vanishes(const ex& e) {
+  const ex x = GiNaC::expand(e);
+  if (x.is_zero()) return true;
+  return GiNaC::normal(x).is_zero();
+}
+
+ex exact_rationals(const ex& e) {
+  struct Map : GiNaC::map_function {
+    ex operator()(const ex& x) override {
+      if (GiNaC::is_a<numeric>(x)) {
+        const numeric& n = GiNaC::ex_to<numeric>(x);
+        if (n.is_rational() || !n.is_real()) return x;
+        int e2 = 0;
+        const double m = std::frexp(n.to_double(), &e2);
+        const auto mant = static_cast<std::int64_t>(std::ldexp(m, 53));
+        return numeric(static_cast<long>(mant)) * GiNaC::pow(numeric(2), numeric(e2 - 53));
+      }
+      return x.map(*this);
+    }
+  } map;
+  return map(e);
+}
+
+SeriesEvaluator::SeriesEvaluator(const JetSpace& J, std::map<ex, Series, GiNaC::ex_is_less> subs,
+                                 int cap)
+    : J_(J), subs_(std::move(subs)), cap_(cap) {}
+
+Series SeriesEvaluator::operator()(const ex& e) {
+  const int saved = g_cap;
+  g_cap = cap_;
+  try {
+    Series s = eval(e);
+    g_cap = saved;
+    return s;
+  } catch (...) {
+    g_cap = saved;
+    throw;
+  }
+}
+
+bool SeriesEvaluator::depends(const ex& e) const {
+  return std::any_of(subs_.begin(), subs_.end(), [&](const auto& kv) { return e.has(kv.first); });
+}
+
+Series SeriesEvaluator::eval(const ex& e) {
+  if (auto it = memo_.find(e); it != memo_.end()) return it->second;
+  Series out;
+  int family = 0;
+  std::vector<ex> args;
+  std::vector<int> index;
+  if (match_abstract(e, family, args, index)) {
+    out = abstract(family, args, index);
+  } else if (!depends(e)) {
+    out = Series::constant(e);
+  } else if (GiNaC::is_a<GiNaC::symbol>(e)) {
+    out = subs_.at(e);
+  } else if (GiNaC::is_a<GiNaC::add>(e)) {
+    out = Series::constant(0);
+    for (std::size_t k = 0; k < e.nops(); ++k) out = out + eval(e.op(k));
+  } else if (GiNaC::is_a<GiNaC::mul>(e)) {
+    // Factors with negative integer exponents (the 1/h of a difference quotient) divide the
+    // product of the others, so that h^{-1}·(x1 − x0) cancels before it is formed.
+    Series num = Series::constant(1), den = Series::constant(1);
+    for (std::size_t k = 0; k < e.nops(); ++k) {
+      const ex f = e.op(k);
+      if (GiNaC::is_a<GiNaC::power>(f) && GiNaC::is_a<numeric>(f.op(1)) &&
+          GiNaC::ex_to<numeric>(f.op(1)).is_integer() &&
+          GiNaC::ex_to<numeric>(f.op(1)).is_negative() && depends(f)) {
+        den = (den * pow(eval(f.op(0)), -GiNaC::ex_to<numeric>(f.op(1)))).truncated(cap_ + 4);
+      } else {
+        num = (num * eval(f)).truncated(cap_ + 4);
+      }
+    }
+    out = num / den;
+  } else if (GiNaC::is_a<GiNaC::power>(e)) {
+    const ex expo = e.op(1);
+    if (!GiNaC::is_a<numeric>(expo))
+      throw std::domain_error("series of a power with a non-numeric exponent");
+    out = pow(eval(e.op(0)), GiNaC::ex_to<numeric>(expo));
+  } else if (GiNaC::is_a<GiNaC::function>(e) && e.nops() == 1) {
+    out = unary(e, eval(e.op(0)));
+  } else {
+    std::ostringstream os;
+    os << e;
+    throw std::domain_error("no series rule for " + os.str());
+  }
+  out = out.truncated(cap_);
+  memo_.emplace(e, out);
+  return out;
+}
+
+Series SeriesEvaluator::unary(const ex& e, const Series& arg) {
+  const GiNaC::symbol y("y");
+  const ex fy = e.subs(e.op(0) == y);
+  const ex a0 = arg.coeff(0);
+  return compose(arg, [&](int m) { return fy.diff(y, m).subs(y == a0); });
+}
+
+Series SeriesEvaluator::abstract(int family, const std::vector<ex>& args,
+                                 const std::vector<int>& index) {
+  const int n = static_cast<int>(args.size());
+  if (n != J_.dofs()) throw std::logic_error("abstract function of the wrong dimension");
+  std::vector<Series> delta(n);
+  int top = cap_;
+  for (int i = 0; i < n; ++i) {
+    delta[i] = eval(args[i]);
+    if (!vanishes(delta[i].coeff(0) - J_.x(0, i)))
+      throw std::domain_error("abstract potential expanded away from the jet point x");
+    delta[i] = delta[i] - Series::constant(J_.x(0, i));
+    top = std::min(top, delta[i].prec);
+  }
+  // powers[i][k] = δ_i^k / k!
+  std::vector<std::vector<Series>> powers(n);
+  for (int i = 0; i < n; ++i) {
+    powers[i].push_back(Series::constant(1));
+    for (int k = 1; k < top; ++k)
+      powers[i].push_back((powers[i].back() * delta[i] / Series::constant(k)).truncated(top));
+  }
+  Series out = Series::constant(0).truncated(top);
+  std::vector<int> alpha(n, 0);
+  // Σ over multi-indices α with |α| < top of U_{index+α} Π δ_i^{α_i}/α_i!
+  std::function<void(int, int)> rec = [&](int i, int left) {
+    if (i == n) {
+      std::vector<int> idx = index;
+      Series term = Series::constant(1);
+      for (int j = 0; j < n; ++j) {
+        for (int r = 0; r < alpha[j]; ++r) idx.push_back(j);
+        if (alpha[j] > 0) term = (term * powers[j][alpha[j]]).truncated(top);
+      }
+      out = out + Series::constant(J_.derivative(family, idx)) * term;
+      return;
+    }
+    for (int a = 0; a <= left; ++a) {
+      alpha[i] = a;
+      rec(i + 1, left - a);
+    }
+    alpha[i] = 0;
+  };
+  rec(0, top - 1);
+  return out.truncated(top);
+}
+
+}  // namespace vibook::modified
