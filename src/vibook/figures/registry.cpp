@@ -32,7 +32,8 @@ const std::vector<Check>& registry() {
                                          shen_sun_fig2(),
                                          shen_sun_fig345(),
                                          shen_sun_fig6(),
-                                         shen_sun_work_precision()};
+                                         shen_sun_work_precision(),
+                                         check_modified()};
   return all;
 }
 

@@ -235,6 +235,18 @@ std::vector<std::vector<ex>> Engine::euler_lagrange(const std::vector<ex>& L) co
   return E;
 }
 
+std::vector<std::vector<ex>> Engine::euler_lagrange_two_term(const std::vector<ex>& L) const {
+  const JetSpace& J = *dl_.jets;
+  std::vector<std::vector<ex>> E;
+  for (const ex& Lk : L) {
+    std::vector<ex> row;
+    for (int j = 0; j < J.dofs(); ++j)
+      row.push_back(GiNaC::expand(J.partial(Lk, 0, j) - J.total(J.partial(Lk, 1, j))));
+    E.push_back(std::move(row));
+  }
+  return E;
+}
+
 std::vector<std::vector<Series>> Engine::jets_along(const std::vector<Series>& F, int top,
                                                     int cap) const {
   const JetSpace& J = *dl_.jets;

@@ -118,6 +118,9 @@ class Engine {
 
   /// Euler–Lagrange expression Σ_ℓ (−1)^ℓ D^ℓ ∂L/∂x^{(ℓ)} of L = Σ h^k L[k] (any order).
   std::vector<std::vector<ex>> euler_lagrange(const std::vector<ex>& L) const;
+  /// The two-term expression ∂L/∂x − D ∂L/∂ẋ that Vermeeren §4.6 writes for the meshed
+  /// Lagrangian (on meshed-critical families the higher terms are of higher order).
+  std::vector<std::vector<ex>> euler_lagrange_two_term(const std::vector<ex>& L) const;
   /// Solve E = Σ h^k E[k] = 0 for ẍ to order `order` by recursive elimination (V §4.6).
   std::vector<std::vector<ex>> solve_for_acceleration(const std::vector<std::vector<ex>>& E,
                                                       int order) const;
