@@ -33,7 +33,8 @@ const std::vector<Check>& registry() {
                                          shen_sun_fig345(),
                                          shen_sun_fig6(),
                                          shen_sun_work_precision(),
-                                         check_modified()};
+                                         check_modified(),
+                                         check_v_t16()};
   return all;
 }
 

@@ -122,3 +122,12 @@ TEST_CASE("check-modified: every printed formula against the engine") {
     }
   }
 }
+
+TEST_CASE("check-v-t16: Theorem 16 and the modified Hamiltonian, measured orders") {
+  const auto* c = figures::find("check-v-t16");
+  REQUIRE(c != nullptr);
+  for (const auto& r : c->run({})) {
+    INFO(r.id << ": " << r.note);
+    CHECK(r.status == claims::Status::reproduced);
+  }
+}
