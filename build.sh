@@ -34,7 +34,7 @@ packages=(g++ cmake ninja-build pkg-config libeigen3-dev doctest-dev libcli11-de
   libjs-mathjax fonts-mathjax python3 libpng-dev libosmesa6-dev libegl-dev libopengl-dev
   libqd-dev libmpfr-dev libgmp-dev libginac-dev)
 if [ "$action" = test ]; then
-  packages+=(chromium chromium-driver python3-selenium)
+  packages+=(chromium chromium-driver python3-selenium python3-sympy)
 fi
 missing=()
 for p in "${packages[@]}"; do

@@ -47,6 +47,14 @@ if(NOT rc EQUAL 0)
   message(FATAL_ERROR "vibook claims failed (exit ${rc})")
 endif()
 
+# 2b. The modified-equations chapter's formulas, derived by the engine now.
+find_program(PYTHON3 python3 REQUIRED)
+execute_process(COMMAND ${PYTHON3} ${SOURCE_DIR}/book/engine_formulas.py ${VIBOOK} ${GEN}
+                RESULT_VARIABLE rc)
+if(NOT rc EQUAL 0)
+  message(FATAL_ERROR "engine_formulas.py failed (exit ${rc})")
+endif()
+
 # 3. Benchmarks: the table of the last `./build.sh bench` run, or of a run made now when
 #    VIBOOK_BOOK_BENCH is set (./build.sh book sets it; the test build does not).
 set(BENCH_JSON ${BINARY_DIR}/bench/bench.json)
@@ -61,7 +69,6 @@ if(DEFINED ENV{VIBOOK_BOOK_BENCH} AND EXISTS ${BENCH_EXE})
     message(FATAL_ERROR "vibook_bench failed (exit ${rc})")
   endif()
 endif()
-find_program(PYTHON3 python3 REQUIRED)
 if(EXISTS ${BENCH_JSON})
   execute_process(COMMAND ${PYTHON3} ${SOURCE_DIR}/tests/bench/bench_table.py ${BENCH_JSON}
                           ${BINARY_DIR}/bench/work_precision.csv

@@ -2,6 +2,7 @@
 // Shen & Sun 2025 §4).
 #include <memory>
 #include <optional>
+#include <set>
 #include <string>
 
 #include <fmt/format.h>
@@ -36,6 +37,15 @@ GiNaC::numeric parse_rational(const std::string& s) {
   }
 }
 
+// Every symbol in the expressions, for the Python header (sorted by name, h first).
+void collect_symbols(const GiNaC::ex& e, std::set<std::string>& out) {
+  if (GiNaC::is_a<GiNaC::symbol>(e)) {
+    out.insert(GiNaC::ex_to<GiNaC::symbol>(e).get_name());
+    return;
+  }
+  for (std::size_t k = 0; k < e.nops(); ++k) collect_symbols(e.op(k), out);
+}
+
 int run_modified(const ModifiedOptions& o) {
   using namespace modified;
   const Method m = parse_method(o.method);
@@ -57,35 +67,13 @@ int run_modified(const ModifiedOptions& o) {
                         fmt::format("{}: supported orders are 0 to {}", o.order, max_order));
   Engine E(make_discrete_lagrangian(m, p, dim, alpha), o.order);
   const JetSpace& J = E.jets();
-  auto print_vector = [&](const std::vector<std::vector<ex>>& v, const std::string& lhs) {
-    for (int i = 0; i < J.dofs(); ++i) {
-      std::vector<ex> c;
-      for (const auto& row : v) c.push_back(row[i]);
-      const std::string name = J.dofs() == 1 ? lhs : fmt::format("{}{}", lhs, i + 1);
-      if (f == Format::text) fmt::print("# {} =\n", name);
-      if (f == Format::python) fmt::print("{} = ", name);
-      if (f == Format::latex) fmt::print("{} = ", name);
-      fmt::print("{}\n", format_series(c, J.h(), f));
-    }
-  };
   const std::string comment = f == Format::latex ? "%" : "#";
-  fmt::print("{} {}; order h^{}\n", comment, E.discrete_lagrangian().description, o.order);
-  if (f == Format::python) {
-    std::string syms = "h";
-    for (int i = 0; i < J.dofs(); ++i) syms += fmt::format(" x{0} v{0}", i + 1);
-    if (o.what == "hamiltonian")
-      for (int i = 0; i < J.dofs(); ++i) syms += fmt::format(" p{}", i + 1);
-    fmt::print("from sympy import Rational, symbols, sqrt, cos, sin\n");
-    fmt::print(
-        "{} = symbols('{}')\n",
-        [&] {
-          std::string s = syms;
-          for (auto& ch : s)
-            if (ch == ' ') ch = ',';
-          return s;
-        }(),
-        syms);
-  }
+  // Derive first, print after: the Python header lists every symbol that occurs.
+  std::vector<std::pair<std::string, std::vector<ex>>> blocks;  // (left-hand side, series)
+  std::string cross;
+  auto lhs_of = [&](const char* latex, const char* python, const char* text) {
+    return std::string(f == Format::latex ? latex : (f == Format::python ? python : text));
+  };
   if (o.what == "equation") {
     const auto fm = E.modified_equation();
     if (o.cross_check) {
@@ -95,38 +83,51 @@ int run_modified(const ModifiedOptions& o) {
           if (!vanishes(fm[k][i] - fd[k][i]))
             throw NumericalError(fmt::format(
                 "the meshed and the direct route disagree at h^{} (component {})", k, i + 1));
-      fmt::print("{} cross-check: the direct route (Vermeeren §3.2) agrees term by term\n",
-                 comment);
+      cross = "cross-check: the direct route (Vermeeren §3.2) agrees term by term";
     }
-    print_vector(fm, f == Format::latex ? "\\ddot{x}" : (f == Format::python ? "a" : "xddot"));
+    const std::string lhs = lhs_of("\\ddot{x}", "a", "xddot");
+    for (int i = 0; i < J.dofs(); ++i) {
+      std::vector<ex> c;
+      for (const auto& row : fm) c.push_back(row[i]);
+      const std::string name = J.dofs() == 1        ? lhs
+                               : f == Format::latex ? fmt::format("{}_{{{}}}", lhs, i + 1)
+                                                    : fmt::format("{}{}", lhs, i + 1);
+      blocks.emplace_back(name, c);
+    }
   } else if (o.what == "lagrangian") {
-    const auto L = E.l_mod();
-    fmt::print("{}{}\n",
-               f == Format::latex ? "L_{\\mathrm{mod}} = "
-                                  : (f == Format::python ? "L = " : "# L_mod =\n"),
-               format_series(L, J.h(), f));
+    blocks.emplace_back(lhs_of("L_{\\mathrm{mod}}", "L", "L_mod"), E.l_mod());
   } else if (o.what == "hamiltonian") {
-    const auto H = E.h_mod();
-    fmt::print("{}{}\n",
-               f == Format::latex ? "H_{\\mathrm{mod}} = "
-                                  : (f == Format::python ? "H = " : "# H_mod =\n"),
-               format_series(H, J.h(), f));
+    blocks.emplace_back(lhs_of("H_{\\mathrm{mod}}", "H", "H_mod"), E.h_mod());
   } else if (o.what == "meshed") {
-    const auto L = E.l_mesh();
-    fmt::print("{}{}\n",
-               f == Format::latex ? "L_{\\mathrm{mesh}} = "
-                                  : (f == Format::python ? "L_mesh = " : "# L_mesh =\n"),
-               format_series(L, J.h(), f));
+    blocks.emplace_back(lhs_of("L_{\\mathrm{mesh}}", "L_mesh", "L_mesh"), E.l_mesh());
   } else if (o.what == "disc") {
-    const auto L = E.l_disc();
-    fmt::print("{}{}\n",
-               f == Format::latex ? "L_{\\mathrm{disc}} = "
-                                  : (f == Format::python ? "L_disc = " : "# L_disc =\n"),
-               format_series(L, J.h(), f));
+    blocks.emplace_back(lhs_of("L_{\\mathrm{disc}}", "L_disc", "L_disc"), E.l_disc());
   } else {
     throw ArgumentError("--what", fmt::format("unknown '{}' (equation, lagrangian, hamiltonian, "
                                               "meshed, disc)",
                                               o.what));
+  }
+  fmt::print("{} {}; order h^{}\n", comment, E.discrete_lagrangian().description, o.order);
+  if (!cross.empty()) fmt::print("{} {}\n", comment, cross);
+  if (f == Format::python) {
+    std::set<std::string> names;
+    for (const auto& [lhs, c] : blocks)
+      for (const ex& e : c) collect_symbols(e, names);
+    names.erase("h");
+    std::string list = "h";
+    for (const auto& n : names) list += " " + n;
+    std::string lhs_list = list;
+    for (auto& ch : lhs_list)
+      if (ch == ' ') ch = ',';
+    fmt::print("from sympy import Rational, symbols, sqrt, cos, sin\n");
+    fmt::print("{} = symbols('{}')\n", lhs_list, list);
+  }
+  for (const auto& [lhs, c] : blocks) {
+    if (f == Format::text)
+      fmt::print("# {} =\n", lhs);
+    else
+      fmt::print("{} = ", lhs);
+    fmt::print("{}\n", format_series(c, J.h(), f));
   }
   return kOk;
 }

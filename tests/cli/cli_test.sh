@@ -134,6 +134,40 @@ expect 2 "--tau-end" -- run --problem relativistic-kepler --method vi --c 5 --t-
 expect 3 "partial" -- run --problem kepler --method del-generic --q0 1,0 --p0 0,1.4 --h 2 --t-end 100 --csv "$tmp/d.csv"
 [ ! -e "$tmp/d.csv" ] && [ -e "$tmp/d.csv.partial" ] && ok || bad "failed run leaves only FILE.partial"
 
+# --- the modified-equation engine (Vermeeren 2017, Shen & Sun 2025 §4) --------------------------
+expect 0 "" -- modified --help
+expect 2 "--method" -- modified --method rk4 --order 2
+expect 2 "--potential" -- modified --method sv --potential morse --order 2
+expect 2 "--order" -- modified --method sv --order 11
+expect 2 "--order" -- modified --method sv --order -1
+expect 2 "--order" -- modified --method sv
+expect 2 "--dim" -- modified --method sv --potential kepler --dim 3 --order 2
+expect 2 "--dim" -- modified --method sv --potential generic --dim 4 --order 2
+expect 2 "--what" -- modified --method sv --order 2 --what everything
+expect 2 "--format" -- modified --method sv --order 2 --format maple
+expect 2 "--alpha" -- modified --method sv --potential kepler --order 2 --alpha 0.5
+expect 2 "--alpha" -- modified --method vi1 --potential kepler --order 1 --alpha half
+expect 2 "--method" -- modified --method vi2 --potential kepler --order 2
+# Vermeeren (22), cross-checked against the direct route, as text.
+expect 0 "" -- modified --method sv --order 4 --cross-check
+grep -q "cross-check: the direct route" "$tmp/out" && grep -q "h^2: " "$tmp/out" && ok || bad "modified text output"
+# Python output is SymPy source: executed, it gives (22) exactly.
+for what in equation lagrangian hamiltonian meshed disc; do
+  expect 0 "" -- modified --method sv --order 3 --what $what --format python
+  /usr/bin/python3 -c "exec(open('$tmp/out').read())" 2>"$tmp/pyerr" && ok || bad "python output of --what $what does not run: $(cat "$tmp/pyerr")"
+done
+expect 0 "" -- modified --method sv --order 2 --format python
+/usr/bin/python3 - "$tmp/out" <<'PY' && ok || bad "python output of (22) differs"
+import sys
+from sympy import simplify
+exec(open(sys.argv[1]).read())
+assert simplify(a - (-U_1 + h**2 * (U_111 * v1**2 - U_1 * U_11) / 12)) == 0, a
+PY
+expect 0 "" -- modified --method vi1 --potential kepler --order 1 --alpha 1/2 --format python
+grep -q "h,p1\|h,x1\|symbols" "$tmp/out" && ok || bad "vi1 kepler python"
+expect 0 "" -- modified --method midpoint --potential pendulum --order 2 --what hamiltonian --format latex
+grep -q "H_{\\\\mathrm{mod}}" "$tmp/out" && ok || bad "latex hamiltonian"
+
 # --- figures and claims ---------------------------------------------------------------------
 expect 0 "" -- figure vermeeren-fig1 --out "$tmp/f"
 for f in vermeeren-fig1.svg vermeeren-fig1.png claims.json discrete.csv curves.csv; do

@@ -72,7 +72,8 @@ Study defect_study(Method m, Potential p, int k, const std::vector<LD>& x0,
   Study s;
   s.k = k;
   s.expected = first_nonzero_after(f, k);
-  s.label = fmt::format("{} {} k={}", method_name(m), p == Potential::kepler ? "kepler" : "pendulum", k);
+  s.label =
+      fmt::format("{} {} k={}", method_name(m), p == Potential::kepler ? "kepler" : "pendulum", k);
   std::vector<GiNaC::symbol> xv;
   for (int i = 0; i < n; ++i) xv.push_back(J.x(0, i));
   for (int i = 0; i < n; ++i) xv.push_back(J.x(1, i));
@@ -153,7 +154,8 @@ Study hamiltonian_study(Method m, Potential pot, int k, Vec<double, Problem::N> 
   s.k = k;
   const int j = first_nonzero_after(Hv, k);
   s.expected = j < 0 ? -1 : j + 1;
-  s.label = fmt::format("{} {} H_mod,{}", method_name(m), pot == Potential::kepler ? "kepler" : "pendulum", k);
+  s.label = fmt::format("{} {} H_mod,{}", method_name(m),
+                        pot == Potential::kepler ? "kepler" : "pendulum", k);
   std::vector<GiNaC::symbol> vars;
   for (int i = 0; i < n; ++i) vars.push_back(J.x(0, i));
   for (int i = 0; i < n; ++i) vars.push_back(J.p(i));
@@ -194,8 +196,9 @@ std::string describe(const Study& s) {
 }
 
 std::vector<claims::ClaimResult> run(const Context&) {
-  const std::vector<LD> xp = {1.0L}, vp = {0.5L};                // pendulum
-  const std::vector<LD> xk = {1.0L, 0.2L}, vk = {0.1L, 0.9L};    // Kepler, a bound orbit
+  const std::lock_guard<std::mutex> lock(modified::ginac_mutex());  // GiNaC: one thread
+  const std::vector<LD> xp = {1.0L}, vp = {0.5L};                   // pendulum
+  const std::vector<LD> xk = {1.0L, 0.2L}, vk = {0.1L, 0.9L};       // Kepler, a bound orbit
   std::vector<Study> defects;
   for (Method m : {Method::sv, Method::midpoint, Method::se})
     for (int k : {2, 4}) {
@@ -224,10 +227,14 @@ std::vector<claims::ClaimResult> run(const Context&) {
   const Vec<double, 1> qp(1.0), pp(0.5);
   const Vec<double, 2> qk(1.0, 0.2), pk(0.1, 0.9);
   for (int k : {2, 4}) {
-    ham.push_back(hamiltonian_study<Pendulum, StormerVerlet<Pendulum>>(Method::sv, Potential::pendulum, k, qp, pp));
-    ham.push_back(hamiltonian_study<Kepler, StormerVerlet<Kepler>>(Method::sv, Potential::kepler, k, qk, pk));
-    ham.push_back(hamiltonian_study<Pendulum, SymplecticEuler<Pendulum>>(Method::se, Potential::pendulum, k, qp, pp));
-    ham.push_back(hamiltonian_study<Kepler, ImplicitMidpoint<Kepler>>(Method::midpoint, Potential::kepler, k, qk, pk));
+    ham.push_back(hamiltonian_study<Pendulum, StormerVerlet<Pendulum>>(
+        Method::sv, Potential::pendulum, k, qp, pp));
+    ham.push_back(
+        hamiltonian_study<Kepler, StormerVerlet<Kepler>>(Method::sv, Potential::kepler, k, qk, pk));
+    ham.push_back(hamiltonian_study<Pendulum, SymplecticEuler<Pendulum>>(
+        Method::se, Potential::pendulum, k, qp, pp));
+    ham.push_back(hamiltonian_study<Kepler, ImplicitMidpoint<Kepler>>(
+        Method::midpoint, Potential::kepler, k, qk, pk));
   }
   claims::ClaimResult se;
   se.id = "V-SE";

@@ -34,7 +34,9 @@ const std::vector<Check>& registry() {
                                          shen_sun_fig6(),
                                          shen_sun_work_precision(),
                                          check_modified(),
-                                         check_v_t16()};
+                                         check_v_t16(),
+                                         vermeeren_fig3(),
+                                         shen_sun_fig1()};
   return all;
 }
 

@@ -88,6 +88,8 @@ Check shen_sun_work_precision();
 Check sharma_eq29_long();
 Check check_modified();
 Check check_v_t16();
+Check vermeeren_fig3();
+Check shen_sun_fig1();
 /// The long study at a fraction `scale` of its length (the doctest runs it small).
 std::vector<claims::ClaimResult> run_eq29_long(const Context& ctx, double scale);
 

@@ -18,6 +18,11 @@ namespace vibook::modified {
 using GiNaC::numeric;
 using SubsMap = std::map<ex, Series, GiNaC::ex_is_less>;
 
+std::mutex& ginac_mutex() {
+  static std::mutex m;
+  return m;
+}
+
 // ---------------------------------------------------------------------------------------------
 // Parsing
 // ---------------------------------------------------------------------------------------------

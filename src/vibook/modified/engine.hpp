@@ -18,6 +18,7 @@
 #pragma once
 
 #include <memory>
+#include <mutex>
 #include <optional>
 #include <string>
 #include <vector>
@@ -29,6 +30,11 @@
 #include "vibook/modified/series.hpp"
 
 namespace vibook::modified {
+
+/// GiNaC is not thread-safe (reference counts of shared constants are not atomic): code that
+/// may run beside other GiNaC users in the same process (the checks, run in parallel by
+/// `vibook claims`) holds this lock for as long as it uses the engine.
+std::mutex& ginac_mutex();
 
 /// Highest order in h the engine accepts (the command line checks it).
 inline constexpr int max_order = 10;

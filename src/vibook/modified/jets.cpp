@@ -77,7 +77,7 @@ void JetSpace::ensure_order(int order) const {
         tex = "\\dot{x}" + sub;
       } else {
         name = fmt::format("x{}_{}", i + 1, k);
-        tex = k == 2 ? "\\ddot{x}" + sub : fmt::format("x{}^{{({})}}", sub, k);
+        tex = k == 2 ? "\\ddot{x}" + sub : fmt::format("{{x{}^{{({})}}}}", sub, k);
       }
       row.emplace_back(name, tex);
     }
@@ -115,7 +115,7 @@ GiNaC::symbol JetSpace::derivative(int family, std::vector<int> index) const {
       tex += "_{" + sub + "}";
     }
   }
-  GiNaC::symbol s(name, tex);
+  GiNaC::symbol s(name, "{" + tex + "}");  // braced: safe under a power's superscript
   deriv_.emplace(key, s);
   deriv_list_.emplace_back(s, key);
   return s;
