@@ -55,8 +55,8 @@ int run_modified(const ModifiedOptions& o) {
   if (dim == 0) dim = p == Potential::kepler ? 2 : 1;
   std::optional<GiNaC::numeric> alpha;
   if (!o.alpha.empty()) {
-    if (m != Method::vi1 && m != Method::vi1_adjoint)
-      throw ArgumentError("--alpha", "only the splitting methods vi1 and vi1-adjoint have α");
+    if (m != Method::vi1 && m != Method::vi1_adjoint && m != Method::vi2)
+      throw ArgumentError("--alpha", "only the splitting methods vi1, vi1-adjoint, vi2 have α");
     if (p == Potential::generic)
       throw ArgumentError("--alpha",
                           "with a generic potential the pieces are abstract (phi1, phi2)");
@@ -141,7 +141,7 @@ std::function<int()> add_modified_command(CLI::App& app) {
       "(Vermeeren 2017) with the symbolic engine");
   c->add_option("--method", o->method,
                 "sv, se (L(x1,v)), se-adjoint (L(x0,v)), midpoint, vi1, vi1-adjoint (Shen & Sun "
-                "(3.3)); vi2 is not supported by the engine")
+                "(3.3)), vi2 ((3.8); the interior node is eliminated)")
       ->required();
   c->add_option("--potential", o->potential,
                 "generic (derivatives U, U_1, U_11, … as symbols), kepler (2-D), pendulum, "
@@ -155,7 +155,8 @@ std::function<int()> add_modified_command(CLI::App& app) {
                 "disc (L_disc([x],h))");
   c->add_option("--format", o->format, "text (default), latex, python (SymPy)");
   c->add_option("--alpha", o->alpha,
-                "vi1 with a concrete potential: the split φ^[1] = αU (default: symbolic α)");
+                "vi1, vi1-adjoint, vi2 with a concrete potential: the split φ^[1] = αU (default: "
+                "symbolic α)");
   c->add_flag("--cross-check", o->cross_check,
               "equation: also derive it from the discrete Euler–Lagrange equation (Vermeeren "
               "§3.2) and require term-by-term agreement");

@@ -147,7 +147,8 @@ expect 2 "--what" -- modified --method sv --order 2 --what everything
 expect 2 "--format" -- modified --method sv --order 2 --format maple
 expect 2 "--alpha" -- modified --method sv --potential kepler --order 2 --alpha 0.5
 expect 2 "--alpha" -- modified --method vi1 --potential kepler --order 1 --alpha half
-expect 2 "--method" -- modified --method vi2 --potential kepler --order 2
+expect 0 "" -- modified --method vi2 --potential kepler --order 2 --alpha 1/2 --cross-check
+grep -q "cross-check" "$tmp/out" && ok || bad "vi2 cross-check"
 # Vermeeren (22), cross-checked against the direct route, as text.
 expect 0 "" -- modified --method sv --order 4 --cross-check
 grep -q "cross-check: the direct route" "$tmp/out" && grep -q "h^2: " "$tmp/out" && ok || bad "modified text output"

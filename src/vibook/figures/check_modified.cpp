@@ -9,6 +9,7 @@
 #include <fmt/format.h>
 
 #include "vibook/figures/registry.hpp"
+#include "vibook/figures/shen_sun_prints.hpp"
 #include "vibook/mechanics/discrete_lagrangian.hpp"
 #include "vibook/modified/engine.hpp"
 
@@ -378,6 +379,68 @@ claims::ClaimResult shen_sun_err_418() {
 }
 
 // ---------------------------------------------------------------------------------------------
+// VI-2 (3.8): (4.23) and (4.24) against the engine, with the interior node eliminated exactly
+// (the discrete Lagrangian of the x_n sequence) and placed on the curve (the proof's reading).
+struct Vi2Comparison {
+  Tally lmod_exact, eq_exact, lmod_curve, eq_curve, direct;
+};
+Vi2Comparison vi2_compare() {
+  Vi2Comparison out;
+  for (bool on_curve : {false, true}) {
+    auto dl = modified::make_discrete_lagrangian(Method::vi2, Potential::generic, 2);
+    dl.interior_on_curve = on_curve;
+    Engine E(dl, 2);
+    const JetSpace& J = E.jets();
+    auto p1 = [&](std::vector<int> idx) { return ex(J.derivative(1, idx)); };
+    auto phi = [&](std::vector<int> idx) {
+      return ex(J.derivative(1, idx)) + ex(J.derivative(2, idx));
+    };
+    const ex v1 = J.x(1, 0), v2 = J.x(1, 1);
+    const ex V[2] = {v1, v2};
+    ex grad2 = 0, hess_vv = 0, hess1_vv = 0;
+    for (int i = 0; i < 2; ++i) {
+      grad2 += phi({i}) * phi({i});
+      for (int j = 0; j < 2; ++j) {
+        hess_vv += phi({i, j}) * V[i] * V[j];
+        hess1_vv += p1({i, j}) * V[i] * V[j];
+      }
+    }
+    Tally& tl = on_curve ? out.lmod_curve : out.lmod_exact;
+    Tally& te = on_curve ? out.eq_curve : out.eq_exact;
+    const auto& L = E.l_mod();
+    tl.add("(4.23) h^0", L[0], (v1 * v1 + v2 * v2) / 2 - phi({}));
+    tl.add("(4.23) h^1", L[1], 0);
+    tl.add("(4.23) h^2", L[2],
+           numeric(1, 96) * (7 * grad2 - 12 * phi({1}) * p1({1}) - 8 * hess_vv + 12 * hess1_vv -
+                             12 * p1({0, 0}) * v1 * v1));
+    const auto& f = E.modified_equation();
+    const auto print424 = shen_sun_424_h2(phi, p1, v1, v2);
+    for (int i = 0; i < 2; ++i) {
+      te.add(fmt::format("(4.24) h^0 [{}]", i + 1), f[0][i], -phi({i}));
+      te.add(fmt::format("(4.24) h^1 [{}]", i + 1), f[1][i], 0);
+      te.add(fmt::format("(4.24) h^2 [{}]", i + 1), f[2][i], print424[i]);
+    }
+    if (!on_curve) {
+      const auto g = E.modified_equation_direct();
+      for (int k = 0; k <= 2; ++k)
+        for (int i = 0; i < 2; ++i)
+          out.direct.add(fmt::format("direct route h^{} [{}]", k, i + 1), g[k][i], f[k][i]);
+    }
+  }
+  return out;
+}
+
+// True if the engine's h¹ term of VI-1's modified equation is the negative of (4.22)'s.
+bool sign_flipped_422() {
+  Engine E(modified::make_discrete_lagrangian(Method::vi1, Potential::generic, 2), 1);
+  const JetSpace& J = E.jets();
+  const ex p12 = J.derivative(1, {0, 1});
+  const auto& f = E.modified_equation();
+  return modified::vanishes(f[1][0] - J.x(1, 1) * p12) &&
+         modified::vanishes(f[1][1] + J.x(1, 0) * p12);
+}
+
+// ---------------------------------------------------------------------------------------------
 // SS-T12 (VI-1 part): (4.21) and (4.22) with generic pieces φ^[1], φ^[2].
 claims::ClaimResult shen_sun_t12() {
   Engine E(modified::make_discrete_lagrangian(Method::vi1, Potential::generic, 2), 2);
@@ -418,11 +481,25 @@ claims::ClaimResult shen_sun_t12() {
       "SS-T12", t,
       "VI-1 (3.3) with generic pieces φ^[1], φ^[2] (φ = φ^[1] + φ^[2]): L_mod (4.21) to h² and "
       "the modified equation (4.22) to h²:");
+  const Vi2Comparison c2 = vi2_compare();
   r.note +=
-      " The h¹ term of (4.22) has the opposite sign (SS-ERR-4.22). VI-2 ((4.23)–(4.24)) "
-      "is not derived: the engine expands one discrete Lagrangian per step, and (3.8) "
-      "composes two over half steps.";
-  if (r.status == claims::Status::reproduced) r.status = claims::Status::reproduced_with_caveat;
+      " The h¹ term of (4.22) has the opposite sign (SS-ERR-4.22). VI-2 (3.8), interior "
+      "node eliminated exactly: L_mod against (4.23): " +
+      c2.lmod_exact.summary() + "; modified equation against (4.24): " + c2.eq_exact.summary() +
+      "; meshed against direct route: " + c2.direct.summary() +
+      ". Interior node placed on the curve (the proof's reading): L_mod against (4.23): " +
+      c2.lmod_curve.summary() + "; modified equation against (4.24): " + c2.eq_curve.summary() +
+      ".";
+  // The claim covers (4.21)–(4.24): (4.22)'s h¹ sign (SS-ERR-4.22) and VI-2's (4.23)–(4.24)
+  // (SS-ERR-4.24: measured in check-v-t16) are part of it.
+  const bool vi2_ok = c2.lmod_exact.ok() && c2.eq_exact.ok();
+  r.values.push_back(
+      {"vi2_exact_terms_differing",
+       static_cast<double>(c2.lmod_exact.mismatches.size() + c2.eq_exact.mismatches.size())});
+  r.values.push_back({"vi2_node_on_curve_L_terms_differing",
+                      static_cast<double>(c2.lmod_curve.mismatches.size())});
+  r.status = t.ok() && vi2_ok && !sign_flipped_422() ? claims::Status::reproduced
+                                                     : claims::Status::not_reproduced;
   return r;
 }
 

@@ -102,12 +102,20 @@ SymbolicDL build(Method m, const Problem& P, const Split& split, std::shared_ptr
       return symbolic_dl<N>(splitting_dl(split), J, "VI-1 (3.3), " + what);
     case Method::vi1_adjoint:
       return symbolic_dl<N>(splitting_dl_adjoint(split), J, "VI-1 adjoint, " + what);
-    case Method::vi2:
-      break;
+    case Method::vi2: {
+      // Shen & Sun (3.8): L_d*(x_n, x_{n+1/2}, h/2) + L_d^{1st}(x_{n+1/2}, x_{n+1}, h/2), the
+      // two templates SplittingVariational composes.
+      auto first = splitting_dl(split);
+      auto adjoint = splitting_dl_adjoint(split);
+      auto three = [first, adjoint](const auto& a, const auto& m, const auto& b,
+                                    const auto& h) -> ex {
+        const ex half = h / 2;
+        return adjoint(a, m, half) + first(m, b, half);
+      };
+      return symbolic_dl3<N>(three, J, "VI-2 (3.8), " + what);
+    }
   }
-  throw ArgumentError("--method",
-                      "vi2 composes two discrete Lagrangians over half steps (Shen & Sun (3.8)); "
-                      "the engine expands one discrete Lagrangian per step and does not derive it");
+  throw ArgumentError("--method", "unknown method");
 }
 
 template <int N>
@@ -120,7 +128,7 @@ SymbolicDL generic_dl(Method m) {
         J->add_family(fmt::format("phi{}", i + 1), fmt::format("\\phi^{{[{}]}}", i + 1));
   const std::string what =
       fmt::format("generic potential, {} degree{} of freedom", N, N == 1 ? "" : "s");
-  if (m == Method::vi1 || m == Method::vi1_adjoint) {
+  if (m == Method::vi1 || m == Method::vi1_adjoint || m == Method::vi2) {
     // U is not used: the pieces are the potential.
     return build<N>(m, AbstractPotential<N>{U}, split, J, what + " split as phi1 + phi2 + …");
   }
@@ -189,6 +197,11 @@ const std::vector<ex>& Engine::l_disc() {
     subs[dl_.q1[i]] = shifted_jet(J, i, numeric(1, 2), P0);
   }
   subs[J.h()] = Series::h();
+  if (!dl_.qm.empty()) {
+    const auto m = dl_.interior_on_curve ? std::vector<Series>{} : interior_node(subs, K_ + 4);
+    for (int i = 0; i < J.dofs(); ++i)
+      subs[dl_.qm[i]] = dl_.interior_on_curve ? shifted_jet(J, i, 0, P0) : m[i];
+  }
   SeriesEvaluator eval(J, subs, K_ + 3);
   const Series L = eval(dl_.Ld) / Series::h();
   if (L.prec < K_ + 1) throw std::logic_error("L_disc expansion lost precision");
@@ -398,6 +411,15 @@ std::vector<std::vector<ex>> Engine::modified_equation_direct() {
   }
   back[J.h()] = Series::h();
   fwd[J.h()] = Series::h();
+  if (!dl_.qm.empty() && dl_.interior_on_curve)
+    throw ArgumentError("--method", "the direct route needs the interior node eliminated");
+  if (!dl_.qm.empty()) {  // ∂L_eff/∂q = ∂L_d/∂q at the interior node (∂L_d/∂qm = 0 there)
+    const auto mb = interior_node(back, K_ + 5), mf = interior_node(fwd, K_ + 5);
+    for (int i = 0; i < n; ++i) {
+      back[dl_.qm[i]] = mb[i];
+      fwd[dl_.qm[i]] = mf[i];
+    }
+  }
   std::vector<std::vector<ex>> E(K_ + 1, std::vector<ex>(n));
   for (int i = 0; i < n; ++i) {
     SeriesEvaluator eb(J, back, K_ + 3), ef(J, fwd, K_ + 3);
@@ -409,6 +431,70 @@ std::vector<std::vector<ex>> Engine::modified_equation_direct() {
     for (int k = 0; k <= K_; ++k) E[k][i] = GiNaC::expand(psi.coeff(k));
   }
   return solve_for_acceleration(E, K_);
+}
+
+// Newton's method on series for ∂L_d/∂qm(q0, qm, q1, h) = 0: each step doubles the number of
+// correct terms; the result is checked to vanish to the requested precision.
+std::vector<Series> Engine::interior_node(const SubsMap& subs, int cap) const {
+  const JetSpace& J = *dl_.jets;
+  const int n = J.dofs();
+  std::vector<ex> G(n);
+  std::vector<std::vector<ex>> H(n, std::vector<ex>(n));
+  for (int i = 0; i < n; ++i) {
+    G[i] = dl_.Ld.diff(dl_.qm[i]);
+    for (int j = 0; j < n; ++j) H[i][j] = G[i].diff(dl_.qm[j]);
+  }
+  std::vector<Series> m(n);
+  for (int i = 0; i < n; ++i)
+    m[i] = (subs.at(dl_.q0[i]) + subs.at(dl_.q1[i])) * Series::constant(numeric(1, 2));
+  auto residual = [&](SubsMap& s, std::vector<Series>& g, std::vector<std::vector<Series>>* hess) {
+    for (int i = 0; i < n; ++i) s[dl_.qm[i]] = m[i];
+    SeriesEvaluator eval(J, s, cap + 2);
+    for (int i = 0; i < n; ++i) {
+      g[i] = eval(G[i]);
+      if (hess)
+        for (int j = 0; j < n; ++j) (*hess)[i][j] = eval(H[i][j]);
+    }
+  };
+  for (int iter = 0; iter < 8; ++iter) {
+    SubsMap s = subs;
+    std::vector<Series> g(n);
+    std::vector<std::vector<Series>> hm(n, std::vector<Series>(n));
+    residual(s, g, &hm);
+    // δ = −H⁻¹ g by cofactors (n ≤ 3).
+    Series det;
+    std::vector<std::vector<Series>> adj(n, std::vector<Series>(n));
+    if (n == 1) {
+      det = hm[0][0];
+      adj[0][0] = Series::constant(1);
+    } else if (n == 2) {
+      det = hm[0][0] * hm[1][1] - hm[0][1] * hm[1][0];
+      adj = {{hm[1][1], -hm[0][1]}, {-hm[1][0], hm[0][0]}};
+    } else {
+      auto cof = [&](int r, int c) {
+        const int r1 = (r + 1) % 3, r2 = (r + 2) % 3, c1 = (c + 1) % 3, c2 = (c + 2) % 3;
+        return hm[r1][c1] * hm[r2][c2] - hm[r1][c2] * hm[r2][c1];
+      };
+      det = hm[0][0] * cof(0, 0) + hm[0][1] * cof(0, 1) + hm[0][2] * cof(0, 2);
+      for (int r = 0; r < 3; ++r)
+        for (int c = 0; c < 3; ++c) adj[c][r] = cof(r, c);
+    }
+    for (int i = 0; i < n; ++i) {
+      Series d = Series::constant(0);
+      for (int j = 0; j < n; ++j) d = d + adj[i][j] * g[j];
+      m[i] = (m[i] - d / det).truncated(cap);
+    }
+  }
+  SubsMap s = subs;
+  std::vector<Series> g(n);
+  residual(s, g, nullptr);
+  for (int i = 0; i < n; ++i)
+    for (int k = g[i].valuation(); k < std::min(g[i].prec, cap - 1); ++k)
+      if (!vanishes(g[i].coeff(k)))
+        throw NumericalError(
+            "the interior node of the three-point discrete Lagrangian could not "
+            "be eliminated (∂L_d/∂qm = 0 has no series solution)");
+  return m;
 }
 
 // V Definition 8: L_mod,K = T_K(L_mesh with x^{(ℓ)}, ℓ ≥ 2, replaced along the modified

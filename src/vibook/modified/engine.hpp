@@ -41,9 +41,18 @@ inline constexpr int max_order = 10;
 
 /// A discrete Lagrangian as a symbolic expression in (q0, q1, h), in vibook's scaling
 /// L_d ≈ h·L (Vermeeren's L_disc is L_d / h).
+///
+/// A *three-point* discrete Lagrangian L_d(q0, qm, q1, h) has an interior node qm (a
+/// composition over half steps, Shen & Sun (3.8)). The engine eliminates qm exactly, order by
+/// order in h, from ∂L_d/∂qm = 0 (the discrete Euler–Lagrange equation at the interior node),
+/// which leaves the one-step discrete Lagrangian of the same x_n sequence.
 struct SymbolicDL {
   std::shared_ptr<JetSpace> jets;
   std::vector<GiNaC::symbol> q0, q1;
+  std::vector<GiNaC::symbol> qm;  ///< interior node of a three-point L_d (empty otherwise)
+  /// Place the interior node on the curve, qm = x(t), instead of eliminating it (the reading
+  /// of Shen & Sun's proof of Theorem 12; not the discrete Lagrangian of the x_n sequence).
+  bool interior_on_curve = false;
   ex Ld;
   std::string description;
 };
@@ -65,6 +74,26 @@ SymbolicDL symbolic_dl(const DL& dl, std::shared_ptr<JetSpace> jets, std::string
   }
   const ex h = out.jets->h();
   out.Ld = exact_rationals(dl(a, b, h));
+  return out;
+}
+
+/// The same for a three-point discrete Lagrangian `dl(q0, qm, q1, h)`.
+template <int N, class DL>
+SymbolicDL symbolic_dl3(const DL& dl, std::shared_ptr<JetSpace> jets, std::string description) {
+  SymbolicDL out;
+  out.jets = std::move(jets);
+  out.description = std::move(description);
+  Vec<ex, N> a, m, b;
+  for (int i = 0; i < N; ++i) {
+    out.q0.emplace_back(N == 1 ? "q0" : "q0_" + std::to_string(i + 1));
+    out.qm.emplace_back(N == 1 ? "qm" : "qm_" + std::to_string(i + 1));
+    out.q1.emplace_back(N == 1 ? "q1" : "q1_" + std::to_string(i + 1));
+    a(i) = out.q0.back();
+    m(i) = out.qm.back();
+    b(i) = out.q1.back();
+  }
+  const ex h = out.jets->h();
+  out.Ld = exact_rationals(dl(a, m, b, h));
   return out;
 }
 
@@ -94,7 +123,7 @@ Potential parse_potential(const std::string& s);
 /// pendulum and the oscillator 1-D; a generic potential has `dim` degrees of freedom (1–3).
 /// For vi1/vi1-adjoint with a generic potential the pieces φ^[i] are abstract functions
 /// phi1, phi2, …; with a concrete one they are α·U and (1 − α)·U with `alpha` (a symbol
-/// named alpha when not given). vi2 is not supported (ArgumentError).
+/// named alpha when not given). vi2 is the three-point L_d*(x0, xm, h/2) + L_d(xm, x1, h/2).
 SymbolicDL make_discrete_lagrangian(Method m, Potential p, int dim,
                                     std::optional<GiNaC::numeric> alpha = std::nullopt);
 
@@ -140,6 +169,10 @@ class Engine {
   std::vector<std::vector<ex>> f_;
   /// Series of x^{(ℓ)}, ℓ = 2…top, on solutions of ẍ = F (F to precision F.prec).
   std::vector<std::vector<Series>> jets_along(const std::vector<Series>& F, int top, int cap) const;
+  /// Three-point L_d: the interior node as a series, from ∂L_d/∂qm = 0 with q0, q1 (and h)
+  /// given as series in `subs` (Newton's method on series, started at the mean of q0, q1).
+  std::vector<Series> interior_node(const std::map<ex, Series, GiNaC::ex_is_less>& subs,
+                                    int cap) const;
   /// Σ h^k (e[k] with x^{(ℓ)} → jets), truncated at cap.
   Series along(const std::vector<ex>& e, const std::vector<std::vector<Series>>& jets,
                int cap) const;
