@@ -265,33 +265,49 @@ std::vector<std::vector<ex>> Engine::euler_lagrange_two_term(const std::vector<e
   return E;
 }
 
+std::vector<int> Engine::solved() const {
+  if (!dl_.solve_for.empty()) return dl_.solve_for;
+  std::vector<int> all;
+  for (int i = 0; i < dl_.jets->dofs(); ++i) all.push_back(i);
+  return all;
+}
+
 std::vector<std::vector<Series>> Engine::jets_along(const std::vector<Series>& F, int top,
                                                     int cap) const {
   const JetSpace& J = *dl_.jets;
-  const int n = J.dofs();
+  const std::vector<int> S = solved();
+  const int ns = static_cast<int>(S.size());
+  std::vector<bool> is_solved(J.dofs(), false);
+  for (int d : S) is_solved[d] = true;
   std::vector<std::vector<Series>> out(std::max(top, 2) + 1);
   out[2] = F;
   for (int l = 3; l <= top; ++l) {
-    out[l].resize(n);
-    for (int i = 0; i < n; ++i) {
-      // D along ẍ = F: ∂/∂x · ẋ (with the chain rule) + ∂/∂ẋ · F.
-      const Series& S = out[l - 1][i];
+    out[l].resize(ns);
+    for (int i = 0; i < ns; ++i) {
+      // D along ẍ = F: ∂/∂x · ẋ (with the chain rule) + ∂/∂ẋ · F for the solved degrees of
+      // freedom; Σ_ℓ ∂/∂x^{(ℓ)} · x^{(ℓ+1)} for the free ones.
+      const Series& Sl = out[l - 1][i];
       Series A;
-      A.prec = S.prec;
-      A.low = S.low;
-      std::vector<Series> B(n);
-      for (int j = 0; j < n; ++j) {
-        B[j].prec = S.prec;
-        B[j].low = S.low;
+      A.prec = Sl.prec;
+      A.low = Sl.low;
+      std::vector<Series> B(ns);
+      for (int j = 0; j < ns; ++j) {
+        B[j].prec = Sl.prec;
+        B[j].low = Sl.low;
       }
-      for (const ex& c : S.c) {
+      for (const ex& c : Sl.c) {
         ex a = 0;
-        for (int j = 0; j < n; ++j) a += J.partial(c, 0, j) * J.x(1, j);
+        for (int d = 0; d < J.dofs(); ++d) {
+          a += J.partial(c, 0, d) * J.x(1, d);
+          if (!is_solved[d])
+            for (int r = 1; r <= std::max(J.max_order(c, d), 0); ++r)
+              a += c.diff(J.x(r, d)) * J.x(r + 1, d);
+        }
         A.c.push_back(GiNaC::expand(a));
-        for (int j = 0; j < n; ++j) B[j].c.push_back(GiNaC::expand(c.diff(J.x(1, j))));
+        for (int j = 0; j < ns; ++j) B[j].c.push_back(GiNaC::expand(c.diff(J.x(1, S[j]))));
       }
       Series r = A;
-      for (int j = 0; j < n; ++j) r = r + (B[j] * F[j]).truncated(cap);
+      for (int j = 0; j < ns; ++j) r = r + (B[j] * F[j]).truncated(cap);
       out[l][i] = r.truncated(cap);
     }
   }
@@ -299,10 +315,11 @@ std::vector<std::vector<Series>> Engine::jets_along(const std::vector<Series>& F
 }
 
 namespace {
-SubsMap jet_subs(const JetSpace& J, const std::vector<std::vector<Series>>& jets) {
+SubsMap jet_subs(const JetSpace& J, const std::vector<int>& S,
+                 const std::vector<std::vector<Series>>& jets) {
   SubsMap subs;
   for (int l = 2; l < static_cast<int>(jets.size()); ++l)
-    for (int i = 0; i < J.dofs(); ++i) subs[J.x(l, i)] = jets[l][i];
+    for (std::size_t i = 0; i < S.size(); ++i) subs[J.x(l, S[i])] = jets[l][i];
   return subs;
 }
 
@@ -332,7 +349,7 @@ GiNaC::matrix inverse_checked(const GiNaC::matrix& A, const char* what) {
 
 Series Engine::along(const std::vector<ex>& e, const std::vector<std::vector<Series>>& jets,
                      int cap) const {
-  return shifted_sum(*dl_.jets, e, jet_subs(*dl_.jets, jets), cap);
+  return shifted_sum(*dl_.jets, e, jet_subs(*dl_.jets, solved(), jets), cap);
 }
 
 // V §4.6: recursive elimination. E_0 is affine in ẍ with matrix A = ∂E_0/∂ẍ; once ẍ = F is
@@ -340,27 +357,29 @@ Series Engine::along(const std::vector<ex>& e, const std::vector<std::vector<Ser
 std::vector<std::vector<ex>> Engine::solve_for_acceleration(const std::vector<std::vector<ex>>& E,
                                                             int order) const {
   const JetSpace& J = *dl_.jets;
-  const int n = J.dofs();
+  const std::vector<int> S = solved();
+  const int n = static_cast<int>(S.size());
   if (E.empty()) throw std::logic_error("empty Euler–Lagrange series");
-  for (const ex& e : E[0])
-    if (J.max_order(e) > 2)
-      throw NumericalError("the leading Euler–Lagrange term involves derivatives beyond ẍ");
+  for (int i : S)
+    for (int d : S)
+      if (J.max_order(E[0][i], d) > 2)
+        throw NumericalError("the leading Euler–Lagrange term involves derivatives beyond ẍ");
   GiNaC::matrix A(n, n);
   for (int i = 0; i < n; ++i)
     for (int j = 0; j < n; ++j) {
-      A(i, j) = GiNaC::expand(E[0][i].diff(J.x(2, j)));
+      A(i, j) = GiNaC::expand(E[0][S[i]].diff(J.x(2, S[j])));
       for (int l = 0; l < n; ++l)
-        if (!vanishes(A(i, j).diff(J.x(2, l))))
+        if (!vanishes(A(i, j).diff(J.x(2, S[l]))))
           throw NumericalError("the leading Euler–Lagrange term is not affine in ẍ");
     }
   const GiNaC::matrix Ainv = inverse_checked(A, "∂E_0/∂ẍ");
   GiNaC::exmap zero;
-  for (int j = 0; j < n; ++j) zero[J.x(2, j)] = 0;
+  for (int j = 0; j < n; ++j) zero[J.x(2, S[j])] = 0;
   std::vector<Series> F(n);
   std::vector<std::vector<ex>> f(1, std::vector<ex>(n));
   for (int i = 0; i < n; ++i) {
     ex acc = 0;
-    for (int j = 0; j < n; ++j) acc -= Ainv(i, j) * E[0][j].subs(zero);
+    for (int j = 0; j < n; ++j) acc -= Ainv(i, j) * E[0][S[j]].subs(zero);
     f[0][i] = GiNaC::expand(acc);
     F[i] = Series::constant(f[0][i]);  // the truncated ansatz, a polynomial in h
   }
@@ -369,12 +388,13 @@ std::vector<std::vector<ex>> Engine::solve_for_acceleration(const std::vector<st
     const int cap = m + 1;
     int top = 2;
     for (int k = 0; k <= m; ++k)
-      for (const ex& e : E[k]) top = std::max(top, J.max_order(e));
+      for (int i : S)
+        for (int d : S) top = std::max(top, J.max_order(E[k][i], d));
     const auto jets = jets_along(F, top, cap);
     std::vector<ex> r(n);
     for (int i = 0; i < n; ++i) {
       std::vector<ex> col;
-      for (int k = 0; k <= m; ++k) col.push_back(E[k][i]);
+      for (int k = 0; k <= m; ++k) col.push_back(E[k][S[i]]);
       const Series R = along(col, jets, cap);
       for (int k = 0; k < m; ++k)
         if (!vanishes(R.coeff(k)))
@@ -504,7 +524,8 @@ const std::vector<ex>& Engine::l_mod() {
   const auto& m = l_mesh();
   const auto& f = modified_equation();
   const JetSpace& J = *dl_.jets;
-  const int n = J.dofs();
+  const std::vector<int> S = solved();
+  const int n = static_cast<int>(S.size());
   // The modified equation truncated after h^{K−1} (a polynomial in h): what it leaves out
   // enters L_mesh at h^{K+1} at the earliest.
   const int terms = std::max(K_, 1);
@@ -512,7 +533,8 @@ const std::vector<ex>& Engine::l_mod() {
   for (int i = 0; i < n; ++i)
     for (int k = 0; k < terms; ++k) F[i].c.push_back(f[k][i]);
   int top = 2;
-  for (const ex& e : m) top = std::max(top, J.max_order(e));
+  for (const ex& e : m)
+    for (int d : S) top = std::max(top, J.max_order(e, d));
   const Series L = along(m, jets_along(F, top, K_ + 1), K_ + 1);
   for (int k = 0; k <= K_; ++k) lmod_.push_back(GiNaC::expand(L.coeff(k)));
   return lmod_;
@@ -520,6 +542,8 @@ const std::vector<ex>& Engine::l_mod() {
 
 // Series Legendre transform: p = ∂L/∂ẋ solved for ẋ order by order, H = p·ẋ − L.
 std::vector<ex> Engine::h_mod() {
+  if (solved().size() != static_cast<std::size_t>(dl_.jets->dofs()))
+    throw ArgumentError("--what", "the modified Hamiltonian needs every degree of freedom solved");
   const auto& L = l_mod();
   const JetSpace& J = *dl_.jets;
   const int n = J.dofs();

@@ -53,6 +53,10 @@ struct SymbolicDL {
   /// Place the interior node on the curve, qm = x(t), instead of eliminating it (the reading
   /// of Shen & Sun's proof of Theorem 12; not the discrete Lagrangian of the x_n sequence).
   bool interior_on_curve = false;
+  /// Degrees of freedom whose second derivative the modified equation gives (all when
+  /// empty). The others keep every derivative as a free symbol: Sharma et al. §4.3 solve for
+  /// q'' only, with t', t'', … left free, because the energy equation is redundant.
+  std::vector<int> solve_for;
   ex Ld;
   std::string description;
 };
@@ -167,7 +171,10 @@ class Engine {
   int K_;
   std::vector<ex> ldisc_, lmesh_, lmod_;
   std::vector<std::vector<ex>> f_;
-  /// Series of x^{(ℓ)}, ℓ = 2…top, on solutions of ẍ = F (F to precision F.prec).
+  /// The solved degrees of freedom (SymbolicDL::solve_for, or all).
+  std::vector<int> solved() const;
+  /// Series of x^{(ℓ)}, ℓ = 2…top, of the solved degrees of freedom on solutions of ẍ = F
+  /// (F and the result indexed by position in solved()).
   std::vector<std::vector<Series>> jets_along(const std::vector<Series>& F, int top, int cap) const;
   /// Three-point L_d: the interior node as a series, from ∂L_d/∂qm = 0 with q0, q1 (and h)
   /// given as series in `subs` (Newton's method on series, started at the mean of q0, q1).

@@ -92,8 +92,12 @@ GiNaC::symbol JetSpace::x(int order, int i) const {
 
 GiNaC::symbol JetSpace::p(int i) const { return p_.at(i); }
 
-int JetSpace::add_family(const std::string& name, const std::string& tex) {
-  families_.push_back({name, tex});
+int JetSpace::add_family(const std::string& name, const std::string& tex, std::vector<int> dofs) {
+  if (dofs.empty())
+    for (int i = 0; i < n_; ++i) dofs.push_back(i);
+  for (int d : dofs)
+    if (d < 0 || d >= n_) throw std::invalid_argument("abstract function of a missing dof");
+  families_.push_back({name, tex, std::move(dofs)});
   return static_cast<int>(families_.size()) - 1;
 }
 
@@ -106,7 +110,7 @@ GiNaC::symbol JetSpace::derivative(int family, std::vector<int> index) const {
   if (!index.empty()) {
     name += "_";
     for (int i : index) name += std::to_string(i + 1);
-    if (n_ == 1) {
+    if (f.dofs.size() == 1) {
       const auto m = index.size();
       tex += m <= 3 ? "^{" + std::string(m, '\'') + "}" : fmt::format("^{{({})}}", m);
     } else {
@@ -128,9 +132,13 @@ ex JetSpace::partial(const ex& e, int order, int i) const {
   const auto list = deriv_list_;
   for (const auto& [s, key] : list) {
     if (!e.has(s)) continue;
-    std::vector<int> idx = key.index;
-    idx.push_back(i);
-    out += e.diff(s) * derivative(key.family, idx);
+    const auto& dofs = families_.at(key.family).dofs;
+    for (std::size_t a = 0; a < dofs.size(); ++a) {
+      if (dofs[a] != i) continue;
+      std::vector<int> idx = key.index;
+      idx.push_back(static_cast<int>(a));
+      out += e.diff(s) * derivative(key.family, idx);
+    }
   }
   return out;
 }
@@ -146,6 +154,13 @@ ex JetSpace::total(const ex& e) const {
         out += e.diff(x(k, i)) * x(k + 1, i);
     }
   return out;
+}
+
+int JetSpace::max_order(const ex& e, int dof) const {
+  int top = -1;
+  for (int k = 0; k < static_cast<int>(jets_.size()); ++k)
+    if (e.has(jets_[k][dof])) top = k;
+  return top;
 }
 
 int JetSpace::max_order(const ex& e) const {

@@ -36,11 +36,16 @@ class JetSpace {
   /// The step size h.
   const GiNaC::symbol& h() const { return h_; }
 
-  /// Register an abstract function family ("U", "phi1", …); returns its id.
-  int add_family(const std::string& name, const std::string& tex);
+  /// Register an abstract function family ("U", "phi1", …); returns its id. Its arguments
+  /// are the degrees of freedom `dofs` (all of them when empty), in that order.
+  int add_family(const std::string& name, const std::string& tex, std::vector<int> dofs = {});
+  /// The degree of freedom of argument `arg` of a family.
+  int family_dof(int family, int arg) const { return families_.at(family).dofs.at(arg); }
+  int family_arity(int family) const { return static_cast<int>(families_.at(family).dofs.size()); }
   int families() const { return static_cast<int>(families_.size()); }
   const std::string& family_name(int f) const { return families_.at(f).name; }
-  /// The symbol for ∂^{|I|} U_f / ∂x_{I} at x (I sorted; empty = the value).
+  /// The symbol for ∂^{|I|} U_f / ∂x_{I} at x (I: argument positions, sorted; empty = the
+  /// value).
   GiNaC::symbol derivative(int family, std::vector<int> index) const;
 
   /// ∂e/∂x_i^{(order)}; for order 0 the chain rule through the abstract derivatives.
@@ -49,12 +54,15 @@ class JetSpace {
   ex total(const ex& e) const;
   /// Highest jet order that occurs in e (0 if none beyond x; −1 if e has no x at all).
   int max_order(const ex& e) const;
+  /// The same for one degree of freedom.
+  int max_order(const ex& e, int dof) const;
   /// Highest jet order created so far.
   int created_order() const { return static_cast<int>(jets_.size()) - 1; }
 
  private:
   struct Family {
     std::string name, tex;
+    std::vector<int> dofs;
   };
   int n_;
   GiNaC::symbol h_;

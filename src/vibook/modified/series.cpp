@@ -307,14 +307,16 @@ Series SeriesEvaluator::unary(const ex& e, const Series& arg) {
 Series SeriesEvaluator::abstract(int family, const std::vector<ex>& args,
                                  const std::vector<int>& index) {
   const int n = static_cast<int>(args.size());
-  if (n != J_.dofs()) throw std::logic_error("abstract function of the wrong dimension");
+  if (n != J_.family_arity(family))
+    throw std::logic_error("abstract function of the wrong dimension");
   std::vector<Series> delta(n);
   int top = cap_;
   for (int i = 0; i < n; ++i) {
+    const GiNaC::symbol xi = J_.x(0, J_.family_dof(family, i));
     delta[i] = eval(args[i]);
-    if (!vanishes(delta[i].coeff(0) - J_.x(0, i)))
+    if (!vanishes(delta[i].coeff(0) - xi))
       throw std::domain_error("abstract potential expanded away from the jet point x");
-    delta[i] = delta[i] - Series::constant(J_.x(0, i));
+    delta[i] = delta[i] - Series::constant(xi);
     top = std::min(top, delta[i].prec);
   }
   // powers[i][k] = δ_i^k / k!
