@@ -747,6 +747,88 @@ std::vector<claims::ClaimResult> sharma_eq58() {
   return out;
 }
 
+// ---------------------------------------------------------------------------------------------
+// SS-T10: Nyström methods, Theorem 10, on four tableaux.
+std::vector<claims::ClaimResult> shen_sun_t10() {
+  using T = modified::NystromTableau;
+  const numeric z = 0, h1 = numeric(1, 2);
+  const std::vector<std::pair<std::string, T>> methods = {
+      {"velocity Verlet", T{{0, 1}, {h1, 0}, {h1, h1}, {{z, z}, {h1, z}}}},
+      {"explicit Euler-Nyström", T{{0}, {0}, {1}, {{z}}}},
+      {"position Verlet", T{{h1}, {h1}, {1}, {{z}}}},
+      {"RKN4 (Nyström)", T{{0, h1, 1},
+                           {numeric(1, 6), numeric(1, 3), 0},
+                           {numeric(1, 6), numeric(2, 3), numeric(1, 6)},
+                           {{z, z, z}, {numeric(1, 8), z, z}, {z, h1, z}}}}};
+  Tally thm, cross;
+  std::string per_method;
+  bool printed46_gives_f = true;  // does the printed (4.6) give ẍ = f at leading order?
+  for (const auto& [name, tab] : methods) {
+    auto J = std::make_shared<JetSpace>(1);
+    const auto f = modified::nystrom_modified_equation(J, tab, 2);
+    const ex v = J->x(1, 0);
+    const ex F = J->derivative(0, {}), F1 = J->derivative(0, {0}), F2 = J->derivative(0, {0, 0});
+    numeric s1 = -1, s2 = 0, s3 = 0, s4 = 0;
+    for (std::size_t i = 0; i < tab.c.size(); ++i) {
+      const numeric c = tab.c[i], bb = tab.bbar[i], bh = tab.bhat[i];
+      s1 += bh * c + bb;
+      s2 += bh * c * c + 2 * (bb - bh) * c - bb;
+      s3 += 2 * bb * c - bh * c - bb;
+      for (std::size_t j = 0; j < tab.c.size(); ++j) s4 += 2 * (tab.abar[i][j] - c * tab.bbar[j]);
+    }
+    const ex print1 = s1 * F1 * v;
+    const ex print2 =
+        -numeric(1, 12) * (F2 * v * v + F1 * F) +
+        numeric(1, 2) * (F2 * v * v + F1 * F + s2 * F2 * v * v + s3 * F1 * F + s4 * F1 * F);
+    thm.add(name + " f^[0]", f[0][0], F);
+    thm.add(name + " f^[1]", f[1][0], print1);
+    thm.add(name + " f^[2]", f[2][0], print2);
+    per_method += fmt::format("{}: f^[1] {}, f^[2] {}; ", name,
+                              modified::vanishes(f[1][0] - print1) ? "matches" : "differs",
+                              modified::vanishes(f[2][0] - print2) ? "matches" : "differs");
+    const auto fp = modified::nystrom_modified_equation(J, tab, 0, true);
+    if (name == "velocity Verlet") printed46_gives_f = modified::vanishes(fp[0][0] - F);
+    if (name == "velocity Verlet") {
+      // The same difference equation as Störmer–Verlet: with f = −U' the variational engine's
+      // modified equation (22).
+      Engine S(modified::make_discrete_lagrangian(Method::sv, Potential::generic, 1), 2);
+      const JetSpace& JS = S.jets();
+      const GiNaC::exmap to_f = {{JS.derivative(0, {0}), -F},
+                                 {JS.derivative(0, {0, 0}), -F1},
+                                 {JS.derivative(0, {0, 0, 0}), -F2},
+                                 {JS.x(1, 0), v}};
+      for (int k = 0; k <= 2; ++k)
+        cross.add(fmt::format("velocity Verlet against sv, h^{}", k), f[k][0],
+                  S.modified_equation()[k][0].subs(to_f));
+    }
+  }
+  claims::ClaimResult r = result(
+      "SS-T10", thm,
+      "Nyström methods (4.5) with a generic force f, the velocity eliminated between two steps, "
+      "solved for ẍ; Theorem 10's f^[1], f^[2] against the engine for four tableaux:");
+  r.note += " " + per_method +
+            "Cross-check (velocity Verlet against the variational engine's "
+            "Störmer–Verlet, f = −U'): " +
+            cross.summary() +
+            ". RKN4 has order 4, so its f^[1] "
+            "and f^[2] must vanish; the engine finds both zero, Theorem 10's f^[2] does not.";
+  if (!cross.ok()) r.status = claims::Status::not_reproduced;
+  std::vector<claims::ClaimResult> out = {r};
+  out.push_back(claims::erratum(
+      {"SS-ERR-4.6", "SS", "Thm 10 proof, (4.6)",
+       "Weights of the two-step form of a Nyström method"},
+      "check-modified", {{"printed_gives_f0_equal_f", printed46_gives_f ? 1.0 : 0.0}},
+      !printed46_gives_f && cross.ok(),
+      "Printed (4.6): (x(t+h) − 2x(t) + x(t−h))/h² = Σ_i [b̂_i f(x^i(t−h)) + (b̄_i − b̂_i) "
+      "f(x^i(t))]. "
+      "Subtracting (4.5a) at two consecutive steps and using (4.5b) gives Σ_i [(b̂_i − b̄_i) "
+      "f(x^i(t−h)) + b̄_i f(x^i(t))]: b̂ and b̄ trade places. For velocity Verlet (c = (0, 1), "
+      "b̄ = (½, 0), b̂ = (½, ½)) the printed weights give the leading term ẍ = f/2, not ẍ = f; the "
+      "corrected ones give Störmer–Verlet's recurrence, whose modified equation the engine "
+      "derives independently from the discrete Lagrangian (cross-check in SS-T10)."));
+  return out;
+}
+
 std::vector<claims::ClaimResult> run(const Context&) {
   const std::lock_guard<std::mutex> lock(modified::ginac_mutex());  // GiNaC: one thread
   std::vector<claims::ClaimResult> out;
@@ -761,6 +843,7 @@ std::vector<claims::ClaimResult> run(const Context&) {
   out.push_back(shen_sun_err_422());
   for (auto& r : harmonic_series()) out.push_back(r);
   for (auto& r : sharma_eq58()) out.push_back(r);
+  for (auto& r : shen_sun_t10()) out.push_back(r);
   return out;
 }
 
@@ -771,9 +854,9 @@ Check check_modified() {
           "Modified equations and Lagrangians re-derived by the engine (Vermeeren §3–5, Shen–Sun "
           "§4, App. A)",
           false,
-          {"V-L6", "V-EX2", "V-SV2", "V-SV4", "V-ERR-SV4", "V-EX4", "V-SE", "V-EX5", "SS-T11",
-           "SS-ERR-4.18", "SS-T12", "SS-ERR-4.22", "SS-AA", "SS-ERR-A", "V-EX3", "S-EQ58",
-           "S-ERR-60", "S-ERR-61", "S-ERR-65"},
+          {"V-L6",  "V-EX2",  "V-SV2",       "V-SV4",    "V-ERR-SV4",   "V-EX4",  "V-SE",
+           "V-EX5", "SS-T11", "SS-ERR-4.18", "SS-T12",   "SS-ERR-4.22", "SS-AA",  "SS-ERR-A",
+           "V-EX3", "S-EQ58", "S-ERR-60",    "S-ERR-61", "S-ERR-65",    "SS-T10", "SS-ERR-4.6"},
           run};
 }
 

@@ -596,6 +596,58 @@ std::vector<ex> Engine::h_mod() {
   return out;
 }
 
+// Shen & Sun, Theorem 10 and (4.5)–(4.7): Nyström methods.
+std::vector<std::vector<ex>> nystrom_modified_equation(std::shared_ptr<JetSpace> J,
+                                                       const NystromTableau& tab, int K,
+                                                       bool printed_46) {
+  if (J->dofs() != 1) throw ArgumentError("--dim", "Nyström methods: one degree of freedom");
+  const int s = static_cast<int>(tab.c.size());
+  int fam = -1;
+  for (int f = 0; f < J->families(); ++f)
+    if (J->family_name(f) == "f") fam = f;
+  if (fam < 0) fam = J->add_family("f", "f");
+  const GiNaC::symbol y("y");
+  const ex fy = abstract_call(fam, {y});
+  const int P = K + 5, cap = K + 4;
+  auto force = [&](const Series& X) { return SeriesEvaluator(*J, {{y, X}}, cap)(fy); };
+  const Series h2 = Series::h() * Series::h();
+  // Stages of the step that starts at x(t0) and ends at x(t0 + h), s0 = position of t0.
+  auto stages = [&](const Series& x0, const Series& x1) {
+    std::vector<Series> X(s);
+    for (int i = 0; i < s; ++i)
+      X[i] = (Series::constant(tab.c[i]) * x1 + Series::constant(1 - tab.c[i]) * x0).truncated(cap);
+    for (int it = 0; it < K / 2 + 3; ++it) {
+      std::vector<Series> F(s);
+      for (int j = 0; j < s; ++j) F[j] = force(X[j]);
+      for (int i = 0; i < s; ++i) {
+        Series acc = Series::constant(tab.c[i]) * x1 + Series::constant(1 - tab.c[i]) * x0;
+        for (int j = 0; j < s; ++j)
+          acc = acc + Series::constant(tab.abar[i][j] - tab.c[i] * tab.bbar[j]) * h2 * F[j];
+        X[i] = acc.truncated(cap);
+      }
+    }
+    return X;
+  };
+  const Series xm = shifted_jet(*J, 0, -1, P), x0 = shifted_jet(*J, 0, 0, P),
+               xp = shifted_jet(*J, 0, 1, P);
+  const auto Sback = stages(xm, x0), Snow = stages(x0, xp);
+  Series rhs = Series::constant(0);
+  for (int i = 0; i < s; ++i) {
+    const GiNaC::numeric wb = printed_46 ? tab.bhat[i] : tab.bhat[i] - tab.bbar[i];
+    const GiNaC::numeric wn = printed_46 ? tab.bbar[i] - tab.bhat[i] : tab.bbar[i];
+    rhs = rhs + Series::constant(wb) * force(Sback[i]) + Series::constant(wn) * force(Snow[i]);
+  }
+  const Series psi = ((xp - Series::constant(2) * x0 + xm) / h2 - rhs).truncated(K + 1);
+  if (psi.prec < K + 1) throw std::logic_error("Nyström expansion lost precision");
+  std::vector<std::vector<ex>> E(K + 1, std::vector<ex>(1));
+  for (int k = 0; k <= K; ++k) E[k][0] = GiNaC::expand(psi.coeff(k));
+  SymbolicDL none;
+  none.jets = J;
+  none.description = "Nyström method";
+  const Engine solver(none, K);
+  return solver.solve_for_acceleration(E, K);
+}
+
 // ---------------------------------------------------------------------------------------------
 // Output
 // ---------------------------------------------------------------------------------------------

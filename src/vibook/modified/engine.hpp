@@ -185,6 +185,24 @@ class Engine {
                int cap) const;
 };
 
+/// A Nyström method (Shen & Sun (4.5)) for ẍ = f(x): stages x^i = x + c_i h v + h² Σ ā_ij f(x^j),
+/// x_{n+1} = x + h v + h² Σ b̄_i f(x^i), v_{n+1} = v + h Σ b̂_i f(x^i).
+struct NystromTableau {
+  std::vector<GiNaC::numeric> c, bbar, bhat;
+  std::vector<std::vector<GiNaC::numeric>> abar;
+};
+
+/// Modified equation ẍ = Σ h^k f_k of a Nyström method on a generic 1-DOF force f (symbols f,
+/// f_1, f_11, … for f, f', f'', … at x), to order K: the velocity is eliminated between two
+/// steps, x(t+h) − 2x(t) + x(t−h) = h² Σ_i [(b̂_i − b̄_i) f(x^i(t−h)) + b̄_i f(x^i(t))] with the
+/// stages x^i(t) = c_i x(t+h) + (1 − c_i) x(t) + h² Σ_j (ā_ij − c_i b̄_j) f(x^j(t)) (solved by
+/// fixed-point iteration on series), and the result solved for ẍ as in V §4.6.
+/// `printed_46` uses the elimination as Shen & Sun print it in (4.6) instead:
+/// Σ_i [b̂_i f(x^i(t−h)) + (b̄_i − b̂_i) f(x^i(t))].
+std::vector<std::vector<ex>> nystrom_modified_equation(std::shared_ptr<JetSpace> J,
+                                                       const NystromTableau& tab, int K,
+                                                       bool printed_46 = false);
+
 /// Output formats of `vibook modified`.
 enum class Format { text, latex, python };
 Format parse_format(const std::string& s);

@@ -119,6 +119,9 @@ TEST_CASE("check-modified: every printed formula against the engine") {
     INFO(r.id << ": " << r.note);
     if (r.id.find("-ERR-") != std::string::npos) {
       CHECK(r.status == claims::Status::erratum);
+    } else if (r.id == "SS-T10") {  // f^[2] of Theorem 10 fails for RKN4
+      CHECK(r.status == claims::Status::not_reproduced);
+      CHECK(r.value("terms_differing") == 1);
     } else if (r.id == "S-EQ58") {  // three misprints in intermediate formulas: errata
       CHECK(r.status == claims::Status::reproduced_with_caveat);
     } else if (r.id == "SS-T12") {  // (4.22) sign and (4.23)–(4.24): errata
