@@ -36,7 +36,8 @@ const std::vector<Check>& registry() {
                                          check_modified(),
                                          check_v_t16(),
                                          vermeeren_fig3(),
-                                         shen_sun_fig1()};
+                                         shen_sun_fig1(),
+                                         check_ss_t13()};
   return all;
 }
 

@@ -90,6 +90,7 @@ Check check_modified();
 Check check_v_t16();
 Check vermeeren_fig3();
 Check shen_sun_fig1();
+Check check_ss_t13();
 /// The long study at a fraction `scale` of its length (the doctest runs it small).
 std::vector<claims::ClaimResult> run_eq29_long(const Context& ctx, double scale);
 
