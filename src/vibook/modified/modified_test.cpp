@@ -178,7 +178,7 @@ TEST_CASE("shen-sun-fig1: the discrete pendulum orbit on a level set of H_mod,1 
   CHECK(r.value("eq420_matches_engine_to_O(h^2)") == 1.0);
 }
 
-TEST_CASE("engine: VI-2, interior node eliminated; the meshed and the direct route agree") {
+TEST_CASE("engine: VI-2 with the interior node eliminated, meshed and direct route agree") {
   Engine E(make_discrete_lagrangian(Method::vi2, Potential::kepler, 2, GiNaC::numeric(1, 2)), 3);
   const auto& f = E.modified_equation();
   const auto g = E.modified_equation_direct();
