@@ -107,13 +107,21 @@ int run_modified(const ModifiedOptions& o) {
                                               "meshed, disc)",
                                               o.what));
   }
+  // Kepler: display in r = |x| (radial_form), a canonical and much shorter form.
+  const bool radial = p == Potential::kepler;
+  const GiNaC::symbol r("r", "|x|");
+  if (radial)
+    for (auto& [lhs, c] : blocks)
+      for (ex& e : c) e = radial_form(e, J.x(0, 0), J.x(0, 1), r);
   fmt::print("{} {}; order h^{}\n", comment, E.discrete_lagrangian().description, o.order);
+  if (radial && f != Format::python) fmt::print("{} r = |x| = sqrt(x1^2 + x2^2)\n", comment);
   if (!cross.empty()) fmt::print("{} {}\n", comment, cross);
   if (f == Format::python) {
     std::set<std::string> names;
     for (const auto& [lhs, c] : blocks)
       for (const ex& e : c) collect_symbols(e, names);
     names.erase("h");
+    names.erase("r");
     std::string list = "h";
     for (const auto& n : names) list += " " + n;
     std::string lhs_list = list;
@@ -121,6 +129,7 @@ int run_modified(const ModifiedOptions& o) {
       if (ch == ' ') ch = ',';
     fmt::print("from sympy import Rational, symbols, sqrt, cos, sin\n");
     fmt::print("{} = symbols('{}')\n", lhs_list, list);
+    if (radial) fmt::print("r = sqrt(x1**2 + x2**2)\n");
   }
   for (const auto& [lhs, c] : blocks) {
     if (f == Format::text)

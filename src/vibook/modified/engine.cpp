@@ -648,6 +648,27 @@ std::vector<std::vector<ex>> nystrom_modified_equation(std::shared_ptr<JetSpace>
   return solver.solve_for_acceleration(E, K);
 }
 
+ex radial_form(const ex& e, const GiNaC::symbol& x1, const GiNaC::symbol& x2,
+               const GiNaC::symbol& r) {
+  const ex rr =
+      e.subs(GiNaC::pow(x1 * x1 + x2 * x2, GiNaC::wild(0)) == GiNaC::pow(r, 2 * GiNaC::wild(0)),
+             GiNaC::subs_options::algebraic);
+  struct Map : GiNaC::map_function {
+    const GiNaC::symbol &x1, &x2, &r;
+    Map(const GiNaC::symbol& a, const GiNaC::symbol& b, const GiNaC::symbol& c)
+        : x1(a), x2(b), r(c) {}
+    ex operator()(const ex& x) override {
+      if (GiNaC::is_a<GiNaC::power>(x) && x.op(0).is_equal(x2) && GiNaC::is_a<numeric>(x.op(1)) &&
+          GiNaC::ex_to<numeric>(x.op(1)).is_pos_integer()) {
+        const long n = GiNaC::ex_to<numeric>(x.op(1)).to_long();
+        return GiNaC::pow(x2, n % 2) * GiNaC::pow(r * r - x1 * x1, n / 2);
+      }
+      return x.map(*this);
+    }
+  } map(x1, x2, r);
+  return GiNaC::collect_common_factors(GiNaC::expand(map(GiNaC::expand(rr))));
+}
+
 // ---------------------------------------------------------------------------------------------
 // Output
 // ---------------------------------------------------------------------------------------------

@@ -203,6 +203,12 @@ std::vector<std::vector<ex>> nystrom_modified_equation(std::shared_ptr<JetSpace>
                                                        const NystromTableau& tab, int K,
                                                        bool printed_46 = false);
 
+/// Display form for a radial potential in two dimensions: powers of x1² + x2² become powers of
+/// r = |x|, and x2² is replaced by r² − x1², which makes the expression canonical in
+/// (x1, x2, r) with x2 to the first power at most. The value is unchanged.
+ex radial_form(const ex& e, const GiNaC::symbol& x1, const GiNaC::symbol& x2,
+               const GiNaC::symbol& r);
+
 /// Output formats of `vibook modified`.
 enum class Format { text, latex, python };
 Format parse_format(const std::string& s);

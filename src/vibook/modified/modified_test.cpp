@@ -206,3 +206,16 @@ TEST_CASE("check-ss-t13: LRL precession per period, predicted from the modified 
   CHECK(r.value("vi1_has_h1_term") == 1.0);
   CHECK(r.value("sv_has_h1_term") == 0.0);
 }
+
+TEST_CASE("radial_form: the display form of Kepler expressions has the same value") {
+  Engine E(make_discrete_lagrangian(Method::sv, Potential::kepler, 2), 2);
+  const JetSpace& J = E.jets();
+  const GiNaC::symbol r("r");
+  const ex x1 = J.x(0, 0), x2 = J.x(0, 1);
+  for (const auto& row : E.modified_equation())
+    for (const ex& e : row) {
+      const ex d = radial_form(e, J.x(0, 0), J.x(0, 1), r);
+      CHECK(vanishes(d.subs(r == GiNaC::sqrt(x1 * x1 + x2 * x2)) - e));
+      CHECK(!d.has(GiNaC::pow(x1 * x1 + x2 * x2, numeric(-3, 2))));
+    }
+}
