@@ -227,7 +227,7 @@ TEST_CASE("radial_form: the display form of Kepler expressions has the same valu
       const double value = GiNaC::ex_to<numeric>(e.subs(at).evalf()).to_double();
       const double shown = GiNaC::ex_to<numeric>(back.subs(at).evalf()).to_double();
       CHECK(std::abs(shown - value) <= 1e-14 * (1 + std::abs(value)));
-      CHECK(!d.is_zero());
+      CHECK(d.is_zero() == vanishes(e));
       CHECK(!d.has(GiNaC::pow(x1 * x1 + x2 * x2, numeric(-3, 2))));
     }
 }
