@@ -9,7 +9,7 @@ med, its, wp = {}, {}, {}
 for b in data["benchmarks"]:
     if b.get("aggregate_name") != "median":
         continue
-    run = b["run_name"].replace("BM_", "")
+    run = b["run_name"].replace("BM_", "").split("/iterations:")[0]
     if run.startswith("wp_"):  # work-precision: method/j -> (seconds per run, angle error)
         method, j = run[3:].split("/")
         scale = {"ns": 1e-9, "us": 1e-6, "ms": 1e-3, "s": 1.0}[b.get("time_unit", "ns")]
@@ -77,9 +77,9 @@ if eng:
               ("engine_sv_generic/8", "L_mod to h⁸, Störmer–Verlet, generic 1-DOF U"),
               ("engine_sv_kepler/4", "L_mod to h⁴, Störmer–Verlet, Kepler 2-D"),
               ("ldisc_engine/4", "L_disc([x], h) to h⁴, engine"),
-              ("ldisc_ginac_series/4", "L_disc([x], h) to h⁴, GiNaC series() (one run)"),
+              ("ldisc_ginac_series/4", "L_disc([x], h) to h⁴, GiNaC series() (one iteration per repetition)"),
               ("ldisc_engine/6", "L_disc([x], h) to h⁶, engine"),
-              ("ldisc_ginac_series/6", "L_disc([x], h) to h⁶, GiNaC series() (one run)")]
+              ("ldisc_ginac_series/6", "L_disc([x], h) to h⁶, GiNaC series() (one iteration per repetition)")]
     for key, label in labels:
         if key in eng:
             print(f"<tr><td>{label}</td><td>{eng[key]:.4g} s</td></tr>")
