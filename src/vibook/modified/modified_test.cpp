@@ -231,3 +231,18 @@ TEST_CASE("radial_form: the display form of Kepler expressions has the same valu
       CHECK(!d.has(GiNaC::pow(x1 * x1 + x2 * x2, numeric(-3, 2))));
     }
 }
+
+TEST_CASE("engine: midpoint on the oscillator, modified Hamiltonian = (1/h)·arctan(h/2)·(p² + x²)") {
+  // The midpoint rule rotates phase space by θ = 2 arctan(h/2) per step, so it is exactly the
+  // time-h flow of (θ/h)·½(p² + x²). The engine's Legendre transform of L_mod must agree to h^8.
+  Engine E(make_discrete_lagrangian(Method::midpoint, Potential::harmonic, 1), 8);
+  const JetSpace& J = E.jets();
+  const auto H = E.h_mod();
+  const GiNaC::symbol h("h");
+  const ex exact = GiNaC::series_to_poly((GiNaC::atan(h / 2) / h).series(h == 0, 10));
+  const ex pq = J.p(0) * J.p(0) + J.x(0, 0) * J.x(0, 0);
+  for (int k = 0; k <= 8; ++k) {
+    INFO("h^" << k);
+    CHECK(vanishes(H[k] - exact.coeff(h, k) * pq));
+  }
+}
