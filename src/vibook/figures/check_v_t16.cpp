@@ -164,45 +164,15 @@ Study defect_of(const modified::SymbolicDL& dl, const std::vector<std::vector<ex
   s.k = k;
   s.expected = expected;
   s.label = label;
-  std::vector<GiNaC::symbol> xv;
-  for (int i = 0; i < n; ++i) xv.push_back(J.x(0, i));
-  for (int i = 0; i < n; ++i) xv.push_back(J.x(1, i));
-  xv.push_back(J.h());
-  std::vector<Compiled> F;
-  for (int i = 0; i < n; ++i) {
-    ex acc = 0;
-    for (int q = 0; q <= k; ++q) acc += GiNaC::pow(J.h(), q) * f[q][i];
-    F.emplace_back(acc, xv);
-  }
   const DiscreteDerivatives D(dl);
   for (double hd : kSteps) {
     const LD h = hd;
-    auto rhs = [&](const std::vector<LD>& y) {
-      std::vector<LD> a(y.begin(), y.end());
-      a.push_back(h);
-      std::vector<LD> d(2 * n);
-      for (int i = 0; i < n; ++i) {
-        d[i] = y[n + i];
-        d[n + i] = F[i](a);
-      }
-      return d;
-    };
+    const modified::ModifiedFlow F(J, f, k, h);
     auto flow = [&](LD T) {
       std::vector<LD> y(x0);
       y.insert(y.end(), v0.begin(), v0.end());
       const int M = 400;
-      const LD dt = T / M;
-      auto add = [](const std::vector<LD>& a, const std::vector<LD>& b, LD c) {
-        std::vector<LD> r(a);
-        for (std::size_t i = 0; i < r.size(); ++i) r[i] += c * b[i];
-        return r;
-      };
-      for (int s2 = 0; s2 < M; ++s2) {
-        const auto k1 = rhs(y), k2 = rhs(add(y, k1, dt / 2)), k3 = rhs(add(y, k2, dt / 2)),
-                   k4 = rhs(add(y, k3, dt));
-        for (std::size_t i = 0; i < y.size(); ++i)
-          y[i] += dt / 6 * (k1[i] + 2 * k2[i] + 2 * k3[i] + k4[i]);
-      }
+      for (int s2 = 0; s2 < M; ++s2) F.rk4_step(y, T / M);
       return std::vector<LD>(y.begin(), y.begin() + n);
     };
     const auto xm = flow(-h), xp = flow(h);
@@ -285,6 +255,24 @@ std::string describe(const Study& s) {
   return fmt::format("{}: slope {:.2f}, expected {} [{}]", s.label, s.slope, s.expected, pts);
 }
 
+// One claim from a list of order studies: reproduced when every fitted order is within
+// tolerance of its expected order; each slope a value, each study in the note.
+claims::ClaimResult summarize(const std::string& id, const std::vector<Study>& studies,
+                              const std::string& intro) {
+  claims::ClaimResult r;
+  r.id = id;
+  r.source = "check-v-t16";
+  r.note = intro;
+  bool all = true;
+  for (const auto& s : studies) {
+    all = all && s.ok;
+    r.values.push_back({s.label + " slope", s.slope});
+    r.note += describe(s) + ". ";
+  }
+  r.status = all ? claims::Status::reproduced : claims::Status::not_reproduced;
+  return r;
+}
+
 std::vector<claims::ClaimResult> run(const Context&) {
   const std::lock_guard<std::mutex> lock(modified::ginac_mutex());  // GiNaC: one thread
   const std::vector<LD> xp = {1.0L}, vp = {0.5L};                   // pendulum
@@ -295,23 +283,13 @@ std::vector<claims::ClaimResult> run(const Context&) {
       defects.push_back(defect_study(m, Potential::pendulum, k, xp, vp));
       defects.push_back(defect_study(m, Potential::kepler, k, xk, vk));
     }
-  claims::ClaimResult t16;
-  t16.id = "V-T16";
-  t16.source = "check-v-t16";
-  bool all = true;
-  std::string note =
+  const claims::ClaimResult t16 = summarize(
+      "V-T16", defects,
       "Defect of the discrete Euler–Lagrange equation, max_i |D2 L_d(x(−h), x(0)) + D1 L_d(x(0), "
       "x(h))|/h, along the solution of the k-th truncated modified equation through one state "
       "(RK4, 400 substeps, long double), h = 0.2 … 0.025. Expected order: the first order the "
       "truncation drops (k + 1, or k + 2 when that term vanishes), computed by the engine; "
-      "two-sided tolerance 0.3. ";
-  for (const auto& s : defects) {
-    all = all && s.ok;
-    t16.values.push_back({s.label + " slope", s.slope});
-    note += describe(s) + ". ";
-  }
-  t16.status = all ? claims::Status::reproduced : claims::Status::not_reproduced;
-  t16.note = note;
+      "two-sided tolerance 0.3. ");
 
   // VI-2 (Shen & Sun (3.8)) on Kepler with φ^[1] = (3/10)U, φ^[2] = (7/10)U: the defect of
   // the actual integrator's discrete Euler–Lagrange equation (interior node solved by Newton)
@@ -376,21 +354,11 @@ std::vector<claims::ClaimResult> run(const Context&) {
     ham.push_back(hamiltonian_study<Kepler, ImplicitMidpoint<Kepler>>(
         Method::midpoint, Potential::kepler, k, qk, pk));
   }
-  claims::ClaimResult se;
-  se.id = "V-SE";
-  se.source = "check-v-t16";
-  bool ham_ok = true;
-  std::string hn =
+  const claims::ClaimResult se = summarize(
+      "V-SE", ham,
       "H_mod,k from the engine (series Legendre transform of L_mod,k) evaluated along the "
       "method's own map with its discrete momenta (200 steps, double): largest change per step, "
-      "h = 0.2 … 0.025; expected order j + 1 with j the first order H_mod,k drops. ";
-  for (const auto& s : ham) {
-    ham_ok = ham_ok && s.ok;
-    se.values.push_back({s.label + " slope", s.slope});
-    hn += describe(s) + ". ";
-  }
-  se.status = ham_ok ? claims::Status::reproduced : claims::Status::not_reproduced;
-  se.note = hn;
+      "h = 0.2 … 0.025; expected order j + 1 with j the first order H_mod,k drops. ");
   return {t16, se, err};
 }
 

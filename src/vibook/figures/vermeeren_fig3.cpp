@@ -104,19 +104,9 @@ std::vector<claims::ClaimResult> run(const Context& ctx) {
       modified::make_discrete_lagrangian(modified::Method::sv, modified::Potential::kepler, 2), 4);
   const auto& J = E.jets();
   const auto& f = E.modified_equation();
-  std::vector<GiNaC::symbol> vars = {J.x(0, 0), J.x(0, 1), J.x(1, 0), J.x(1, 1), J.h()};
   auto modified_run = [&](int k, std::ostream* csv) {
-    std::vector<modified::Compiled> F;
-    for (int i = 0; i < 2; ++i) {
-      modified::ex acc = 0;
-      for (int m = 0; m <= k; ++m) acc += GiNaC::pow(J.h(), m) * f[m][i];
-      F.emplace_back(acc, vars);
-    }
-    std::array<LD, 4> y = {x0(0), x0(1), v0(0), v0(1)};
-    auto rhs = [&](const std::array<LD, 4>& s) {
-      const std::vector<LD> a = {s[0], s[1], s[2], s[3], LD(h)};
-      return std::array<LD, 4>{s[2], s[3], F[0](a), F[1](a)};
-    };
+    const modified::ModifiedFlow F(J, f, k, h);
+    std::vector<LD> y = {x0(0), x0(1), v0(0), v0(1)};
     const int sub = 25;  // RK4 step h/25 = 0.02: phase error far below the precession digits
     const LD dt = LD(h) / sub;
     AngleFit fit;
@@ -129,13 +119,7 @@ std::vector<claims::ClaimResult> run(const Context& ctx) {
                 Vec<double, 2>(double(y[2]), double(y[3])));
       }
       if (rec && rec->due(j)) rec->offer(j, std::array<double, 3>{t, double(y[0]), double(y[1])});
-      auto add = [](std::array<LD, 4> a, const std::array<LD, 4>& b, LD c) {
-        for (int i = 0; i < 4; ++i) a[i] += c * b[i];
-        return a;
-      };
-      const auto k1 = rhs(y), k2 = rhs(add(y, k1, dt / 2)), k3 = rhs(add(y, k2, dt / 2)),
-                 k4 = rhs(add(y, k3, dt));
-      for (int i = 0; i < 4; ++i) y[i] += dt / 6 * (k1[i] + 2 * k2[i] + 2 * k3[i] + k4[i]);
+      F.rk4_step(y, dt);
     }
     if (rec) rec->finish();
     return fit;

@@ -81,4 +81,42 @@ Fn compile(const ex& e, const std::vector<GiNaC::symbol>& vars) {
 
 Compiled::Compiled(const ex& e, const std::vector<GiNaC::symbol>& vars) : f_(compile(e, vars)) {}
 
+ModifiedFlow::ModifiedFlow(const JetSpace& J, const std::vector<std::vector<ex>>& f, int k,
+                           long double h)
+    : n_(J.dofs()), h_(h) {
+  std::vector<GiNaC::symbol> vars;
+  for (int i = 0; i < n_; ++i) vars.push_back(J.x(0, i));
+  for (int i = 0; i < n_; ++i) vars.push_back(J.x(1, i));
+  vars.push_back(J.h());
+  for (int i = 0; i < n_; ++i) {
+    ex acc = 0;
+    for (int m = 0; m <= k; ++m) acc += GiNaC::pow(J.h(), m) * f.at(m).at(i);
+    F_.emplace_back(acc, vars);
+  }
+}
+
+std::vector<long double> ModifiedFlow::rhs(const std::vector<long double>& y) const {
+  std::vector<long double> a(y.begin(), y.end());
+  a.push_back(h_);
+  std::vector<long double> d(2 * n_);
+  for (int i = 0; i < n_; ++i) {
+    d[i] = y[n_ + i];
+    d[n_ + i] = F_[i](a);
+  }
+  return d;
+}
+
+void ModifiedFlow::rk4_step(std::vector<long double>& y, long double dt) const {
+  auto add = [](const std::vector<long double>& a, const std::vector<long double>& b,
+                long double c) {
+    std::vector<long double> r(a);
+    for (std::size_t i = 0; i < r.size(); ++i) r[i] += c * b[i];
+    return r;
+  };
+  const auto k1 = rhs(y), k2 = rhs(add(y, k1, dt / 2)), k3 = rhs(add(y, k2, dt / 2)),
+             k4 = rhs(add(y, k3, dt));
+  for (std::size_t i = 0; i < y.size(); ++i)
+    y[i] += dt / 6 * (k1[i] + 2 * k2[i] + 2 * k3[i] + k4[i]);
+}
+
 }  // namespace vibook::modified

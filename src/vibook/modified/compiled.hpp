@@ -22,4 +22,20 @@ class Compiled {
   std::function<long double(const long double*)> f_;
 };
 
+/// The modified equation truncated after h^k, ẍ = Σ_{m≤k} h^m f_m(x, ẋ) with f from
+/// Engine::modified_equation(), compiled at a fixed step size h, and its classical RK4 step on
+/// y = (x_1…x_N, ẋ_1…ẋ_N) in long double: how the checks integrate modified solutions.
+class ModifiedFlow {
+ public:
+  ModifiedFlow(const JetSpace& J, const std::vector<std::vector<ex>>& f, int k, long double h);
+  /// Advance y by dt (negative dt integrates backwards).
+  void rk4_step(std::vector<long double>& y, long double dt) const;
+
+ private:
+  int n_;
+  long double h_;
+  std::vector<Compiled> F_;
+  std::vector<long double> rhs(const std::vector<long double>& y) const;
+};
+
 }  // namespace vibook::modified
