@@ -32,9 +32,8 @@ struct Tally {
   void add(const std::string& label, const ex& engine, const ex& print) {
     ++compared;
     if (!modified::vanishes(engine - print)) {
-      std::ostringstream os;
-      os << label << ": engine " << engine << " vs print " << print;
-      mismatches.push_back(os.str());
+      mismatches.push_back(label + ": engine " + modified::canonical_string(engine) + " vs print " +
+                           modified::canonical_string(print));
     }
   }
   bool ok() const { return mismatches.empty(); }

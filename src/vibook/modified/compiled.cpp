@@ -1,6 +1,8 @@
 // Numerical evaluation of the engine's expressions (for Vermeeren 2017, Theorem 16).
 #include "vibook/modified/compiled.hpp"
 
+#include "vibook/modified/canonical.hpp"
+
 #include <cmath>
 #include <sstream>
 #include <stdexcept>
@@ -34,8 +36,10 @@ Fn compile(const ex& e, const std::vector<GiNaC::symbol>& vars) {
     throw std::invalid_argument("compiled expression: unbound symbol " + os.str());
   }
   if (GiNaC::is_a<GiNaC::add>(e) || GiNaC::is_a<GiNaC::mul>(e)) {
+    // Canonical order (canonical.hpp): GiNaC's own order changes from run to run, and with
+    // it the rounding of the sum.
     std::vector<Fn> ops;
-    for (std::size_t k = 0; k < e.nops(); ++k) ops.push_back(compile(e.op(k), vars));
+    for (const ex& x : canonical_operands(e)) ops.push_back(compile(x, vars));
     if (GiNaC::is_a<GiNaC::add>(e))
       return [ops](const long double* a) {
         long double s = 0;
@@ -79,7 +83,11 @@ Fn compile(const ex& e, const std::vector<GiNaC::symbol>& vars) {
 }
 }  // namespace
 
-Compiled::Compiled(const ex& e, const std::vector<GiNaC::symbol>& vars) : f_(compile(e, vars)) {}
+// Expanded first: the engine may return the same value in differently grouped forms from one
+// run to the next (its intermediate maps are ordered by GiNaC's run-dependent hashes), and the
+// expanded sum of monomials, in canonical order, is one form only.
+Compiled::Compiled(const ex& e, const std::vector<GiNaC::symbol>& vars)
+    : f_(compile(GiNaC::expand(e), vars)) {}
 
 ModifiedFlow::ModifiedFlow(const JetSpace& J, const std::vector<std::vector<ex>>& f, int k,
                            long double h)

@@ -673,26 +673,7 @@ ex radial_form(const ex& e, const GiNaC::symbol& x1, const GiNaC::symbol& x2,
 // Output
 // ---------------------------------------------------------------------------------------------
 
-namespace {
-void python_numeric(const numeric& x, const GiNaC::print_python& c, unsigned) {
-  std::ostringstream os;
-  if (x.is_integer()) {
-    os << GiNaC::dflt << x;
-  } else if (x.is_rational()) {
-    os << "Rational(" << GiNaC::dflt << x.numer() << ", " << x.denom() << ")";
-  } else {
-    os << GiNaC::dflt << x;
-  }
-  c.s << os.str();
-}
-}  // namespace
-
 std::string format_series(const std::vector<ex>& c, const GiNaC::symbol& h, Format f) {
-  static const bool registered = [] {
-    GiNaC::set_print_func<numeric, GiNaC::print_python>(python_numeric);
-    return true;
-  }();
-  (void)registered;
   std::ostringstream os;
   const int K = static_cast<int>(c.size()) - 1;
   bool first = true;
@@ -700,21 +681,21 @@ std::string format_series(const std::vector<ex>& c, const GiNaC::symbol& h, Form
     if (c[k].is_zero()) continue;
     switch (f) {
       case Format::text:
-        os << "h^" << k << ": " << GiNaC::dflt << c[k] << "\n";
+        os << "h^" << k << ": " << canonical_string(c[k], Format::text) << "\n";
         break;
       case Format::latex:
         if (!first) os << " + ";
         if (k == 0)
-          os << "\\left(" << GiNaC::latex << c[k] << "\\right)";
+          os << "\\left(" << canonical_string(c[k], Format::latex) << "\\right)";
         else
-          os << "h^{" << k << "}\\left(" << GiNaC::latex << c[k] << "\\right)";
+          os << "h^{" << k << "}\\left(" << canonical_string(c[k], Format::latex) << "\\right)";
         break;
       case Format::python:
         if (!first) os << " + ";
         if (k == 0)
-          os << "(" << GiNaC::python << c[k] << ")";
+          os << "(" << canonical_string(c[k], Format::python) << ")";
         else
-          os << h.get_name() << "**" << k << "*(" << GiNaC::python << c[k] << ")";
+          os << h.get_name() << "**" << k << "*(" << canonical_string(c[k], Format::python) << ")";
         break;
     }
     first = false;

@@ -25,6 +25,7 @@
 
 #include "vibook/core/errors.hpp"
 #include "vibook/core/types.hpp"
+#include "vibook/modified/canonical.hpp"
 #include "vibook/modified/ginac_eigen.hpp"
 #include "vibook/modified/jets.hpp"
 #include "vibook/modified/series.hpp"
@@ -209,10 +210,10 @@ std::vector<std::vector<ex>> nystrom_modified_equation(std::shared_ptr<JetSpace>
 ex radial_form(const ex& e, const GiNaC::symbol& x1, const GiNaC::symbol& x2,
                const GiNaC::symbol& r);
 
-/// Output formats of `vibook modified`.
-enum class Format { text, latex, python };
+/// `--format` of `vibook modified` (Format is declared in canonical.hpp).
 Format parse_format(const std::string& s);
-/// Σ h^k c[k] + O(h^{K+1}) as text, LaTeX or Python (SymPy) source.
+/// Σ h^k c[k] + O(h^{K+1}) as text, LaTeX or Python (SymPy) source, every coefficient in
+/// canonical order (canonical.hpp): the same text in every run.
 std::string format_series(const std::vector<ex>& c, const GiNaC::symbol& h, Format f);
 
 }  // namespace vibook::modified

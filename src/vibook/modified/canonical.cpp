@@ -1,0 +1,222 @@
+// Canonical printing of engine expressions (see canonical.hpp for why GiNaC's order is not
+// reproducible).
+#include "vibook/modified/canonical.hpp"
+
+#include <algorithm>
+#include <sstream>
+
+namespace vibook::modified {
+
+namespace {
+
+using GiNaC::numeric;
+
+std::string numeric_text(const numeric& x, Format f) {
+  std::ostringstream os;
+  if (f == Format::python && x.is_rational() && !x.is_integer()) {
+    os << "Rational(" << x.numer() << ", " << x.denom() << ")";
+  } else if (f == Format::latex && x.is_rational() && !x.is_integer()) {
+    const numeric n = x.numer();
+    os << (n.is_negative() ? "-" : "") << "\\frac{" << abs(n) << "}{" << x.denom() << "}";
+  } else {
+    os << GiNaC::dflt << x;
+  }
+  return os.str();
+}
+
+// A term split into its numerical coefficient and the rest (the monomial).
+struct Term {
+  numeric coeff = 1;
+  std::vector<ex> factors;  // canonical order
+};
+
+Term split(const ex& e);
+std::string print(const ex& e, Format f);
+
+// The sort key of a term: its monomial in text form, then its coefficient.
+struct Keyed {
+  std::string monomial, coeff;
+  ex e;
+};
+
+std::string monomial_text(const Term& t) {
+  std::string s;
+  for (const auto& x : t.factors) s += (s.empty() ? "" : "*") + print(x, Format::text);
+  return s;
+}
+
+std::vector<ex> sorted(std::vector<Keyed> v) {
+  std::stable_sort(v.begin(), v.end(), [](const Keyed& a, const Keyed& b) {
+    return a.monomial != b.monomial ? a.monomial < b.monomial : a.coeff < b.coeff;
+  });
+  std::vector<ex> out;
+  out.reserve(v.size());
+  for (auto& k : v) out.push_back(k.e);
+  return out;
+}
+
+Term split(const ex& e) {
+  Term t;
+  if (GiNaC::is_a<numeric>(e)) {
+    t.coeff = GiNaC::ex_to<numeric>(e);
+    return t;
+  }
+  if (!GiNaC::is_a<GiNaC::mul>(e)) {
+    t.factors.push_back(e);
+    return t;
+  }
+  std::vector<Keyed> fs;
+  for (std::size_t k = 0; k < e.nops(); ++k) {
+    const ex x = e.op(k);
+    if (GiNaC::is_a<numeric>(x)) {
+      t.coeff *= GiNaC::ex_to<numeric>(x);
+    } else {
+      fs.push_back({print(x, Format::text), "", x});
+    }
+  }
+  t.factors = sorted(std::move(fs));
+  return t;
+}
+
+bool needs_parens_as_factor(const ex& x) {
+  return GiNaC::is_a<GiNaC::add>(x) || GiNaC::is_a<GiNaC::mul>(x);
+}
+
+bool needs_parens_as_base(const ex& x) {
+  if (GiNaC::is_a<numeric>(x)) {
+    const numeric& n = GiNaC::ex_to<numeric>(x);
+    return n.is_negative() || !n.is_integer();
+  }
+  return GiNaC::is_a<GiNaC::add>(x) || GiNaC::is_a<GiNaC::mul>(x) || GiNaC::is_a<GiNaC::power>(x);
+}
+
+std::string paren(const std::string& s, Format f) {
+  return f == Format::latex ? "\\left(" + s + "\\right)" : "(" + s + ")";
+}
+
+// A product of factors (coefficient excluded), numerator part only in LaTeX.
+std::string product(const std::vector<ex>& factors, Format f) {
+  std::string s;
+  for (const auto& x : factors) {
+    std::string p = print(x, f);
+    if (needs_parens_as_factor(x)) p = paren(p, f);
+    if (!s.empty()) s += f == Format::latex ? " " : "*";
+    s += p;
+  }
+  return s;
+}
+
+std::string print_term(const Term& t, Format f) {
+  if (t.factors.empty()) return numeric_text(t.coeff, f);
+  if (f == Format::latex) {
+    // Factors with a negative numerical exponent go below the fraction bar.
+    std::vector<ex> num, den;
+    for (const auto& x : t.factors) {
+      if (GiNaC::is_a<GiNaC::power>(x) && GiNaC::is_a<numeric>(x.op(1)) &&
+          GiNaC::ex_to<numeric>(x.op(1)).is_negative())
+        den.push_back(GiNaC::pow(x.op(0), -x.op(1)));
+      else
+        num.push_back(x);
+    }
+    const numeric c = t.coeff;
+    const std::string sign = c.is_negative() ? "-" : "";
+    const numeric cn = abs(c.numer()), cd = c.denom();
+    // A lone sum above the bar needs no parentheses.
+    const bool lone_sum = num.size() == 1 && cn == 1 && GiNaC::is_a<GiNaC::add>(num[0]);
+    std::string top = lone_sum ? print(num[0], f) : product(num, f), bottom = product(den, f);
+    if (cn != 1) top = numeric_text(cn, f) + (top.empty() ? "" : " " + top);
+    if (cd != 1) bottom = numeric_text(cd, f) + (bottom.empty() ? "" : " " + bottom);
+    if (top.empty()) top = "1";
+    if (bottom.empty()) return sign + top;
+    return sign + "\\frac{" + top + "}{" + bottom + "}";
+  }
+  const std::string body = product(t.factors, f);
+  if (t.coeff == 1) return body;
+  if (t.coeff == -1) return "-" + body;
+  return numeric_text(t.coeff, f) + "*" + body;
+}
+
+std::string print(const ex& e, Format f) {
+  if (GiNaC::is_a<numeric>(e)) return numeric_text(GiNaC::ex_to<numeric>(e), f);
+  if (GiNaC::is_a<GiNaC::symbol>(e)) {
+    if (f != Format::latex) return GiNaC::ex_to<GiNaC::symbol>(e).get_name();
+    std::ostringstream os;
+    os << GiNaC::latex << e;
+    return os.str();
+  }
+  if (GiNaC::is_a<GiNaC::add>(e)) {
+    std::string s;
+    for (const auto& x : canonical_operands(e)) {
+      const std::string p = print(x, f);
+      if (s.empty())
+        s = p;
+      else if (p.front() == '-')
+        s += f == Format::latex ? " - " + p.substr(1) : p;
+      else
+        s += (f == Format::latex ? " + " : "+") + p;
+    }
+    return s;
+  }
+  if (GiNaC::is_a<GiNaC::mul>(e)) return print_term(split(e), f);
+  if (GiNaC::is_a<GiNaC::power>(e)) {
+    const ex b = e.op(0), x = e.op(1);
+    std::string base = print(b, f);
+    if (needs_parens_as_base(b)) base = paren(base, f);
+    if (f == Format::latex) {
+      if (x.is_equal(GiNaC::numeric(1, 2))) return "\\sqrt{" + print(b, f) + "}";
+      if (GiNaC::is_a<numeric>(x) && GiNaC::ex_to<numeric>(x).is_negative())
+        return print_term(split(e), f);
+      return base + "^{" + print(x, f) + "}";
+    }
+    std::string expo = print(x, f);
+    const bool plain = GiNaC::is_a<numeric>(x) && GiNaC::ex_to<numeric>(x).is_pos_integer();
+    if (!plain) expo = "(" + expo + ")";
+    return base + (f == Format::python ? "**" : "^") + expo;
+  }
+  if (GiNaC::is_a<GiNaC::function>(e)) {
+    const std::string name = GiNaC::ex_to<GiNaC::function>(e).get_name();
+    std::string args;
+    for (std::size_t k = 0; k < e.nops(); ++k) args += (k ? "," : "") + print(e.op(k), f);
+    if (f == Format::latex) {
+      const bool known = name == "sin" || name == "cos" || name == "exp" || name == "log";
+      return (known ? "\\" + name : "\\mathrm{" + name + "}") + "\\left(" + args + "\\right)";
+    }
+    return name + "(" + args + ")";
+  }
+  // Anything else (relations, lists): GiNaC's own printing; the engine produces none of these
+  // in the expressions it prints.
+  std::ostringstream os;
+  if (f == Format::latex)
+    os << GiNaC::latex << e;
+  else if (f == Format::python)
+    os << GiNaC::python << e;
+  else
+    os << GiNaC::dflt << e;
+  return os.str();
+}
+
+}  // namespace
+
+std::vector<ex> canonical_operands(const ex& e) {
+  std::vector<Keyed> v;
+  if (GiNaC::is_a<GiNaC::add>(e)) {
+    for (std::size_t k = 0; k < e.nops(); ++k) {
+      const Term t = split(e.op(k));
+      v.push_back({monomial_text(t), numeric_text(t.coeff, Format::text), e.op(k)});
+    }
+    return sorted(std::move(v));
+  }
+  if (GiNaC::is_a<GiNaC::mul>(e)) {
+    const Term t = split(e);
+    std::vector<ex> out = t.factors;
+    if (t.coeff != 1) out.insert(out.begin(), t.coeff);
+    return out;
+  }
+  std::vector<ex> out;
+  for (std::size_t k = 0; k < e.nops(); ++k) out.push_back(e.op(k));
+  return out;
+}
+
+std::string canonical_string(const ex& e, Format f) { return print(e, f); }
+
+}  // namespace vibook::modified
