@@ -5,6 +5,7 @@
 
 #include <doctest/doctest.h>
 
+#include "vibook/epavi/checks.hpp"
 #include "vibook/figures/registry.hpp"
 
 using namespace vibook;
@@ -95,7 +96,7 @@ TEST_CASE("check-s-eq29: accumulated discrete-energy error over 1e6 steps agains
 TEST_CASE("sharma-eq29-long: the long study's machinery, at 1e-3 of its length") {
   // The study itself (1e7 steps) runs in the book build only; this checks that it runs, fits
   // β and records the claim, on short runs.
-  const auto r = figures::run_eq29_long({}, 1e-3);
+  const auto r = checks::run_eq29_long({}, 1e-3);
   REQUIRE(r.size() == 1);
   INFO(r[0].note);
   CHECK(r[0].id == "S-EQ29");

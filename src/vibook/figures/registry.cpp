@@ -4,45 +4,51 @@
 #include <fstream>
 
 #include "vibook/core/parallel.hpp"
+#include "vibook/epavi/checks.hpp"
+#include "vibook/integrators/checks.hpp"
+#include "vibook/kepler/checks.hpp"
+#include "vibook/mechanics/checks.hpp"
+#include "vibook/modified/checks.hpp"
 #include "vibook/plot/gnuplot.hpp"
+#include "vibook/relativistic/checks.hpp"
 
 #include <cstdlib>
 
 namespace vibook::figures {
 
 const std::vector<Check>& registry() {
-  static const std::vector<Check> all = {check_s_del(),
-                                         sharma_fig1(),
-                                         sharma_fig2(),
-                                         sharma_fig3(),
-                                         sharma_fig4(),
-                                         sharma_fig5(),
-                                         check_s_eq29(),
-                                         check_s_eq39(),
-                                         check_s_l1(),
-                                         epavi_existence(),
-                                         check_v_ex1(),
-                                         vermeeren_fig1(),
-                                         check_ss_t8(),
-                                         shen_sun_fig7(),
-                                         relativistic_precession(),
-                                         check_ss_t2(),
-                                         check_ss_p4(),
-                                         check_ss_t6(),
-                                         shen_sun_fig2(),
-                                         shen_sun_fig345(),
-                                         shen_sun_fig6(),
-                                         shen_sun_work_precision(),
-                                         check_modified(),
-                                         check_v_t16(),
-                                         vermeeren_fig3(),
-                                         shen_sun_fig1(),
-                                         check_ss_t13()};
+  static const std::vector<Check> all = {checks::check_s_del(),
+                                         checks::sharma_fig1(),
+                                         checks::sharma_fig2(),
+                                         checks::sharma_fig3(),
+                                         checks::sharma_fig4(),
+                                         checks::sharma_fig5(),
+                                         checks::check_s_eq29(),
+                                         checks::check_s_eq39(),
+                                         checks::check_s_l1(),
+                                         checks::epavi_existence(),
+                                         checks::check_v_ex1(),
+                                         checks::vermeeren_fig1(),
+                                         checks::check_ss_t8(),
+                                         checks::shen_sun_fig7(),
+                                         checks::relativistic_precession(),
+                                         checks::check_ss_t2(),
+                                         checks::check_ss_p4(),
+                                         checks::check_ss_t6(),
+                                         checks::shen_sun_fig2(),
+                                         checks::shen_sun_fig345(),
+                                         checks::shen_sun_fig6(),
+                                         checks::shen_sun_work_precision(),
+                                         checks::check_modified(),
+                                         checks::check_v_t16(),
+                                         checks::vermeeren_fig3(),
+                                         checks::shen_sun_fig1(),
+                                         checks::check_ss_t13()};
   return all;
 }
 
 const std::vector<Check>& long_studies() {
-  static const std::vector<Check> all = {sharma_eq29_long()};
+  static const std::vector<Check> all = {checks::sharma_eq29_long()};
   return all;
 }
 

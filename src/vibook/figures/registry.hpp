@@ -1,7 +1,9 @@
 /// \file registry.hpp
-/// \brief The check and figure registry. A *check* measures one or more claims; a *figure*
-/// is a check that also writes CSV data and has a gnuplot script `figures/ID.gp`. The
-/// figure's doctest and `vibook figure ID` call the same `run` function.
+/// \brief The check and figure registry: an index only. A *check* (claims/check.hpp) measures
+/// one or more claims; a *figure* is a check that also writes CSV data and has a gnuplot
+/// script `figures/ID.gp`. The checks live in their paper section's folder, beside the code
+/// they test, and are declared in that folder's `checks.hpp`; the figure's doctest and
+/// `vibook figure ID` call the same `run` function.
 #pragma once
 
 #include <filesystem>
@@ -11,22 +13,13 @@
 #include <string_view>
 #include <vector>
 
+#include "vibook/claims/check.hpp"
 #include "vibook/claims/ledger.hpp"
 
 namespace vibook::figures {
 
-/// Where a check writes its data: nothing (measure only) or a directory for its CSV files.
-struct Context {
-  std::optional<std::filesystem::path> out_dir;
-};
-
-struct Check {
-  std::string id;
-  std::string title;
-  bool is_figure = false;
-  std::vector<std::string> claims;  ///< claim IDs this check measures
-  std::function<std::vector<claims::ClaimResult>(const Context&)> run;
-};
+using claims::Check;
+using claims::Context;
 
 /// Every check and figure, in a fixed order (the ones CI runs).
 const std::vector<Check>& registry();
@@ -61,37 +54,5 @@ std::vector<std::vector<claims::ClaimResult>> run_checks(const std::vector<const
 /// there instead of being run again (the book build runs `vibook figures` first).
 claims::Ledger measure_all(unsigned jobs = 0,
                            const std::optional<std::filesystem::path>& figures_dir = {});
-
-// The individual checks (one translation unit each).
-Check vermeeren_fig1();
-Check check_v_ex1();
-Check check_s_del();
-Check sharma_fig1();
-Check sharma_fig2();
-Check sharma_fig3();
-Check sharma_fig4();
-Check sharma_fig5();
-Check check_s_eq29();
-Check check_s_eq39();
-Check check_s_l1();
-Check epavi_existence();
-Check check_ss_t8();
-Check shen_sun_fig7();
-Check relativistic_precession();
-Check check_ss_t2();
-Check check_ss_p4();
-Check check_ss_t6();
-Check shen_sun_fig2();
-Check shen_sun_fig345();
-Check shen_sun_fig6();
-Check shen_sun_work_precision();
-Check sharma_eq29_long();
-Check check_modified();
-Check check_v_t16();
-Check vermeeren_fig3();
-Check shen_sun_fig1();
-Check check_ss_t13();
-/// The long study at a fraction `scale` of its length (the doctest runs it small).
-std::vector<claims::ClaimResult> run_eq29_long(const Context& ctx, double scale);
 
 }  // namespace vibook::figures

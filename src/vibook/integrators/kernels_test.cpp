@@ -6,8 +6,8 @@
 #include <fmt/format.h>
 
 #include "vibook/core/order.hpp"
-#include "vibook/figures/check_v_ex1.hpp"
 #include "vibook/figures/registry.hpp"
+#include "vibook/integrators/check_v_ex1.hpp"
 #include "vibook/integrators/kernels.hpp"
 #include "vibook/kepler/kepler.hpp"
 #include "vibook/mechanics/del_solver.hpp"
@@ -16,15 +16,15 @@
 using namespace vibook;
 
 TEST_CASE("V-EX1: kernels equal the generic solver on their discrete Lagrangians") {
-  for (const auto& [name, a] : figures::v_ex1_agreements()) {
+  for (const auto& [name, a] : checks::v_ex1_agreements()) {
     INFO(name, ": one-step ", a.one_step, ", trajectory ", a.trajectory);
-    CHECK(a.one_step <= figures::kOneStepTolerance);
-    CHECK(a.trajectory <= figures::kTrajectoryTolerance);
+    CHECK(a.one_step <= checks::kOneStepTolerance);
+    CHECK(a.trajectory <= checks::kTrajectoryTolerance);
     CHECK(a.max_iterations >= 1);
     CHECK(a.max_iterations <= 6);
   }
   // The papers' scaling L_disc ≈ L with (5) taken literally gives p/h.
-  CHECK(std::abs(figures::v_ex1_literal_scaling_factor() - 1.0 / 0.05) <= 1e-12 * 20.0);
+  CHECK(std::abs(checks::v_ex1_literal_scaling_factor() - 1.0 / 0.05) <= 1e-12 * 20.0);
   // The ledger check records the same numbers and a measured status.
   const auto results = figures::find("check-v-ex1")->run({});
   REQUIRE(results.size() == 3);
@@ -37,17 +37,17 @@ TEST_CASE("V-EX1: kernels equal the generic solver on their discrete Lagrangians
 }
 
 TEST_CASE("measured orders on Kepler e = 0.5, h = 3/64 ... 3/4096 (two-sided, |p - p0| < 0.1)") {
-  for (const auto& o : figures::kernel_orders()) {
+  for (const auto& o : checks::kernel_orders()) {
     INFO(o.method, ": fitted order ", o.slope, " over ", o.points, " step sizes");
     CHECK(o.points >= 5);
-    CHECK(std::abs(o.slope - o.expected) < figures::kOrderTolerance);
+    CHECK(std::abs(o.slope - o.expected) < checks::kOrderTolerance);
   }
 }
 
 TEST_CASE("V-P1: the discrete Euler-Lagrange expression is consistent (measured order)") {
-  for (const auto& o : figures::del_consistency_orders()) {
+  for (const auto& o : checks::del_consistency_orders()) {
     INFO(o.method, ": fitted order ", o.slope, " over ", o.points, " step sizes");
     CHECK(o.points >= 5);
-    CHECK(std::abs(o.slope - o.expected) < figures::kOrderTolerance);
+    CHECK(std::abs(o.slope - o.expected) < checks::kOrderTolerance);
   }
 }

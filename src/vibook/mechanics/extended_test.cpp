@@ -4,21 +4,21 @@
 
 #include <doctest/doctest.h>
 
-#include "vibook/figures/check_s_del.hpp"
 #include "vibook/figures/registry.hpp"
 #include "vibook/kepler/kepler.hpp"
+#include "vibook/mechanics/check_s_del.hpp"
 #include "vibook/mechanics/extended.hpp"
 
 using namespace vibook;
 
 TEST_CASE("S-DEL: marching (15)-(18) reproduces (11)-(12) on Kepler and on the pendulum") {
-  for (const auto& m : {figures::s_del_kepler(4000), figures::s_del_pendulum(4000)}) {
-    CHECK(m.two_step_residual <= figures::kSDelTolerance);
+  for (const auto& m : {checks::s_del_kepler(4000), checks::s_del_pendulum(4000)}) {
+    CHECK(m.two_step_residual <= checks::kSDelTolerance);
     CHECK(m.max_energy_residual <= 1e-12);
     CHECK(m.energy_drift <= 1e-11);  // autonomous L_d: E_{k+1} = E_k up to the solves
     CHECK(m.min_step > 0);
   }
-  const auto k = figures::s_del_kepler(4000);
+  const auto k = checks::s_del_kepler(4000);
   CHECK(k.max_step > 3 * k.min_step);                // the steps adapt along the e = 0.5 orbit
   CHECK(std::abs(k.discrete_energy + 0.5) <= 1e-3);  // −D3 L_d is the energy H = −1/2
   CHECK(k.printed_eq14_residual > 0.1);              // (14) as printed breaks (16)

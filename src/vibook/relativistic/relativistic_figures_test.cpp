@@ -8,7 +8,7 @@
 
 #include "vibook/core/tolerance.hpp"
 #include "vibook/figures/registry.hpp"
-#include "vibook/figures/shen_sun_fig7.hpp"
+#include "vibook/relativistic/shen_sun_fig7.hpp"
 
 using namespace vibook;
 
@@ -74,7 +74,7 @@ TEST_CASE("relativistic-precession: measured advance against 2π(1/Γ − 1) ove
   CHECK(r.status == claims::Status::reproduced);
   const double floor = r.value("vi2_own_precession_at_c1e4");
   CHECK(floor < 1e-5);
-  for (double c : figures::kSweepSpeeds) {
+  for (double c : checks::kSweepSpeeds) {
     const std::string key = c == std::floor(c) ? std::to_string(long(c)) : std::to_string(c);
     const double ex = r.value("c" + key + "_exact"), m = r.value("c" + key + "_vi2_measured");
     CHECK(std::abs(m - ex) <= 0.01 * ex + floor);

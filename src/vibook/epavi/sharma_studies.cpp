@@ -18,10 +18,10 @@
 
 #include "vibook/core/order.hpp"
 #include "vibook/core/parallel.hpp"
-#include "vibook/figures/registry.hpp"
-#include "vibook/figures/sharma_runs.hpp"
+#include "vibook/epavi/checks.hpp"
+#include "vibook/epavi/sharma_runs.hpp"
 
-namespace vibook::figures {
+namespace vibook::checks {
 
 namespace {
 
@@ -552,4 +552,4 @@ Check epavi_existence() {
           run_existence};
 }
 
-}  // namespace vibook::figures
+}  // namespace vibook::checks

@@ -18,7 +18,7 @@
 #include "vibook/epavi/epavi.hpp"
 #include "vibook/kepler/kepler.hpp"
 
-namespace vibook::figures {
+namespace vibook::checks {
 
 /// Statistics of one adaptive run on Kepler. Energies: dEd = E_k − E_1 (EpAVI's discrete
 /// energy; formed in the run's precision), dH = H(q_k, p_k) − H_0 (continuous).
@@ -142,4 +142,4 @@ AdaptiveRun run_avi(double e, double h0, double t_end, Monitor g, std::ostream* 
   return r;
 }
 
-}  // namespace vibook::figures
+}  // namespace vibook::checks

@@ -9,11 +9,11 @@
 
 #include "vibook/core/autodiff.hpp"
 #include "vibook/core/tolerance.hpp"
-#include "vibook/figures/registry.hpp"
+#include "vibook/kepler/checks.hpp"
 #include "vibook/mechanics/discrete_lagrangian.hpp"
 #include "vibook/mechanics/helmholtz.hpp"
 
-namespace vibook::figures {
+namespace vibook::checks {
 
 namespace {
 
@@ -234,4 +234,4 @@ Check check_ss_p4() {
           run_p4};
 }
 
-}  // namespace vibook::figures
+}  // namespace vibook::checks

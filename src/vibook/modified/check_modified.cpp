@@ -8,13 +8,13 @@
 
 #include <fmt/format.h>
 
-#include "vibook/figures/registry.hpp"
-#include "vibook/figures/shen_sun_prints.hpp"
 #include "vibook/mechanics/discrete_lagrangian.hpp"
 #include "vibook/mechanics/extended.hpp"
+#include "vibook/modified/checks.hpp"
 #include "vibook/modified/engine.hpp"
+#include "vibook/modified/shen_sun_prints.hpp"
 
-namespace vibook::figures {
+namespace vibook::checks {
 
 namespace {
 
@@ -859,4 +859,4 @@ Check check_modified() {
           run};
 }
 
-}  // namespace vibook::figures
+}  // namespace vibook::checks

@@ -15,11 +15,11 @@
 #include "vibook/avi/avi.hpp"
 #include "vibook/core/order.hpp"
 #include "vibook/core/recorder.hpp"
+#include "vibook/epavi/checks.hpp"
 #include "vibook/epavi/epavi.hpp"
-#include "vibook/figures/registry.hpp"
 #include "vibook/kepler/kepler.hpp"
 
-namespace vibook::figures {
+namespace vibook::checks {
 
 namespace {
 
@@ -304,4 +304,4 @@ Check sharma_fig2() {
           run_fig2};
 }
 
-}  // namespace vibook::figures
+}  // namespace vibook::checks

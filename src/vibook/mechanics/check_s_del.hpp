@@ -6,7 +6,7 @@
 
 #include "vibook/core/tolerance.hpp"
 
-namespace vibook::figures {
+namespace vibook::checks {
 
 /// "To round-off" for the two-step residual: 64 ulps of |p| + |E|, fixed before measuring.
 inline constexpr double kSDelTolerance = 64 * kEps;
@@ -24,4 +24,4 @@ struct SDelMeasurement {
 SDelMeasurement s_del_kepler(int steps);
 SDelMeasurement s_del_pendulum(int steps);
 
-}  // namespace vibook::figures
+}  // namespace vibook::checks

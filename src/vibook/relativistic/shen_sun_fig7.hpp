@@ -6,7 +6,7 @@
 
 #include "vibook/core/types.hpp"
 
-namespace vibook::figures {
+namespace vibook::checks {
 
 /// The speed of light chosen for Fig. 7 (the paper gives none): the precession is visible.
 inline constexpr double kFig7SpeedOfLight = 5.0;
@@ -22,4 +22,4 @@ struct SsT8Measurement {
 };
 SsT8Measurement ss_t8_measure(double c, double h, int steps);
 
-}  // namespace vibook::figures
+}  // namespace vibook::checks

@@ -20,14 +20,14 @@
 #include "vibook/core/order.hpp"
 #include "vibook/core/recorder.hpp"
 #include "vibook/core/tolerance.hpp"
-#include "vibook/figures/registry.hpp"
 #include "vibook/integrators/kernels.hpp"
 #include "vibook/integrators/splitting.hpp"
+#include "vibook/kepler/checks.hpp"
 #include "vibook/kepler/kepler.hpp"
 #include "vibook/modified/compiled.hpp"
 #include "vibook/modified/engine.hpp"
 
-namespace vibook::figures {
+namespace vibook::checks {
 
 namespace {
 
@@ -625,4 +625,4 @@ Check shen_sun_fig345() {
           run_fig345};
 }
 
-}  // namespace vibook::figures
+}  // namespace vibook::checks

@@ -17,10 +17,10 @@
 
 #include "vibook/core/order.hpp"
 #include "vibook/core/parallel.hpp"
-#include "vibook/figures/registry.hpp"
-#include "vibook/figures/sharma_runs.hpp"
+#include "vibook/epavi/checks.hpp"
+#include "vibook/epavi/sharma_runs.hpp"
 
-namespace vibook::figures {
+namespace vibook::checks {
 
 namespace {
 
@@ -153,4 +153,4 @@ Check sharma_eq29_long() {
           [](const Context& ctx) { return run_eq29_long(ctx, 1.0); }};
 }
 
-}  // namespace vibook::figures
+}  // namespace vibook::checks

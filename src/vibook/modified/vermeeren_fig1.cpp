@@ -16,13 +16,13 @@
 
 #include "vibook/core/recorder.hpp"
 #include "vibook/core/tolerance.hpp"
-#include "vibook/figures/registry.hpp"
 #include "vibook/integrators/kernels.hpp"
 #include "vibook/mechanics/del_solver.hpp"
 #include "vibook/mechanics/discrete_lagrangian.hpp"
+#include "vibook/modified/checks.hpp"
 #include "vibook/problems/problems.hpp"
 
-namespace vibook::figures {
+namespace vibook::checks {
 namespace {
 
 using V1 = Vec<double, 1>;
@@ -220,4 +220,4 @@ Check vermeeren_fig1() {
           run};
 }
 
-}  // namespace vibook::figures
+}  // namespace vibook::checks

@@ -10,15 +10,15 @@
 #include <fmt/format.h>
 
 #include "vibook/core/order.hpp"
-#include "vibook/figures/registry.hpp"
-#include "vibook/figures/shen_sun_prints.hpp"
 #include "vibook/integrators/kernels.hpp"
 #include "vibook/kepler/kepler.hpp"
+#include "vibook/modified/checks.hpp"
 #include "vibook/modified/compiled.hpp"
 #include "vibook/modified/engine.hpp"
+#include "vibook/modified/shen_sun_prints.hpp"
 #include "vibook/problems/problems.hpp"
 
-namespace vibook::figures {
+namespace vibook::checks {
 
 namespace {
 
@@ -373,4 +373,4 @@ Check check_v_t16() {
           run};
 }
 
-}  // namespace vibook::figures
+}  // namespace vibook::checks

@@ -9,7 +9,7 @@
 
 #include "vibook/modified/jets.hpp"
 
-namespace vibook::figures {
+namespace vibook::checks {
 
 /// The h² coefficient of (4.24) (VI-2's modified equation as printed), component by component,
 /// for given partial derivatives φ_I (the whole potential) and φ^[1]_I (the first piece),
@@ -43,4 +43,4 @@ inline std::array<modified::ex, 2> shen_sun_424_h2(
   return out;
 }
 
-}  // namespace vibook::figures
+}  // namespace vibook::checks

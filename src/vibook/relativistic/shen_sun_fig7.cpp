@@ -15,15 +15,15 @@
 #include "vibook/core/autodiff.hpp"
 #include "vibook/core/recorder.hpp"
 #include "vibook/core/tolerance.hpp"
-#include "vibook/figures/registry.hpp"
-#include "vibook/figures/shen_sun_fig7.hpp"
 #include "vibook/mechanics/del_solver.hpp"
 #include "vibook/mechanics/discrete_lagrangian.hpp"
 #include "vibook/plot/render3d.hpp"
+#include "vibook/relativistic/checks.hpp"
 #include "vibook/relativistic/exact.hpp"
 #include "vibook/relativistic/precession.hpp"
+#include "vibook/relativistic/shen_sun_fig7.hpp"
 
-namespace vibook::figures {
+namespace vibook::checks {
 
 using namespace vibook::relativistic;
 
@@ -383,4 +383,4 @@ Check relativistic_precession() {
           run_sweep};
 }
 
-}  // namespace vibook::figures
+}  // namespace vibook::checks

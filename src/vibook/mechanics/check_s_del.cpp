@@ -7,15 +7,15 @@
 #include <fmt/format.h>
 
 #include "vibook/core/tolerance.hpp"
-#include "vibook/figures/check_s_del.hpp"
-#include "vibook/figures/registry.hpp"
 #include "vibook/integrators/kernels.hpp"
 #include "vibook/kepler/kepler.hpp"
+#include "vibook/mechanics/check_s_del.hpp"
+#include "vibook/mechanics/checks.hpp"
 #include "vibook/mechanics/discrete_lagrangian.hpp"
 #include "vibook/mechanics/extended.hpp"
 #include "vibook/problems/problems.hpp"
 
-namespace vibook::figures {
+namespace vibook::checks {
 
 namespace {
 
@@ -124,4 +124,4 @@ Check check_s_del() {
           run};
 }
 
-}  // namespace vibook::figures
+}  // namespace vibook::checks

@@ -10,13 +10,13 @@
 #include <fmt/format.h>
 
 #include "vibook/core/recorder.hpp"
-#include "vibook/figures/registry.hpp"
 #include "vibook/integrators/kernels.hpp"
 #include "vibook/kepler/kepler.hpp"
+#include "vibook/modified/checks.hpp"
 #include "vibook/modified/compiled.hpp"
 #include "vibook/modified/engine.hpp"
 
-namespace vibook::figures {
+namespace vibook::checks {
 
 namespace {
 
@@ -168,4 +168,4 @@ Check vermeeren_fig3() {
           run};
 }
 
-}  // namespace vibook::figures
+}  // namespace vibook::checks

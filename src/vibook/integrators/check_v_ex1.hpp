@@ -8,7 +8,7 @@
 
 #include "vibook/core/tolerance.hpp"
 
-namespace vibook::figures {
+namespace vibook::checks {
 
 /// Agreement between a fast kernel and the generic solver on the kernel's discrete Lagrangian.
 struct KernelAgreement {
@@ -50,4 +50,4 @@ std::vector<MeasuredOrder> kernel_orders();
 /// Lagrangian of Example 1.
 std::vector<MeasuredOrder> del_consistency_orders();
 
-}  // namespace vibook::figures
+}  // namespace vibook::checks

@@ -9,13 +9,13 @@
 
 #include <fmt/format.h>
 
-#include "vibook/figures/registry.hpp"
 #include "vibook/integrators/kernels.hpp"
 #include "vibook/mechanics/discrete_lagrangian.hpp"
+#include "vibook/modified/checks.hpp"
 #include "vibook/modified/compiled.hpp"
 #include "vibook/modified/engine.hpp"
 
-namespace vibook::figures {
+namespace vibook::checks {
 
 namespace {
 
@@ -151,4 +151,4 @@ Check shen_sun_fig1() {
           run};
 }
 
-}  // namespace vibook::figures
+}  // namespace vibook::checks

@@ -8,15 +8,15 @@
 
 #include "vibook/core/order.hpp"
 #include "vibook/core/tolerance.hpp"
-#include "vibook/figures/check_v_ex1.hpp"
-#include "vibook/figures/registry.hpp"
+#include "vibook/integrators/check_v_ex1.hpp"
+#include "vibook/integrators/checks.hpp"
 #include "vibook/integrators/kernels.hpp"
 #include "vibook/kepler/kepler.hpp"
 #include "vibook/mechanics/del_solver.hpp"
 #include "vibook/mechanics/discrete_lagrangian.hpp"
 #include "vibook/problems/problems.hpp"
 
-namespace vibook::figures {
+namespace vibook::checks {
 
 namespace {
 
@@ -268,4 +268,4 @@ Check check_v_ex1() {
           run};
 }
 
-}  // namespace vibook::figures
+}  // namespace vibook::checks

@@ -1,0 +1,35 @@
+/// \file check.hpp
+/// \brief What a *check* is: a function that measures one or more claims of the ledger.
+///
+/// Each paper section keeps its checks beside the code they test (`epavi/sharma_fig12.cpp`,
+/// `modified/check_v_t16.cpp`, ...) and declares them in its `checks.hpp`. The registry
+/// (`figures/registry.hpp`) is only an index of them. A *figure* is a check that also writes
+/// CSV data and has a gnuplot script `figures/ID.gp`; its doctest and `vibook figure ID` call
+/// the same `run` function.
+#pragma once
+
+#include <filesystem>
+#include <functional>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "vibook/claims/ledger.hpp"
+
+namespace vibook::claims {
+
+/// Where a check writes its data: nothing (measure only) or a directory for its CSV files.
+struct Context {
+  std::optional<std::filesystem::path> out_dir;
+};
+
+/// One check of the ledger.
+struct Check {
+  std::string id;
+  std::string title;
+  bool is_figure = false;
+  std::vector<std::string> claims;  ///< claim IDs this check measures
+  std::function<std::vector<ClaimResult>(const Context&)> run;
+};
+
+}  // namespace vibook::claims
