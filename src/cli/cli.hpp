@@ -6,8 +6,8 @@
 namespace vibook::cli {
 
 /// Exit statuses of the command: 0 success, 1 other failure (e.g. gnuplot missing),
-/// 2 bad argument, 3 numerical failure.
-enum Exit : int { kOk = 0, kFailure = 1, kBadArgument = 2, kNumerical = 3 };
+/// 2 bad argument, 3 numerical failure, 4 an output could not be written.
+enum Exit : int { kOk = 0, kFailure = 1, kBadArgument = 2, kNumerical = 3, kIo = 4 };
 
 /// Register `vibook run` on the app; the returned function executes it after parsing.
 std::function<int()> add_run_command(CLI::App& app);

@@ -2,12 +2,15 @@
 #include <filesystem>
 #include <fstream>
 #include <iostream>
+#include <string_view>
+#include <system_error>
 
 #include <fmt/format.h>
 
 #include "cli.hpp"
 #include "vibook/claims/ledger.hpp"
 #include "vibook/core/errors.hpp"
+#include "vibook/core/output_file.hpp"
 #include "vibook/core/parallel.hpp"
 #include "vibook/figures/registry.hpp"
 #include "vibook/plot/gnuplot.hpp"
@@ -88,31 +91,43 @@ int cmd_figures(std::vector<std::string> ids, const fs::path& out) {
 }
 
 int cmd_claims(bool json, const std::string& json_out, const std::string& html_dir,
-               const std::string& figures_dir) {
+               const std::string& figures_dir, const std::vector<std::string>& only) {
+  // Every output checked before the checks run (they take a minute or more).
   std::optional<fs::path> fdir;
   if (!figures_dir.empty()) {
     if (!fs::is_directory(figures_dir))
       throw ArgumentError("--figures-dir", fmt::format("'{}' is not a directory", figures_dir));
     fdir = figures_dir;
   }
-  const claims::Ledger ledger = figures::measure_all(0, fdir);
-  auto write = [](const fs::path& path, const std::string& text, const char* arg) {
-    std::ofstream f(path);
-    if (!f) throw ArgumentError(arg, fmt::format("cannot open '{}' for writing", path.string()));
-    f << text;
-  };
-  if (!json_out.empty()) write(json_out, ledger.to_json().dump(2) + "\n", "--json-out");
+  if (!json_out.empty()) check_output_path(json_out, "--json-out", false);
+  if (!html_dir.empty()) ensure_writable_dir(html_dir, "--html-dir");
+  // --check ID: only those checks run; every other claim stays pending in this ledger.
+  std::vector<const figures::Check*> chosen;
+  for (const auto& id : only) {
+    const auto* c = figures::find(id);
+    if (!c)
+      throw ArgumentError("--check", fmt::format("unknown check '{}' (see `vibook list`)", id));
+    chosen.push_back(c);
+  }
+  claims::Ledger ledger;
+  if (only.empty()) {
+    ledger = figures::measure_all(0, fdir);
+  } else {
+    for (const auto& rs : figures::run_checks(chosen))
+      for (const auto& r : rs) ledger.record(r);
+  }
+  if (!json_out.empty()) write_output_file(json_out, ledger.to_json().dump(2) + "\n", "--json-out");
   if (!html_dir.empty()) {
     // The book's tables: all claims, one table per paper, one per check (its claims only).
-    ensure_writable_dir(html_dir, "--html-dir");
-    write(fs::path(html_dir) / "claims.html", ledger.to_html(), "--html-dir");
-    for (const char* paper : {"S", "V", "SS"}) {
-      write(fs::path(html_dir) / fmt::format("claims-{}.html", paper), ledger.to_html(paper),
-            "--html-dir");
-    }
+    const auto write = [&](const std::string& name, const std::string& text) {
+      write_output_file((fs::path(html_dir) / name).string(), text, "--html-dir");
+    };
+    write("claims.html", ledger.to_html());
+    write("summary.html", ledger.to_summary_html());
+    for (const char* paper : {"S", "V", "SS"})
+      write(fmt::format("claims-{}.html", paper), ledger.to_html(paper));
     for (const auto* list : {&figures::registry(), &figures::long_studies()}) {
-      for (const auto& c : *list)
-        write(fs::path(html_dir) / (c.id + ".html"), ledger.to_html({}, c.claims), "--html-dir");
+      for (const auto& c : *list) write(c.id + ".html", ledger.to_html({}, c.claims));
     }
   }
   if (json) {
@@ -123,12 +138,16 @@ int cmd_claims(bool json, const std::string& json_out, const std::string& html_d
   return cli::kOk;
 }
 
+// The subcommands, for the message about an unknown one.
+constexpr const char* kCommands[] = {"list", "figure", "figures", "claims", "run", "modified"};
+
 }  // namespace
 
 int main(int argc, char** argv) {
   CLI::App app{
       "vibook — variational integrators, checked against their papers.\n"
-      "Exit status: 0 success, 1 other failure, 2 bad argument, 3 numerical failure."};
+      "Exit status: 0 success, 1 other failure (gnuplot missing), 2 bad argument, 3 numerical "
+      "failure, 4 an output could not be written."};
   app.set_version_flag("--version", std::string("vibook ") + VIBOOK_VERSION);
   app.require_subcommand(1);
 
@@ -149,6 +168,10 @@ int main(int argc, char** argv) {
   bool cl_json = false;
   std::string cl_json_out, cl_html_dir, cl_figures_dir;
   cl->add_flag("--json", cl_json, "print the ledger as JSON");
+  std::vector<std::string> cl_only;
+  cl->add_option("--check", cl_only,
+                 "run only these checks (IDs of `vibook list`, repeatable); the other claims are "
+                 "reported pending");
   cl->add_option("--json-out", cl_json_out, "also write the JSON ledger to this file");
   cl->add_option("--html-dir", cl_html_dir,
                  "also write the book's HTML claims tables into this directory");
@@ -159,6 +182,32 @@ int main(int argc, char** argv) {
   const auto run = cli::add_run_command(app);
   const auto modified = cli::add_modified_command(app);
 
+  // A first word that is neither an option nor a command: say which word.
+  if (argc > 1 && argv[1][0] != '-') {
+    const std::string_view word = argv[1];
+    bool known = false;
+    for (const char* c : kCommands) known = known || word == c;
+    if (!known) {
+      fmt::print(stderr,
+                 "vibook: error: unknown command '{}' (commands: list, figure, figures, claims, "
+                 "run, modified; see `vibook --help`)\n",
+                 word);
+      return cli::kBadArgument;
+    }
+    // An unknown option is named before CLI11 would complain about a missing required one.
+    CLI::App* sub = app.get_subcommand(std::string(word));
+    for (int i = 2; i < argc; ++i) {
+      const std::string_view tok = argv[i];
+      if (tok.size() < 2 || tok[0] != '-' || (tok[1] >= '0' && tok[1] <= '9') || tok[1] == '.')
+        continue;  // a value: "-", "-0.1"
+      const std::string name(tok.substr(0, tok.find('=')));
+      if (name == "-h" || name == "--help" || sub->get_option_no_throw(name) != nullptr) continue;
+      fmt::print(stderr,
+                 "vibook: error: unknown option '{}' of `vibook {}` (see `vibook {} --help`)\n",
+                 name, word, word);
+      return cli::kBadArgument;
+    }
+  }
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {
@@ -177,19 +226,34 @@ int main(int argc, char** argv) {
   }
 
   try {
-    if (app.got_subcommand("list")) return cmd_list();
-    if (app.got_subcommand("figure")) return cmd_figures(fig_ids, fig_out);
-    if (app.got_subcommand("figures")) return cmd_figures({}, figs_out);
-    if (app.got_subcommand("claims"))
-      return cmd_claims(cl_json, cl_json_out, cl_html_dir, cl_figures_dir);
-    if (app.got_subcommand("modified")) return modified();
-    return run();
+    int rc = cli::kOk;
+    if (app.got_subcommand("list"))
+      rc = cmd_list();
+    else if (app.got_subcommand("figure"))
+      rc = cmd_figures(fig_ids, fig_out);
+    else if (app.got_subcommand("figures"))
+      rc = cmd_figures({}, figs_out);
+    else if (app.got_subcommand("claims"))
+      rc = cmd_claims(cl_json, cl_json_out, cl_html_dir, cl_figures_dir, cl_only);
+    else if (app.got_subcommand("modified"))
+      rc = modified();
+    else
+      rc = run();
+    // Whatever went to standard output must have arrived (a full disk, a closed pipe).
+    check_standard_output();
+    return rc;
   } catch (const ArgumentError& e) {
     fmt::print(stderr, "vibook: error: {}\n", e.what());
     return cli::kBadArgument;
   } catch (const NumericalError& e) {
     fmt::print(stderr, "vibook: numerical failure: {}\n", e.what());
     return cli::kNumerical;
+  } catch (const IoError& e) {
+    fmt::print(stderr, "vibook: I/O error: {}\n", e.what());
+    return cli::kIo;
+  } catch (const std::system_error& e) {  // fmt's and std::filesystem's write errors
+    fmt::print(stderr, "vibook: I/O error: {}\n", e.what());
+    return cli::kIo;
   } catch (const std::exception& e) {
     fmt::print(stderr, "vibook: error: {}\n", e.what());
     return cli::kFailure;

@@ -1,5 +1,6 @@
 // `vibook modified`: the modified-equation engine on the command line (Vermeeren 2017 §3–5,
 // Shen & Sun 2025 §4).
+#include <algorithm>
 #include <memory>
 #include <optional>
 #include <set>
@@ -16,25 +17,61 @@ namespace {
 struct ModifiedOptions {
   std::string method, potential = "generic", what = "equation", format = "text", alpha;
   int dim = 0, order = -1;
-  bool cross_check = false;
+  bool cross_check = false, dim_given = false, alpha_given = false;
 };
 
+// "1/2", "-3", "0.25", "2.5e-1": the exact rational the text denotes (a decimal is read as the
+// decimal fraction it is, 0.3 = 3/10, not as the binary double nearest to it). Anything else,
+// including trailing characters and an empty string, is an ArgumentError naming --alpha.
 GiNaC::numeric parse_rational(const std::string& s) {
-  // "1/2", "0.25", "3": an exact rational.
-  try {
-    std::size_t slash = s.find('/');
-    if (slash != std::string::npos) {
-      const long p = std::stol(s.substr(0, slash)), q = std::stol(s.substr(slash + 1));
-      if (q == 0) throw std::invalid_argument("zero denominator");
-      return GiNaC::numeric(p, q);
-    }
-    std::size_t pos = 0;
-    const double d = std::stod(s, &pos);
-    if (pos != s.size()) throw std::invalid_argument("trailing characters");
-    return GiNaC::ex_to<GiNaC::numeric>(modified::exact_rationals(GiNaC::numeric(d)));
-  } catch (const std::exception&) {
-    throw ArgumentError("--alpha", fmt::format("'{}' is not a number (use 1/2, 0.25, …)", s));
+  const auto bad = [&] {
+    return ArgumentError("--alpha",
+                         fmt::format("'{}' is not a number (write 1/2, 0.25, 3 or 2.5e-1)", s));
+  };
+  const auto digits = [](const std::string& t) {
+    return !t.empty() && t.size() <= 18 &&
+           std::all_of(t.begin(), t.end(), [](char c) { return c >= '0' && c <= '9'; });
+  };
+  std::string t = s;
+  bool negative = false;
+  if (!t.empty() && (t[0] == '+' || t[0] == '-')) {
+    negative = t[0] == '-';
+    t.erase(0, 1);
   }
+  GiNaC::numeric value;
+  if (const auto slash = t.find('/'); slash != std::string::npos) {
+    const std::string p = t.substr(0, slash), q = t.substr(slash + 1);
+    if (!digits(p) || !digits(q)) throw bad();
+    if (std::stoll(q) == 0)
+      throw ArgumentError("--alpha", fmt::format("'{}' has a zero denominator", s));
+    value = GiNaC::numeric(std::stoll(p)) / GiNaC::numeric(std::stoll(q));
+  } else {
+    long exponent = 0;
+    if (const auto e = t.find_first_of("eE"); e != std::string::npos) {
+      std::string x = t.substr(e + 1);
+      t.erase(e);
+      bool xneg = false;
+      if (!x.empty() && (x[0] == '+' || x[0] == '-')) {
+        xneg = x[0] == '-';
+        x.erase(0, 1);
+      }
+      if (!digits(x) || x.size() > 3) throw bad();
+      exponent = xneg ? -std::stol(x) : std::stol(x);
+    }
+    std::string whole = t, frac;
+    if (const auto dot = t.find('.'); dot != std::string::npos) {
+      whole = t.substr(0, dot);
+      frac = t.substr(dot + 1);
+    }
+    if ((whole.empty() && frac.empty()) || (!whole.empty() && !digits(whole)) ||
+        (!frac.empty() && !digits(frac)))
+      throw bad();
+    const std::string mantissa = whole + frac;
+    if (!digits(mantissa)) throw bad();
+    value = GiNaC::numeric(std::stoll(mantissa)) *
+            GiNaC::pow(GiNaC::numeric(10), GiNaC::numeric(exponent - long(frac.size())));
+  }
+  return negative ? -value : value;
 }
 
 // Every symbol in the expressions, for the Python header (sorted by name, h first).
@@ -51,16 +88,32 @@ int run_modified(const ModifiedOptions& o) {
   const Method m = parse_method(o.method);
   const Potential p = parse_potential(o.potential);
   const Format f = parse_format(o.format);
-  int dim = o.dim;
-  if (dim == 0) dim = p == Potential::kepler ? 2 : 1;
+  static const std::set<std::string> whats = {"equation", "lagrangian", "hamiltonian", "meshed",
+                                              "disc"};
+  if (!whats.count(o.what))
+    throw ArgumentError("--what", fmt::format("unknown '{}' (equation, lagrangian, hamiltonian, "
+                                              "meshed, disc)",
+                                              o.what));
+  if (o.dim_given && (o.dim < 1 || o.dim > 3))
+    throw ArgumentError("--dim", fmt::format("{}: give 1, 2 or 3 degrees of freedom", o.dim));
+  const int dim = o.dim_given ? o.dim : (p == Potential::kepler ? 2 : 1);
+  if (o.cross_check && o.what != "equation")
+    throw ArgumentError("--cross-check",
+                        fmt::format("compares two derivations of the modified equation; it does "
+                                    "not apply to --what {}",
+                                    o.what));
   std::optional<GiNaC::numeric> alpha;
-  if (!o.alpha.empty()) {
+  if (o.alpha_given) {
     if (m != Method::vi1 && m != Method::vi1_adjoint && m != Method::vi2)
       throw ArgumentError("--alpha", "only the splitting methods vi1, vi1-adjoint, vi2 have α");
     if (p == Potential::generic)
       throw ArgumentError("--alpha",
                           "with a generic potential the pieces are abstract (phi1, phi2)");
     alpha = parse_rational(o.alpha);
+    if (*alpha < 0 || *alpha > 1)
+      throw ArgumentError("--alpha", fmt::format("{}: the split φ^[1] = αU needs α in [0, 1] (as "
+                                                 "vibook run)",
+                                                 o.alpha));
   }
   if (o.order < 0 || o.order > max_order)
     throw ArgumentError("--order",
@@ -169,7 +222,11 @@ std::function<int()> add_modified_command(CLI::App& app) {
   c->add_flag("--cross-check", o->cross_check,
               "equation: also derive it from the discrete Euler–Lagrange equation (Vermeeren "
               "§3.2) and require term-by-term agreement");
-  return [o] { return run_modified(*o); };
+  return [o, c] {
+    o->dim_given = c->count("--dim") > 0;
+    o->alpha_given = c->count("--alpha") > 0;
+    return run_modified(*o);
+  };
 }
 
 }  // namespace vibook::cli

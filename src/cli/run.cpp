@@ -1,6 +1,7 @@
 // `vibook run`: integrate one problem with one method and stream the trajectory as CSV.
 #include <unistd.h>
 
+#include <charconv>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -17,6 +18,7 @@
 #include "vibook/avi/avi.hpp"
 #include "vibook/core/angle.hpp"
 #include "vibook/core/errors.hpp"
+#include "vibook/core/output_file.hpp"
 #include "vibook/core/precision.hpp"
 #include "vibook/core/recorder.hpp"
 #include "vibook/epavi/epavi.hpp"
@@ -32,31 +34,105 @@
 namespace vibook::cli {
 namespace {
 
+// Every option is kept as the text the user typed and parsed strictly in validate(): CLI11's
+// own conversions accept an empty value as "not given" and drop empty list elements.
 struct RunOptions {
   std::string problem, method, discrete_lagrangian = "midpoint", csv;
+  std::string precision = "double", energy_target = "previous";
+  std::string h_text, t_end_text, periods_text, e_text, c_text, tau_end_text, h0_text, tol_text,
+      alpha_text, digits_text, every_text, q0_text, p0_text;
+  // Parsed and checked:
   double h = 0.01;
   std::optional<double> t_end, periods, e, c, tau_end, h0, tol, alpha;
-  std::string precision = "double", energy_target = "previous";
   std::optional<unsigned> digits;
   std::vector<double> q0, p0;
   long long every = 1;
+  std::string plan_arg = "--h";  ///< named when the step plan is impossible
 };
 
 void require(bool ok, const std::string& arg, const std::string& msg) {
   if (!ok) throw ArgumentError(arg, msg);
 }
 
+// The whole text as one number (a leading '+' allowed); anything else names the argument.
+double parse_number(const std::string& arg, const std::string& text) {
+  const char* first = text.data();
+  const char* last = text.data() + text.size();
+  if (first != last && *first == '+') ++first;
+  double v = 0;
+  const auto [ptr, ec] = std::from_chars(first, last, v);
+  require(!text.empty(), arg, "expects a number, got an empty value");
+  require(ec != std::errc::result_out_of_range, arg,
+          fmt::format("'{}' is out of the range of double", text));
+  require(ec == std::errc() && ptr == last, arg, fmt::format("'{}' is not a number", text));
+  return v;
+}
+
+long long parse_integer(const std::string& arg, const std::string& text) {
+  long long v = 0;
+  const auto [ptr, ec] = std::from_chars(text.data(), text.data() + text.size(), v);
+  require(!text.empty(), arg, "expects an integer, got an empty value");
+  require(ec == std::errc() && ptr == text.data() + text.size(), arg,
+          fmt::format("'{}' is not an integer", text));
+  return v;
+}
+
+// "1,0.5": comma-separated numbers, none of them empty.
+std::vector<double> parse_list(const std::string& arg, const std::string& text) {
+  std::vector<double> out;
+  std::size_t start = 0;
+  for (int i = 1;; ++i) {
+    const std::size_t comma = text.find(',', start);
+    const std::string item =
+        text.substr(start, comma == std::string::npos ? std::string::npos : comma - start);
+    require(!item.empty(), arg,
+            fmt::format("'{}': number {} of the comma-separated list is empty", text, i));
+    out.push_back(parse_number(arg, item));
+    if (comma == std::string::npos) break;
+    start = comma + 1;
+  }
+  return out;
+}
+
+// At most this many steps in one run (a plan of more is a typing error, or a study for the
+// benchmarks, not for `vibook run`).
+constexpr double kMaxSteps = 1e12;
+
 // Number of steps and the last step's size for a run to t_end with step h: round(T/h) steps
 // when T/h is within rounding of an integer (h = T/n ends exactly at T); otherwise ceil(T/h)
-// steps, the last one shortened so that the run ends at T.
-std::pair<long long, double> step_plan(double T, double h) {
+// steps, the last one shortened so that the run ends at T. `arg` is named when the plan has no
+// step or more than kMaxSteps.
+std::pair<long long, double> step_plan(double T, double h, const std::string& arg) {
+  require(h <= T * (1 + 64 * kEps), arg,
+          fmt::format("the step {:.6g} is longer than the whole run (to {:.6g}): no step to take",
+                      h, T));
   const double ratio = T / h;
+  require(ratio <= kMaxSteps, arg,
+          fmt::format("step {:.3g} up to {:.3g} makes {:.3g} steps, more than the 1e12 a run may "
+                      "take",
+                      h, T, ratio));
   const double n = std::nearbyint(ratio);
   if (std::abs(ratio - n) <= 64 * kEps * std::max(1.0, ratio)) {
     return {static_cast<long long>(n), h};
   }
   const double full = std::floor(ratio);
   return {static_cast<long long>(full) + 1, T - full * h};
+}
+
+std::string state_text(const double* q, const double* p, int n) {
+  std::string s = "q = (";
+  for (int i = 0; i < n; ++i) s += fmt::format("{}{:.17g}", i ? ", " : "", q[i]);
+  s += "), p = (";
+  for (int i = 0; i < n; ++i) s += fmt::format("{}{:.17g}", i ? ", " : "", p[i]);
+  return s + ")";
+}
+
+// A computed output value that is not finite ends the run as a numerical failure.
+template <class Row>
+void require_finite_row(const Row& row, const std::vector<std::string>& cols) {
+  for (std::size_t i = 0; i < cols.size(); ++i)
+    if (!std::isfinite(row[i]))
+      throw NumericalError(fmt::format("the output column {} is not finite ({})", cols[i], row[i]));
 }
 
 class Progress {
@@ -80,35 +156,6 @@ class Progress {
   long long total_;
   bool tty_, shown_ = false;
   std::chrono::steady_clock::time_point start_ = std::chrono::steady_clock::now(), last_ = start_;
-};
-
-// Output file handling shared by the runners: FILE.partial, renamed when the run completes.
-class CsvOutput {
- public:
-  explicit CsvOutput(const std::string& csv) : to_stdout_(csv == "-"), final_(csv) {
-    tmp_ = final_;
-    tmp_ += ".partial";
-    if (!to_stdout_) {
-      file_.open(tmp_, std::ios::out | std::ios::trunc);
-      require(file_.good(), "--csv", fmt::format("cannot open '{}' for writing", csv));
-    }
-  }
-  std::ostream& stream() { return to_stdout_ ? std::cout : file_; }
-  std::string partial_note() const {
-    return to_stdout_ ? "the rows before it were written to standard output"
-                      : fmt::format("the rows before it are in '{}' (incomplete)", tmp_.string());
-  }
-  void commit() {
-    if (to_stdout_) return;
-    file_.close();
-    require(!file_.fail(), "--csv", fmt::format("error while writing '{}'", tmp_.string()));
-    std::filesystem::rename(tmp_, final_);
-  }
-
- private:
-  bool to_stdout_;
-  std::filesystem::path final_, tmp_;
-  std::ofstream file_;
 };
 
 template <int N>
@@ -153,7 +200,11 @@ int integrate(const Problem& P, Stepper stepper, bool implicit, const RunOptions
     double period = 0;
     if constexpr (kepler) {
       // From --e the orbit has a = 1 by construction: period exactly 2π.
-      period = o.e ? 2 * std::numbers::pi : KeplerOrbit::from_state(s.q, s.p).period();
+      try {
+        period = o.e ? 2 * std::numbers::pi : KeplerOrbit::from_state(s.q, s.p).period();
+      } catch (const ArgumentError& e) {
+        throw ArgumentError("--q0/--p0", e.what());  // "initial state: ... not bound"
+      }
     } else if constexpr (std::is_same_v<Problem, HarmonicOscillator>) {
       period = 2 * std::numbers::pi;
     } else {
@@ -164,10 +215,10 @@ int integrate(const Problem& P, Stepper stepper, bool implicit, const RunOptions
     T = o.t_end.value_or(10.0);
     require(std::isfinite(T) && T > 0, "--t-end", "must be a positive number");
   }
-  const auto [steps, last_h] = step_plan(T, o.h);
+  const auto [steps, last_h] = step_plan(T, o.h, o.plan_arg);
 
-  // Output: written to FILE.partial and renamed when the run completes.
-  CsvOutput csv(o.csv);
+  // Output: a temporary file renamed onto --csv when the run completes (output_file.hpp).
+  OutputFile csv(o.csv, "--csv");
   std::ostream& out = csv.stream();
 
   std::vector<std::string> cols = {"step", "t"};
@@ -200,30 +251,32 @@ int integrate(const Problem& P, Stepper stepper, bool implicit, const RunOptions
       row[c++] = rep.residual;
       row[c++] = double(rep.iterations);
     }
+    require_finite_row(row, cols);
     rec.offer(k, row);
   };
 
   Progress progress(steps);
-  offer(0, 0.0);
-  long long k = 1;
+  long long k = 0;
+  State<N> before = s;  // the state a failing step started from
   try {
-    for (; k <= steps; ++k) {
+    offer(0, 0.0);
+    for (k = 1; k <= steps; ++k) {
       const double hk = k == steps ? last_h : o.h;
+      before = s;
       rep = stepper.step(s.q, s.p, hk);
       if (!s.q.allFinite() || !s.p.allFinite()) {
-        throw NumericalError(fmt::format("state became non-finite at step {}", k));
+        throw NumericalError("the state became non-finite");
       }
       if (rec.due(k) || k == steps) offer(k, k == steps ? T : double(k) * o.h);
       progress.update(k);
     }
   } catch (const NumericalError& e) {
     rec.finish();
-    std::string where = fmt::format("step {} (t = {:.17g}), from q = (", k, double(k - 1) * o.h);
-    for (int i = 0; i < N; ++i) where += fmt::format("{}{:.17g}", i ? ", " : "", s.q(i));
-    where += "), p = (";
-    for (int i = 0; i < N; ++i) where += fmt::format("{}{:.17g}", i ? ", " : "", s.p(i));
-    where += ")";
-    throw NumericalError(fmt::format("{} at {}; {}", e.what(), where, csv.partial_note()));
+    const std::string where =
+        k == 0 ? fmt::format("the initial state, {}", state_text(s.q.data(), s.p.data(), N))
+               : fmt::format("step {} (t = {:.17g}), from {}", k, double(k - 1) * o.h,
+                             state_text(before.q.data(), before.p.data(), N));
+    throw NumericalError(fmt::format("{} at {}; {}", e.what(), where, csv.keep_partial()));
   }
   rec.finish();
   csv.commit();
@@ -243,28 +296,39 @@ int integrate_relativistic(const relativistic::Problem& P, Method method, const 
   }
   const double T = o.tau_end.value_or(40.0);
   require(std::isfinite(T) && T > 0, "--tau-end", "must be a positive number");
-  const auto [steps, last_h] = step_plan(T, o.h);
-  CsvOutput out(o.csv);
-  TrajectoryRecorder rec(
-      out.stream(), {"step", "tau", "t", "x1", "x2", "gamma", "u1", "u2", "energy", "L", "shell"},
-      o.every);
+  const auto [steps, last_h] = step_plan(T, o.h, o.plan_arg);
+  OutputFile out(o.csv, "--csv");
+  const std::vector<std::string> cols = {"step", "tau", "t",      "x1", "x2",   "gamma",
+                                         "u1",   "u2",  "energy", "L",  "shell"};
+  TrajectoryRecorder rec(out.stream(), cols, o.every);
   RelState s = P.initial(x0, u0);
   auto offer = [&](long long k, double tau) {
     const Invariants inv = invariants(P, s);
-    rec.offer(k, std::array<double, 11>{double(k), tau, s.t, s.x(0), s.x(1), s.gamma, s.u(0),
-                                        s.u(1), inv.energy, inv.L, inv.shell});
+    const std::array<double, 11> row{double(k), tau,    s.t,        s.x(0), s.x(1),   s.gamma,
+                                     s.u(0),    s.u(1), inv.energy, inv.L,  inv.shell};
+    require_finite_row(row, cols);
+    rec.offer(k, row);
   };
   Progress progress(steps);
-  offer(0, 0.0);
-  for (long long k = 1; k <= steps; ++k) {
-    method.step(s, k == steps ? last_h : o.h);
-    if (!s.x.allFinite() || !s.u.allFinite() || !std::isfinite(s.gamma)) {
-      rec.finish();
-      throw NumericalError(fmt::format("state became non-finite at step {} (tau = {:.17g}); {}", k,
-                                       double(k) * o.h, out.partial_note()));
+  long long k = 0;
+  RelState before = s;
+  try {
+    offer(0, 0.0);
+    for (k = 1; k <= steps; ++k) {
+      before = s;
+      method.step(s, k == steps ? last_h : o.h);
+      if (!s.x.allFinite() || !s.u.allFinite() || !std::isfinite(s.gamma))
+        throw NumericalError("the state became non-finite");
+      if (rec.due(k) || k == steps) offer(k, k == steps ? T : double(k) * o.h);
+      progress.update(k);
     }
-    if (rec.due(k) || k == steps) offer(k, k == steps ? T : double(k) * o.h);
-    progress.update(k);
+  } catch (const NumericalError& e) {
+    rec.finish();
+    throw NumericalError(
+        fmt::format("{} at step {} (tau = {:.17g}), from x = ({:.17g}, {:.17g}), "
+                    "u = ({:.17g}, {:.17g}); {}",
+                    e.what(), k, double(std::max(k - 1, 0LL)) * o.h, before.x(0), before.x(1),
+                    before.u(0), before.u(1), out.keep_partial()));
   }
   rec.finish();
   out.commit();
@@ -278,18 +342,28 @@ int integrate_adaptive_kepler(const RunOptions& o) {
   const Kepler P;
   const double h0 = o.h0.value_or(o.h);
   require(std::isfinite(h0) && h0 > 0, "--h0", "must be a positive finite number");
-  State<N> s0 = o.e ? kepler_perihelion_state(*o.e)
-                    : (o.q0.empty() ? kepler_perihelion_state(0.5) : State<N>{});
-  if (!o.e && !o.q0.empty()) {
+  const bool from_state = !o.q0.empty() || !o.p0.empty();
+  require(!(o.e && from_state), "--e", "give either --e or --q0/--p0, not both");
+  State<N> s0 = o.e ? kepler_perihelion_state(*o.e) : kepler_perihelion_state(0.5);
+  if (from_state) {
     s0.q = vector_arg<N>(o.q0, "--q0");
     s0.p = vector_arg<N>(o.p0, "--p0");
   }
-  const KeplerOrbit orbit =
-      o.e ? KeplerOrbit::perihelion(*o.e) : KeplerOrbit::from_state(s0.q, s0.p);
-  const double Tend = o.periods ? *o.periods * (o.e ? 2 * std::numbers::pi : orbit.period())
+  // The exact orbit gives the start-up step (and the period): it must be a bound orbit.
+  const KeplerOrbit orbit = [&] {
+    try {
+      return from_state ? KeplerOrbit::from_state(s0.q, s0.p)
+                        : KeplerOrbit::perihelion(o.e.value_or(0.5));
+    } catch (const ArgumentError& e) {
+      throw ArgumentError("--q0/--p0", e.what());
+    }
+  }();
+  const double Tend = o.periods ? *o.periods * (from_state ? orbit.period() : 2 * std::numbers::pi)
                                 : o.t_end.value_or(10.0);
   require(std::isfinite(Tend) && Tend > 0, o.periods ? "--periods" : "--t-end",
           "must be a positive number");
+  // The steps are the method's; at least about Tend/h0 of them are planned for.
+  step_plan(Tend, h0, o.plan_arg);
 
   const bool epavi = o.method == "epavi";
   if (!epavi) {
@@ -300,7 +374,7 @@ int integrate_adaptive_kepler(const RunOptions& o) {
   }
   require(!o.digits || o.precision == "mpfr", "--digits", "applies to --precision mpfr only");
   if (o.tol) require(std::isfinite(*o.tol) && *o.tol > 0, "--tol", "must be a positive number");
-  CsvOutput csv(o.csv);
+  OutputFile csv(o.csv, "--csv");
   std::vector<std::string> cols = {"step", "t", "dt", "q1",  "q2",   "p1",
                                    "p2",   "H", "L",  "ecc", "omega"};
   if (epavi) cols.insert(cols.end(), {"E_d", "E_d_drift"});
@@ -323,10 +397,18 @@ int integrate_adaptive_kepler(const RunOptions& o) {
     }
     row[c++] = residual;
     row[c++] = double(iterations);
+    require_finite_row(row, cols);
     rec.offer(k, row);
   };
   Progress progress(static_cast<long long>(Tend / h0));
   long long k = 0;
+  // The state the current step starts from, in double, for the message if it fails.
+  double t_before = 0;
+  Vec<double, N> q_before = s0.q, p_before = s0.p;
+  auto check_finite = [](double t, const Vec<double, N>& q, const Vec<double, N>& p) {
+    if (!std::isfinite(t) || !q.allFinite() || !p.allFinite())
+      throw NumericalError("the state became non-finite");
+  };
   try {
     if (epavi) {
       // Start-up as in the paper: the first step of length h0 from the exact solution. The
@@ -351,8 +433,10 @@ int integrate_adaptive_kepler(const RunOptions& o) {
         offer(1, to_double(s.t), h0, down(s.q), down(s.p), to_double(s.E), 0.0, 0.0, 0);
         while (s.t < T(Tend)) {
           const T t0 = s.t;
+          t_before = to_double(s.t), q_before = down(s.q), p_before = down(s.p);
           const ExtendedStepReport r = m.step(s);
           ++k;
+          check_finite(to_double(s.t), down(s.q), down(s.p));
           if (rec.due(k) || s.t >= T(Tend))
             offer(k, to_double(s.t), to_double(T(s.t - t0)), down(s.q), down(s.p), to_double(s.E),
                   to_double(T(s.E - E1)), r.energy_residual, r.root_iterations);
@@ -369,8 +453,10 @@ int integrate_adaptive_kepler(const RunOptions& o) {
         offer(0, 0.0, 0.0, s.q, s.p, 0.0, 0.0, 0.0, 0);
         while (s.t < Tend) {
           const double t0 = s.t;
+          t_before = s.t, q_before = s.q, p_before = s.p;
           const SolveReport r = m.step(s, da);
           ++k;
+          check_finite(s.t, s.q, s.p);
           if (rec.due(k) || s.t >= Tend)
             offer(k, s.t, s.t - t0, s.q, s.p, 0.0, 0.0, r.residual, r.iterations);
           progress.update(k);
@@ -383,7 +469,14 @@ int integrate_adaptive_kepler(const RunOptions& o) {
     }
   } catch (const NumericalError& e) {
     rec.finish();
-    throw NumericalError(fmt::format("{} at step {}; {}", e.what(), k + 1, csv.partial_note()));
+    // EpAVI's "no admissible time step" names its time and state itself.
+    const std::string what = e.what();
+    const std::string where =
+        what.starts_with("extended step at t =")
+            ? fmt::format("(step {})", k + 1)
+            : fmt::format("at step {} (t = {:.17g}), from {}", k + 1, t_before,
+                          state_text(q_before.data(), p_before.data(), N));
+    throw NumericalError(fmt::format("{} {}; {}", what, where, csv.keep_partial()));
   }
   rec.finish();
   csv.commit();
@@ -446,44 +539,106 @@ std::function<int()> add_run_command(CLI::App& app) {
   run->add_option("--discrete-lagrangian", o->discrete_lagrangian,
                   "for del-generic: midpoint, sv, se or se-adjoint (default midpoint)")
       ->check(CLI::IsMember({"midpoint", "sv", "se", "se-adjoint"}));
-  run->add_option("--h", o->h, "step size (default 0.01)");
-  auto* t_end = run->add_option("--t-end", o->t_end, "final time (default 10)");
+  run->add_option("--h", o->h_text, "step size (default 0.01)");
+  auto* t_end = run->add_option("--t-end", o->t_end_text, "final time (default 10)");
   auto* periods =
-      run->add_option("--periods", o->periods, "final time in periods (kepler, harmonic)");
+      run->add_option("--periods", o->periods_text, "final time in periods (kepler, harmonic)");
   t_end->excludes(periods);
-  run->add_option("--e", o->e,
+  run->add_option("--e", o->e_text,
                   "kepler: eccentricity in [0,1); starts at perihelion of the orbit with a = 1");
-  run->add_option("--q0", o->q0, "initial position, comma-separated")->delimiter(',');
-  run->add_option("--p0", o->p0,
+  run->add_option("--q0", o->q0_text, "initial position, comma-separated");
+  run->add_option("--p0", o->p0_text,
                   "initial momentum, comma-separated (relativistic-kepler: u0 = γẋ0; default 0,2 "
-                  "with --q0 0.4,0, the paper's Fig. 7 data)")
-      ->delimiter(',');
-  run->add_option("--h0", o->h0, "epavi/avi1/avi2: the first step (default: --h)");
+                  "with --q0 0.4,0, the paper's Fig. 7 data)");
+  run->add_option("--h0", o->h0_text, "epavi/avi1/avi2: the first step (default: --h)");
   run->add_option("--precision", o->precision,
                   "epavi: arithmetic of the whole step: double (default), long-double, "
                   "double-double (libqd), quad (float128), mpfr (see --digits)")
       ->check(CLI::IsMember({"double", "long-double", "double-double", "quad", "mpfr"}));
-  run->add_option("--digits", o->digits,
+  run->add_option("--digits", o->digits_text,
                   "--precision mpfr: significant decimal digits (default 18, the paper's VPA)");
-  run->add_option("--tol", o->tol,
+  run->add_option("--tol", o->tol_text,
                   "epavi: relative tolerance of the step solves (default 4 units of round-off "
                   "of the precision)");
   run->add_option("--energy-target", o->energy_target,
                   "epavi: solve the energy equation for the previous step's E_k (previous, the "
                   "paper) or always for E_1 (initial)")
       ->check(CLI::IsMember({"previous", "initial"}));
-  run->add_option("--alpha", o->alpha,
+  run->add_option("--alpha", o->alpha_text,
                   "vi1/vi2 on kepler: split φ^[1] = αφ, φ^[2] = (1−α)φ (default 0.5, the paper's)");
-  run->add_option("--c", o->c, "relativistic-kepler: the speed of light (required)");
-  run->add_option("--tau-end", o->tau_end, "relativistic-kepler: final proper time (default 40)");
-  run->add_option("--every", o->every, "write every K-th state (first and last always)");
+  run->add_option("--c", o->c_text, "relativistic-kepler: the speed of light (required)");
+  run->add_option("--tau-end", o->tau_end_text,
+                  "relativistic-kepler: final proper time (default 40)");
+  run->add_option("--every", o->every_text, "write every K-th state (first and last always)");
   run->add_option("--csv", o->csv, "output file ('-' for standard output)")->required();
 
   return [o, run]() -> int {
     if (!*run) return -1;
+    // --- every argument parsed and checked before any work ---------------------------------
+    const auto given = [&](const char* name) { return run->count(name) > 0; };
+    const auto number = [&](const char* name, const std::string& text) -> std::optional<double> {
+      if (!given(name)) return std::nullopt;
+      return parse_number(name, text);
+    };
+    if (given("--h")) o->h = parse_number("--h", o->h_text);
+    o->t_end = number("--t-end", o->t_end_text);
+    o->periods = number("--periods", o->periods_text);
+    o->e = number("--e", o->e_text);
+    o->c = number("--c", o->c_text);
+    o->tau_end = number("--tau-end", o->tau_end_text);
+    o->h0 = number("--h0", o->h0_text);
+    o->tol = number("--tol", o->tol_text);
+    o->alpha = number("--alpha", o->alpha_text);
+    if (given("--q0")) o->q0 = parse_list("--q0", o->q0_text);
+    if (given("--p0")) o->p0 = parse_list("--p0", o->p0_text);
+    if (given("--every")) o->every = parse_integer("--every", o->every_text);
+    if (given("--digits")) {
+      const long long d = parse_integer("--digits", o->digits_text);
+      require(d >= 1 && d <= 100000, "--digits", fmt::format("{}: give 1 to 100000 digits", d));
+      o->digits = static_cast<unsigned>(d);
+    }
+    o->plan_arg = given("--h0")  ? "--h0"
+                  : given("--h") ? "--h"
+                  : o->periods   ? "--periods"
+                  : o->t_end     ? "--t-end"
+                  : o->tau_end   ? "--tau-end"
+                                 : "--h";
     require(std::isfinite(o->h) && o->h > 0, "--h", "must be a positive finite number");
+    if (o->t_end)
+      require(std::isfinite(*o->t_end) && *o->t_end > 0, "--t-end",
+              "must be a positive finite number");
+    if (o->periods)
+      require(std::isfinite(*o->periods) && *o->periods > 0, "--periods",
+              "must be a positive finite number");
+    if (o->h0)
+      require(std::isfinite(*o->h0) && *o->h0 > 0, "--h0", "must be a positive finite number");
     require(o->every >= 1, "--every", "must be at least 1");
     if (o->e) require(*o->e >= 0 && *o->e < 1, "--e", "eccentricity must lie in [0, 1)");
+    // Options of one family of methods are refused elsewhere, never silently ignored.
+    const bool adaptive = o->method == "epavi" || o->method == "avi1" || o->method == "avi2";
+    const bool epavi = o->method == "epavi";
+    require(adaptive || !given("--h0"), "--h0",
+            "applies to the adaptive methods epavi, avi1, avi2");
+    require(epavi || !given("--tol"), "--tol",
+            "applies to epavi only (the other implicit methods use Newton at 4 ulp)");
+    require(epavi || !given("--energy-target"), "--energy-target", "applies to epavi only");
+    require(epavi || o->precision == "double", "--precision",
+            "only epavi is templated on the scalar; the other methods run in double");
+    require(!o->digits || o->precision == "mpfr", "--digits", "applies to --precision mpfr only");
+    require(o->method == "del-generic" || !given("--discrete-lagrangian"), "--discrete-lagrangian",
+            "applies to --method del-generic only");
+    if (o->tol)
+      require(std::isfinite(*o->tol) && *o->tol > 0, "--tol", "must be a positive number");
+    if (o->c) {
+      require(std::isfinite(*o->c) && *o->c > 0, "--c", "the speed of light must be positive");
+      // c² and c⁴ occur in the energy and the exact orbit: they must be finite numbers.
+      require(std::isfinite(*o->c * *o->c * *o->c * *o->c), "--c",
+              fmt::format("{:.3g} is too large (c^4 overflows); the limit c → ∞ is --problem "
+                          "kepler",
+                          *o->c));
+    }
+    // The output path, checked now (it is opened only when the run starts).
+    check_output_path(o->csv, "--csv");
     const bool rel = o->problem == "relativistic-kepler";
     const bool rel_only = o->method == "k-symplectic" || o->method == "vi";
     const bool splitting = o->method == "vi1" || o->method == "vi1-adjoint" || o->method == "vi2" ||
@@ -501,8 +656,8 @@ std::function<int()> add_run_command(CLI::App& app) {
             "applies to the splitting methods vi1, vi1-adjoint, vi2, vi2-adjoint on kepler");
     if (rel) {
       require(o->c.has_value(), "--c", "the speed of light is required for relativistic-kepler");
-      require(!o->t_end && !o->periods, "--tau-end",
-              "relativistic-kepler runs in proper time: use --tau-end, not --t-end/--periods");
+      require(!o->t_end && !o->periods, o->t_end ? "--t-end" : "--periods",
+              "relativistic-kepler runs in proper time: use --tau-end");
       require(!o->e, "--e", "does not apply to relativistic-kepler; give --q0 and --p0");
       const relativistic::Problem P(*o->c);  // c <= 0: ArgumentError naming --c
       if (o->method == "k-symplectic")
@@ -511,10 +666,6 @@ std::function<int()> add_run_command(CLI::App& app) {
       return integrate_relativistic(P, relativistic::Vi2{P}, *o);
     }
     require(!o->c, "--c", "only applies to --problem relativistic-kepler");
-    const bool adaptive = o->method == "epavi" || o->method == "avi1" || o->method == "avi2";
-    require(adaptive || (o->precision == "double" && !o->digits && !o->tol &&
-                         o->energy_target == "previous"),
-            "--precision", "--precision, --digits, --tol and --energy-target apply to epavi");
     require(!o->tau_end, "--tau-end", "only applies to --problem relativistic-kepler");
     if (o->problem == "harmonic") return dispatch_method(HarmonicOscillator{}, *o);
     if (o->problem == "pendulum") return dispatch_method(Pendulum{}, *o);

@@ -6,6 +6,8 @@
 #pragma once
 
 #include <cmath>
+#include <limits>
+#include <utility>
 
 #include <fmt/format.h>
 #include <boost/math/tools/toms748_solve.hpp>
@@ -73,9 +75,26 @@ class AdaptiveMidpoint {
     const double guess = h0 / g_(P_, s.q);
     auto f = [&](double da) { return physical_step(s, da) - h0; };
     double lo = 0.5 * guess, hi = 2.0 * guess;
-    std::uintmax_t it = 100;
-    const auto r = boost::math::tools::toms748_solve(
-        f, lo, hi, boost::math::tools::eps_tolerance<double>(52), it);
+    const std::uintmax_t max_it = 100;
+    std::uintmax_t it = max_it;
+    std::pair<double, double> r;
+    try {
+      r = boost::math::tools::toms748_solve(f, lo, hi,
+                                            boost::math::tools::eps_tolerance<double>(52), it);
+    } catch (const NumericalError&) {
+      throw;
+    } catch (const std::exception& e) {
+      // Boost reports an unbracketed or non-finite function with its own exception types.
+      throw SolveError(fmt::format("adaptive midpoint start: no step size Δa in [{:.3g}, {:.3g}] "
+                                   "gives a first step of physical length h0 = {:.3g} ({})",
+                                   lo, hi, h0, e.what()),
+                       SolveReport{std::numeric_limits<double>::quiet_NaN(), int(it), false});
+    }
+    if (it >= max_it || !std::isfinite(r.first) || !std::isfinite(r.second))
+      throw SolveError(fmt::format("adaptive midpoint start: the step size for h0 = {:.3g} did "
+                                   "not converge in {} iterations",
+                                   h0, max_it),
+                       SolveReport{std::numeric_limits<double>::quiet_NaN(), int(it), false});
     return 0.5 * (r.first + r.second);
   }
 
@@ -84,6 +103,7 @@ class AdaptiveMidpoint {
     z0 << s.q, s.p;
     const double g0 = g_(P_, s.q);
     z1 << s.q + da * g0 * s.p, s.p - da * g0 * P_.gradient(s.q);  // explicit Euler guess
+    // [avi-step]
     auto residual = [&](const auto& z) {
       using S = typename std::remove_cvref_t<decltype(z)>::Scalar;
       const Vec<S, N> q1 = z.template head<N>(), p1 = z.template tail<N>();
@@ -95,6 +115,7 @@ class AdaptiveMidpoint {
       F.template tail<N>() = p1 - s.p.template cast<S>() + (da * g) * P_.gradient(qa);
       return F;
     };
+    // [avi-step]
     auto fj = [&](const Vec<double, M>& z, Vec<double, M>& F, Mat<double, M>& J) {
       F = residual(z);
       J = ad::jacobian<M>(residual, z);

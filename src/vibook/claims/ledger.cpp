@@ -220,4 +220,46 @@ std::string Ledger::to_html(std::string_view paper_filter,
   return out;
 }
 
+std::string Ledger::to_summary_html() const {
+  const Status order[] = {Status::reproduced, Status::reproduced_with_caveat,
+                          Status::not_reproduced, Status::erratum, Status::pending};
+  const std::pair<const char*, const char*> papers[] = {
+      {"S", "Sharma et al. 2022"}, {"V", "Vermeeren 2017"}, {"SS", "Shen &amp; Sun 2025"}};
+  std::string out = "<table class=\"vibook-summary\">\n<tr><th>paper</th>";
+  for (Status st : order) out += fmt::format("<th>{}</th>", to_string(st));
+  out += "<th>all</th></tr>\n";
+  auto count = [&](std::string_view paper, Status st) {
+    return std::count_if(rows_.begin(), rows_.end(), [&](const Row& r) {
+      return (paper.empty() || r.info.paper == paper) && r.result.status == st;
+    });
+  };
+  for (const auto& [key, name] : papers) {
+    out += fmt::format("<tr><td>{}</td>", name);
+    long all = 0;
+    for (Status st : order) {
+      const long n = count(key, st);
+      all += n;
+      out += fmt::format("<td class=\"status-{}\">{}</td>", to_string(st), n);
+    }
+    out += fmt::format("<td>{}</td></tr>\n", all);
+  }
+  out += "<tr><td><b>all</b></td>";
+  for (Status st : order)
+    out += fmt::format("<td class=\"status-{}\"><b>{}</b></td>", to_string(st), count({}, st));
+  out += fmt::format("<td><b>{}</b></td></tr>\n</table>\n", rows_.size());
+  for (const auto& [st, heading] :
+       {std::pair{Status::not_reproduced, "Not reproduced (measured, and the claim does not hold)"},
+        std::pair{Status::erratum,
+                  "Errata (a printed formula or number is wrong; the book "
+                  "shows both forms)"}}) {
+    out += fmt::format("<p><b>{}</b>:</p>\n<ul class=\"vibook-findings\">\n", heading);
+    for (const auto& r : rows_)
+      if (r.result.status == st)
+        out += fmt::format("<li><code>{}</code> ({}) {}</li>\n", escape(r.info.id),
+                           escape(r.info.where), escape(r.info.title));
+    out += "</ul>\n";
+  }
+  return out;
+}
+
 }  // namespace vibook::claims

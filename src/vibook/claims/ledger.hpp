@@ -75,6 +75,9 @@ class Ledger {
   /// listed IDs.
   std::string to_html(std::string_view paper_filter = {},
                       const std::vector<std::string>& ids = {}) const;
+  /// HTML for the book's first page: the number of claims per paper and status, then the
+  /// claims that were not reproduced and the errata found, by ID and title.
+  std::string to_summary_html() const;
 
  private:
   std::vector<Row> rows_;

@@ -1,6 +1,6 @@
 /// \file errors.hpp
-/// \brief Typed errors. The command line maps ArgumentError to exit status 2 and
-/// NumericalError (including SolveError) to exit status 3.
+/// \brief Typed errors. The command line maps ArgumentError to exit status 2,
+/// NumericalError (including SolveError) to exit status 3 and IoError to exit status 4.
 #pragma once
 
 #include <stdexcept>
@@ -28,6 +28,13 @@ class ArgumentError : public std::invalid_argument {
 
 /// A numerical method could not produce a valid result (command line: exit status 3).
 class NumericalError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+/// An output could not be written: a full disk, a closed pipe, a failed rename (command line:
+/// exit status 4).
+class IoError : public std::runtime_error {
  public:
   using std::runtime_error::runtime_error;
 };

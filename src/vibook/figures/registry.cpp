@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <fstream>
 
+#include "vibook/core/output_file.hpp"
 #include "vibook/core/parallel.hpp"
 #include "vibook/epavi/checks.hpp"
 #include "vibook/integrators/checks.hpp"
@@ -71,18 +72,28 @@ FigureOutput make_figure(const Check& check, const std::filesystem::path& out_ro
   FigureOutput out;
   out.id = check.id;
   out.dir = out_root / check.id;
-  std::filesystem::create_directories(out.dir);
-  out.results = check.run(Context{out.dir});
-  {
-    std::ofstream js(out.dir / "claims.json");
-    js << claims::results_to_json(out.results).dump(2) << '\n';
-    if (!js) throw std::runtime_error("could not write " + (out.dir / "claims.json").string());
-  }
+  // Everything is written into a fresh hidden directory beside OUT/ID, which replaces OUT/ID
+  // only when the data, claims.json and the images are complete: an interrupted run leaves
+  // the previous figure, or nothing, under the final name (output_file.hpp).
+  const std::filesystem::path tmp = temporary_directory_for(out.dir);
   try {
-    plot::render(check.id, out.dir);
-    out.rendered = true;
-  } catch (const plot::PlotError& e) {
-    out.render_error = e.what();
+    out.results = check.run(Context{tmp});
+    write_output_file((tmp / "claims.json").string(),
+                      claims::results_to_json(out.results).dump(2) + "\n", "claims.json");
+    try {
+      plot::render(check.id, tmp);
+      out.rendered = true;
+    } catch (const plot::PlotError& e) {
+      out.render_error = e.what();
+      for (auto at = out.render_error.find(tmp.string()); at != std::string::npos;
+           at = out.render_error.find(tmp.string()))
+        out.render_error.replace(at, tmp.string().size(), out.dir.string());
+    }
+    commit_directory(tmp, out.dir);
+  } catch (...) {
+    std::error_code ec;
+    std::filesystem::remove_all(tmp, ec);
+    throw;
   }
   return out;
 }

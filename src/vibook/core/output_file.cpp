@@ -1,0 +1,243 @@
+// Output files (output_file.hpp): checked before work, written beside, renamed at the end.
+#include "vibook/core/output_file.hpp"
+
+#include <fcntl.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include <cerrno>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <iostream>
+#include <mutex>
+#include <system_error>
+
+#include "vibook/core/errors.hpp"
+
+namespace fs = std::filesystem;
+
+namespace vibook {
+
+namespace {
+
+std::string quoted(const fs::path& p) { return "'" + p.string() + "'"; }
+
+std::string last_error() { return std::strerror(errno); }
+
+fs::path parent_of(const fs::path& p) {
+  const fs::path d = p.parent_path();
+  return d.empty() ? fs::path(".") : d;
+}
+
+// The process's umask, read once (umask() both reads and sets it, so it is not read again
+// while threads may be writing files).
+mode_t process_umask() {
+  static const mode_t m = [] {
+    const mode_t old = ::umask(0);
+    ::umask(old);
+    return old;
+  }();
+  return m;
+}
+
+void check_directory(const fs::path& dir, const std::string& arg) {
+  struct stat st {};
+  if (::stat(dir.c_str(), &st) != 0 || !S_ISDIR(st.st_mode))
+    throw ArgumentError(arg, "directory " + quoted(dir) + " does not exist");
+  if (::access(dir.c_str(), W_OK | X_OK) != 0)
+    throw ArgumentError(arg, "directory " + quoted(dir) + " is not writable");
+}
+
+}  // namespace
+
+OutputKind check_output_path(const std::string& path, const std::string& arg, bool allow_stdout) {
+  if (path.empty()) throw ArgumentError(arg, "the output path is empty");
+  if (path == "-") {
+    if (!allow_stdout) throw ArgumentError(arg, "standard output ('-') is not accepted here");
+    return OutputKind::standard_output;
+  }
+  const fs::path p(path);
+  struct stat st {};
+  if (::lstat(p.c_str(), &st) != 0) {
+    if (errno != ENOENT)
+      throw ArgumentError(arg, "cannot access " + quoted(p) + ": " + last_error());
+    if (!path.empty() && path.back() == '/')
+      throw ArgumentError(arg, quoted(p) + " names a directory, not a file");
+    check_directory(parent_of(p), arg);
+    return OutputKind::replace;
+  }
+  if (S_ISLNK(st.st_mode)) {
+    struct stat target {};
+    if (::stat(p.c_str(), &target) == 0 && (S_ISCHR(target.st_mode) || S_ISFIFO(target.st_mode)))
+      return OutputKind::write_through;
+    throw ArgumentError(arg, quoted(p) +
+                                 " is a symbolic link; vibook does not replace links (give the "
+                                 "path of its target)");
+  }
+  if (S_ISDIR(st.st_mode)) throw ArgumentError(arg, quoted(p) + " is a directory");
+  if (S_ISCHR(st.st_mode) || S_ISFIFO(st.st_mode)) return OutputKind::write_through;
+  if (!S_ISREG(st.st_mode))
+    throw ArgumentError(arg, quoted(p) + " is not a regular file (a block device or a socket)");
+  if ((st.st_mode & 0222) == 0) throw ArgumentError(arg, quoted(p) + " is read-only");
+  check_directory(parent_of(p), arg);
+  return OutputKind::replace;
+}
+
+OutputFile::OutputFile(const std::string& path, std::string arg, bool allow_stdout)
+    : final_(path), arg_(std::move(arg)), kind_(check_output_path(path, arg_, allow_stdout)) {
+  if (kind_ == OutputKind::standard_output) return;
+  if (kind_ == OutputKind::write_through) {
+    file_.open(final_, std::ios::out | std::ios::binary);
+    if (!file_) throw IoError("cannot open " + quoted(final_) + " for writing: " + last_error());
+    return;
+  }
+  // A unique hidden name in the same directory (so that rename is atomic), with the mode the
+  // final file will have: the existing file's, or the usual one for a new file.
+  std::string tmpl = (parent_of(final_) / ("." + final_.filename().string() + ".XXXXXX")).string();
+  const int fd = ::mkstemp(tmpl.data());
+  if (fd < 0)
+    throw IoError("cannot create a temporary file beside " + quoted(final_) + ": " + last_error());
+  tmp_ = tmpl;
+  struct stat st {};
+  const mode_t mode =
+      ::stat(final_.c_str(), &st) == 0 ? (st.st_mode & 07777) : (0666 & ~process_umask());
+  if (::fchmod(fd, mode) != 0 || ::close(fd) != 0) {
+    std::error_code ec;
+    fs::remove(tmp_, ec);
+    throw IoError("cannot prepare " + quoted(tmp_) + ": " + last_error());
+  }
+  file_.open(tmp_, std::ios::out | std::ios::trunc | std::ios::binary);
+  if (!file_) {
+    std::error_code ec;
+    fs::remove(tmp_, ec);
+    throw IoError("cannot open " + quoted(tmp_) + " for writing: " + last_error());
+  }
+}
+
+OutputFile::~OutputFile() {
+  if (done_ || kind_ != OutputKind::replace) return;
+  file_.close();
+  std::error_code ec;
+  fs::remove(tmp_, ec);
+}
+
+std::ostream& OutputFile::stream() {
+  return kind_ == OutputKind::standard_output ? std::cout : static_cast<std::ostream&>(file_);
+}
+
+void OutputFile::commit() {
+  done_ = true;
+  if (kind_ == OutputKind::standard_output) {
+    check_standard_output();
+    return;
+  }
+  errno = 0;
+  file_.flush();
+  file_.close();
+  const bool failed = file_.fail();
+  const std::string why = errno != 0 ? last_error() : "write failed";
+  if (kind_ == OutputKind::write_through) {
+    if (failed) throw IoError("cannot write " + quoted(final_) + ": " + why);
+    return;
+  }
+  std::error_code ec;
+  if (failed) {
+    fs::remove(tmp_, ec);
+    throw IoError("cannot write " + quoted(final_) + ": " + why + " (nothing was replaced)");
+  }
+  // The final name must still be a regular file or absent: never rename over anything else.
+  struct stat st {};
+  if (::lstat(final_.c_str(), &st) == 0 && !S_ISREG(st.st_mode)) {
+    fs::remove(tmp_, ec);
+    throw IoError(quoted(final_) +
+                  " stopped being a regular file while vibook ran; nothing was "
+                  "replaced");
+  }
+  if (::rename(tmp_.c_str(), final_.c_str()) != 0) {
+    const std::string e = last_error();
+    fs::remove(tmp_, ec);
+    throw IoError("cannot rename " + quoted(tmp_) + " to " + quoted(final_) + ": " + e);
+  }
+}
+
+std::string OutputFile::keep_partial() {
+  done_ = true;
+  if (kind_ == OutputKind::standard_output) {
+    std::cout.flush();
+    return "the rows before it were written to standard output";
+  }
+  file_.flush();
+  file_.close();
+  if (kind_ == OutputKind::write_through)
+    return "the rows before it were written to " + quoted(final_);
+  std::error_code ec;
+  fs::path partial = final_;
+  partial += ".partial";
+  bool kept = false;
+  try {
+    kept = !file_.fail() &&
+           check_output_path(partial.string(), arg_, false) == OutputKind::replace &&
+           ::rename(tmp_.c_str(), partial.c_str()) == 0;
+  } catch (const ArgumentError&) {
+    kept = false;
+  }
+  if (kept) return "the rows before it are in " + quoted(partial) + " (incomplete)";
+  fs::remove(tmp_, ec);
+  return "no partial output was kept";
+}
+
+void write_output_file(const std::string& path, const std::string& text, const std::string& arg) {
+  OutputFile f(path, arg);
+  f.stream() << text;
+  f.commit();
+}
+
+void check_standard_output() {
+  errno = 0;
+  std::cout.flush();
+  const bool bad = std::fflush(stdout) != 0 || std::ferror(stdout) != 0 || !std::cout;
+  if (bad) {
+    const std::string why = errno != 0 ? last_error() : "write failed";
+    std::clearerr(stdout);
+    std::cout.clear();
+    throw IoError("standard output: " + why);
+  }
+}
+
+fs::path temporary_directory_for(const fs::path& final_dir) {
+  const fs::path parent = parent_of(final_dir);
+  std::error_code ec;
+  fs::create_directories(parent, ec);
+  std::string tmpl = (parent / ("." + final_dir.filename().string() + ".tmp-XXXXXX")).string();
+  if (::mkdtemp(tmpl.data()) == nullptr)
+    throw IoError("cannot create a temporary directory in " + quoted(parent) + ": " + last_error());
+  // mkdtemp makes it private (0700); the final directory gets the usual mode.
+  if (::chmod(tmpl.c_str(), 0777 & ~process_umask()) != 0) {
+    const std::string e = last_error();
+    fs::remove(tmpl, ec);
+    throw IoError("cannot set the mode of " + quoted(fs::path(tmpl)) + ": " + e);
+  }
+  return tmpl;
+}
+
+void commit_directory(const fs::path& tmp_dir, const fs::path& final_dir) {
+  struct stat st {};
+  std::error_code ec;
+  if (::lstat(final_dir.c_str(), &st) == 0) {
+    if (!S_ISDIR(st.st_mode))
+      throw IoError(quoted(final_dir) +
+                    " exists and is not a directory (or is a link); the new "
+                    "output is in " +
+                    quoted(tmp_dir));
+    fs::remove_all(final_dir, ec);
+    if (ec)
+      throw IoError("cannot remove the old " + quoted(final_dir) + ": " + ec.message() +
+                    "; the new output is in " + quoted(tmp_dir));
+  }
+  if (::rename(tmp_dir.c_str(), final_dir.c_str()) != 0)
+    throw IoError("cannot rename " + quoted(tmp_dir) + " to " + quoted(final_dir) + ": " +
+                  last_error());
+}
+
+}  // namespace vibook

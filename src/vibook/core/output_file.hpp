@@ -1,0 +1,74 @@
+/// \file output_file.hpp
+/// \brief Output files that are never half-written under their final name.
+///
+/// Every file vibook writes goes through here. A path is checked before any work starts
+/// (`check_output_path`): an existing regular file or a new name in a writable directory is
+/// written to a temporary file beside it and renamed onto the final name only when everything
+/// was written, flushed and closed without error. A character device or a FIFO (`/dev/null`,
+/// a pipe) is written through, never replaced. A symbolic link, a directory, a block device,
+/// a socket or a read-only file is refused. A failed write is an IoError (command line: exit
+/// status 4), and the temporary file is removed.
+#pragma once
+
+#include <filesystem>
+#include <fstream>
+#include <memory>
+#include <ostream>
+#include <string>
+
+namespace vibook {
+
+/// How an output path will be written.
+enum class OutputKind {
+  standard_output,  ///< "-"
+  replace,          ///< new path or regular file: temporary beside it, renamed at the end
+  write_through,    ///< character device or FIFO: opened and written in place
+};
+
+/// Checks that `path` may be written, before any work starts; throws ArgumentError naming
+/// `arg` otherwise. "-" means standard output when `allow_stdout`.
+OutputKind check_output_path(const std::string& path, const std::string& arg,
+                             bool allow_stdout = true);
+
+/// One output file (see the file comment). Destroyed without commit(), it removes its
+/// temporary file.
+class OutputFile {
+ public:
+  /// Checks the path (ArgumentError naming `arg`) and opens the temporary file (IoError).
+  OutputFile(const std::string& path, std::string arg, bool allow_stdout = true);
+  ~OutputFile();
+  OutputFile(const OutputFile&) = delete;
+  OutputFile& operator=(const OutputFile&) = delete;
+
+  std::ostream& stream();
+  bool is_stdout() const { return kind_ == OutputKind::standard_output; }
+  /// Flushes and closes, checks every write, renames the temporary onto the final path.
+  /// Throws IoError naming the path on any failure (the temporary is then removed).
+  void commit();
+  /// After a failure of the computation: keeps what was written as PATH.partial (when that
+  /// name may be written; otherwise the temporary is removed) and says where it is.
+  std::string keep_partial();
+
+ private:
+  std::filesystem::path final_, tmp_;
+  std::string arg_;
+  OutputKind kind_;
+  std::ofstream file_;
+  bool done_ = false;
+};
+
+/// Writes `text` to `path` through an OutputFile (checked, temporary, renamed).
+void write_output_file(const std::string& path, const std::string& text, const std::string& arg);
+
+/// Flushes standard output and throws IoError if any write to it failed (a full disk, a
+/// closed pipe): the command line checks this before it exits with status 0.
+void check_standard_output();
+
+/// A fresh directory beside `final_dir` (same parent, hidden name), for outputs that consist
+/// of several files: fill it, then `commit_directory` renames it onto `final_dir`.
+std::filesystem::path temporary_directory_for(const std::filesystem::path& final_dir);
+/// Replaces `final_dir` (absent, or a directory vibook may remove) by `tmp_dir`. A symbolic
+/// link or a non-directory at `final_dir` is refused (IoError); nothing is removed then.
+void commit_directory(const std::filesystem::path& tmp_dir, const std::filesystem::path& final_dir);
+
+}  // namespace vibook

@@ -1,0 +1,154 @@
+#!/usr/bin/env bash
+# Bad and edge inputs of the `vibook` command, as a table: each row gives the exit status, a
+# word the single stderr line must contain (the argument it names), and the arguments. Every
+# row is also checked to leave no file behind in the working directory (a numerical failure,
+# status 3, may leave only FILE.partial, which its message names).
+# Usage: bad_inputs.sh path/to/vibook
+set -u
+V=$(realpath "$1")
+work=$(mktemp -d)
+trap 'chmod -R u+w "$work"; rm -rf "$work"' EXIT
+cd "$work" || exit 2
+pass=0 fail=0
+bad() { fail=$((fail + 1)); echo "FAIL: $*"; }
+
+# row STATUS WORD ARGS...
+row() {
+  local want=$1 word=$2; shift 2
+  rm -rf out && mkdir out && cd out || exit 2
+  ln -s target.csv link.csv
+  printf 'x\n' > readonly.csv && chmod a-w readonly.csv
+  local before; before=$(ls -A | sort)
+  "$V" "$@" >../stdout 2>../stderr
+  local got=$?
+  local after; after=$(ls -A | sort)
+  cd .. || exit 2
+  local lines; lines=$(wc -l <stderr)
+  if [ "$got" != "$want" ]; then
+    bad "vibook $* -> exit $got, expected $want: $(cat stderr)"; return
+  fi
+  if [ "$lines" != 1 ] || ! grep -qF -- "$word" stderr; then
+    bad "vibook $*: want one stderr line naming '$word', got $lines: $(cat stderr)"; return
+  fi
+  local extra; extra=$(comm -13 <(echo "$before") <(echo "$after"))
+  if [ -n "$extra" ] && { [ "$want" != 3 ] || echo "$extra" | grep -qv '\.partial$'; }; then
+    bad "vibook $*: left files behind: $extra"; return
+  fi
+  pass=$((pass + 1))
+}
+
+R=(run --problem kepler --method sv)
+# --- the command word and the subcommands' own options ------------------------------------
+row 2 "nosuchcmd"        nosuchcmd
+row 2 "--frobnicate"     run --frobnicate
+row 2 "--problem"        run --problem foo --method sv --csv a.csv
+row 2 "--method"         run --problem kepler --method rk4 --csv a.csv
+row 2 "--csv"            "${R[@]}"
+# --- numbers: empty, garbage, non-finite, out of range, out of domain ------------------------
+row 2 "--h"              "${R[@]}" --h "" --csv a.csv
+row 2 "--h"              "${R[@]}" --h abc --csv a.csv
+row 2 "--h"              "${R[@]}" --h 0.01x --csv a.csv
+row 2 "--h"              "${R[@]}" --h 0 --csv a.csv
+row 2 "--h"              "${R[@]}" --h -0.1 --csv a.csv
+row 2 "--h"              "${R[@]}" --h nan --csv a.csv
+row 2 "--h"              "${R[@]}" --h inf --csv a.csv
+row 2 "--h"              "${R[@]}" --h 1e400 --csv a.csv
+row 2 "--h"              "${R[@]}" --h 1e-18 --csv a.csv
+row 2 "--h"              "${R[@]}" --h 1e300 --csv a.csv
+row 2 "--t-end"          "${R[@]}" --t-end 1e300 --csv a.csv
+row 2 "--t-end"          "${R[@]}" --t-end 0 --csv a.csv
+row 2 "--t-end"          "${R[@]}" --t-end "" --csv a.csv
+row 2 "--periods"        "${R[@]}" --periods -1 --csv a.csv
+row 2 "--periods"        "${R[@]}" --periods 1e15 --csv a.csv
+row 2 "--t-end"          "${R[@]}" --t-end 1 --periods 1 --csv a.csv
+row 2 "--periods"        run --problem pendulum --method sv --periods 1 --csv a.csv
+row 2 "--e"              "${R[@]}" --e "" --csv a.csv
+row 2 "--e"              "${R[@]}" --e 1 --csv a.csv
+row 2 "--e"              "${R[@]}" --e -0.1 --csv a.csv
+row 2 "--e"              "${R[@]}" --e nan --csv a.csv
+row 2 "--e"              run --problem harmonic --method sv --e 0.5 --csv a.csv
+row 2 "--every"          "${R[@]}" --every 0 --csv a.csv
+row 2 "--every"          "${R[@]}" --every 1.5 --csv a.csv
+row 2 "--every"          "${R[@]}" --every "" --csv a.csv
+# --- vectors ------------------------------------------------------------------------------
+row 2 "--q0"             "${R[@]}" --q0 1,,0 --p0 0,1 --csv a.csv
+row 2 "--q0"             "${R[@]}" --q0 "" --p0 0,1 --csv a.csv
+row 2 "--q0"             "${R[@]}" --q0 1, --p0 0,1 --csv a.csv
+row 2 "--q0"             "${R[@]}" --q0 1 --p0 0,1 --csv a.csv
+row 2 "--q0"             "${R[@]}" --q0 1,0,0 --p0 0,1 --csv a.csv
+row 2 "--p0"             "${R[@]}" --q0 1,0 --csv a.csv
+row 2 "--p0"             "${R[@]}" --q0 1,0 --p0 0,nan --csv a.csv
+row 2 "--q0"             run --problem harmonic --method sv --q0 1,2 --csv a.csv
+row 2 "--q0/--p0"        "${R[@]}" --q0 1,0 --p0 0,2 --periods 1 --csv a.csv
+# --- options of another method ---------------------------------------------------------------
+row 2 "--h0"             "${R[@]}" --h0 0.1 --csv a.csv
+row 2 "--discrete-lagrangian" "${R[@]}" --discrete-lagrangian sv --csv a.csv
+row 2 "--tol"            "${R[@]}" --tol 1e-3 --csv a.csv
+row 2 "--energy-target"  "${R[@]}" --energy-target initial --csv a.csv
+row 2 "--precision"      "${R[@]}" --precision quad --csv a.csv
+row 2 "--digits"         run --problem kepler --method epavi --digits 30 --csv a.csv
+row 2 "--digits"         run --problem kepler --method epavi --precision mpfr --digits x --csv a.csv
+row 2 "--alpha"          "${R[@]}" --alpha 0.5 --csv a.csv
+row 2 "--alpha"          run --problem kepler --method vi1 --alpha "" --csv a.csv
+row 2 "--alpha"          run --problem kepler --method vi1 --alpha 1.5 --csv a.csv
+row 2 "--e"              run --problem kepler --method epavi --e 0.5 --q0 1,0 --p0 0,1 --csv a.csv
+row 2 "--e"              "${R[@]}" --e 0.5 --q0 1,0 --p0 0,1 --csv a.csv
+row 2 "--h0"             run --problem kepler --method epavi --h0 1e-300 --csv a.csv
+row 2 "--h0"             run --problem kepler --method avi1 --h0 -1 --csv a.csv
+row 2 "--tol"            run --problem kepler --method epavi --tol 1e-20 --csv a.csv
+row 2 "--q0/--p0"        run --problem kepler --method avi2 --q0 1,0 --p0 0,2 --csv a.csv
+row 2 "--c"              run --problem relativistic-kepler --method vi --csv a.csv
+row 2 "--c"              run --problem relativistic-kepler --method vi --c 1e155 --csv a.csv
+row 2 "--c"              run --problem relativistic-kepler --method vi --c "" --csv a.csv
+row 2 "--c"              "${R[@]}" --c 5 --csv a.csv
+row 2 "--t-end"          run --problem relativistic-kepler --method vi --c 5 --t-end 3 --csv a.csv
+row 2 "--tau-end"        "${R[@]}" --tau-end 3 --csv a.csv
+row 2 "not bound"        run --problem relativistic-kepler --method vi --c 5 --p0 0,3 --csv a.csv
+# --- output paths: checked before any work -----------------------------------------------------
+row 2 "--csv"            "${R[@]}" --csv ""
+row 2 "--csv"            "${R[@]}" --csv .
+row 2 "--csv"            "${R[@]}" --csv link.csv
+row 2 "--csv"            "${R[@]}" --csv readonly.csv
+row 2 "--csv"            "${R[@]}" --csv nodir/a.csv
+row 2 "--csv"            "${R[@]}" --csv a.csv/
+row 2 "--json-out"       claims --json-out nodir/c.json
+row 2 "--json-out"       claims --json-out .
+row 2 "--figures-dir"    claims --figures-dir nodir
+row 2 "ID"               figure no-such-figure --out f
+# --- numerical failures: status 3, where and from which state ----------------------------------
+row 3 "at step 1"        run --problem kepler --method del-generic --q0 1,0 --p0 0,1.4 --h 2 --t-end 100 --csv d.csv
+row 3 "not finite"       run --problem harmonic --method sv --q0 1e300 --csv a.csv
+row 3 "step"             run --problem kepler --method avi1 --e 0.99 --csv a.csv
+row 3 "no admissible time step" run --problem kepler --method epavi --e 0.99 --h0 0.001 --csv a.csv
+# --- the symbolic engine -----------------------------------------------------------------------
+M=(modified --method sv)
+row 2 "--order"          "${M[@]}"
+row 2 "--order"          "${M[@]}" --order 11
+row 2 "--order"          "${M[@]}" --order x
+row 2 "--dim"            "${M[@]}" --order 2 --dim 0
+row 2 "--dim"            "${M[@]}" --order 2 --dim 4
+row 2 "--what"           "${M[@]}" --order 2 --what everything
+row 2 "--format"         "${M[@]}" --order 2 --format maple
+row 2 "--cross-check"    "${M[@]}" --order 2 --what lagrangian --cross-check
+row 2 "--alpha"          modified --method vi1 --potential kepler --order 1 --alpha 1/2x
+row 2 "--alpha"          modified --method vi1 --potential kepler --order 1 --alpha ""
+row 2 "--alpha"          modified --method vi1 --potential kepler --order 1 --alpha 2
+row 2 "--alpha"          modified --method vi1 --potential kepler --order 1 --alpha 1/0
+row 2 "--alpha"          modified --method sv --potential kepler --order 1 --alpha 1/2
+# --- standard output that cannot be written: status 4 ------------------------------------------
+if [ -w /dev/full ]; then
+  "$V" run --problem kepler --method sv --csv - >/dev/full 2>stderr
+  [ $? = 4 ] && [ "$(wc -l <stderr)" = 1 ] && grep -q "I/O error" stderr && pass=$((pass + 1)) ||
+    bad "--csv - > /dev/full: want status 4 and one line, got: $(cat stderr)"
+  "$V" modified --method sv --order 2 >/dev/full 2>stderr
+  [ $? = 4 ] && pass=$((pass + 1)) || bad "modified > /dev/full: want status 4: $(cat stderr)"
+fi
+# A device is written through, never replaced.
+"$V" "${R[@]}" --t-end 1 --csv /dev/null 2>stderr && [ -c /dev/null ] && pass=$((pass + 1)) ||
+  bad "--csv /dev/null: $(cat stderr)"
+# A link is refused and left alone; its target is not created.
+mkdir -p lk && ln -sf target.csv lk/l.csv && "$V" "${R[@]}" --csv lk/l.csv 2>/dev/null
+[ -L lk/l.csv ] && [ ! -e lk/target.csv ] && pass=$((pass + 1)) || bad "symlink replaced"
+
+echo "bad inputs: $pass passed, $fail failed"
+[ "$fail" = 0 ]

@@ -1,0 +1,24 @@
+#!/usr/bin/env bash
+# `vibook figures` run again must give, file for file and byte for byte, the tree the book
+# build made. Usage: figures_reproducible.sh path/to/vibook BOOK_FIGURES_DIR
+set -u
+V=$1 ref=$2
+[ -d "$ref" ] || { echo "no reference tree $ref: build the book first (./build.sh test does)"; exit 1; }
+tmp=$(mktemp -d)
+trap 'rm -rf "$tmp"' EXIT
+# Long studies only when the reference has them (./build.sh book runs them, the test build not).
+env -u VIBOOK_LONG_STUDIES "$V" figures --out "$tmp/figs" >/dev/null || { echo "vibook figures failed"; exit 1; }
+pass=0 fail=0
+for d in "$tmp"/figs/*/; do
+  id=$(basename "$d")
+  if diff -r "$d" "$ref/$id" >"$tmp/diff" 2>&1; then
+    pass=$((pass + 1))
+  else
+    fail=$((fail + 1)); echo "FAIL: figure $id differs between two runs:"; head -5 "$tmp/diff"
+  fi
+done
+# Nothing but the figures' own directories (no temporary ones) is left in the output.
+extra=$(find "$tmp/figs" -mindepth 1 -maxdepth 1 -name '.*')
+[ -z "$extra" ] && pass=$((pass + 1)) || { fail=$((fail + 1)); echo "FAIL: left behind: $extra"; }
+echo "figures reproducible: $pass passed, $fail failed"
+[ "$fail" = 0 ]

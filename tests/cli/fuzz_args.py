@@ -1,0 +1,144 @@
+#!/usr/bin/env python3
+"""Seeded random arguments for `vibook run` and `vibook modified` (the argument parser, the
+strict number and list parsers, and the --alpha rational parser), run for a bounded number of
+cases and time. Every case must end with exit status 0, 2, 3 or 4 (never a signal, an
+uncaught exception's 1, or a hang), with exactly one stderr line when it fails, and must leave
+nothing in its directory but the file it was asked to write (or FILE.partial after status 3).
+
+Usage: fuzz_args.py VIBOOK [--seed N] [--cases N] [--seconds S]
+The seed is printed, so that a failing case can be replayed.
+"""
+import argparse
+import os
+import random
+import subprocess
+import sys
+import tempfile
+import time
+
+GARBAGE = ["", " ", "abc", "nan", "inf", "-inf", "1e400", "-1e400", "0x10", "1e", "--", "-",
+           "1,,0", ",", "1,", ",1", "1;0", "١", "é", "1/0", "1/2x", "0/0", "+", "++1",
+           "9" * 40, "1" * 400, "%s%n", "$(true)", "1e-400"]
+NUMBERS = ["0", "1", "0.5", "-1", "2", "10", "0.01", "0.1", "1e-3", "1e300", "1e-18", "-0.1",
+           "0.99", "0.9", "1e155", "5", "3"]
+LISTS = ["1,0", "0,1", "0.4,0", "0,2", "1", "1,2,3", "1e300,0", "0,0", "nan,1", "1,0.5"]
+
+
+def pick(r, *pools):
+    # Mostly a valid value, so that the cases reach the runs, not only the first check.
+    pool = pools[0] if r.random() < 0.75 else r.choice(pools)
+    return r.choice(pool)
+
+
+def run_case(r):
+    if r.random() < 0.7:
+        args = ["run"]
+        if r.random() < 0.95:
+            args += ["--problem", r.choice(["kepler"] * 10 + ["harmonic", "pendulum",
+                                            "relativistic-kepler"] * 2 + ["foo", ""])]
+        if r.random() < 0.95:
+            args += ["--method", r.choice(["sv", "se", "midpoint", "del-generic", "epavi", "avi1"] * 3
+                                          + ["se-adjoint", "avi2", "vi", "k-symplectic", "vi1",
+                                             "vi2", "vi2-adjoint", "rk4", ""])]
+        # Small runs only: the step and the end time come from bounded pools most of the time.
+        opts = {
+            "--h": [["0.05", "0.1", "0.5"], NUMBERS, GARBAGE],
+            "--t-end": [["1", "2", "0.5"], NUMBERS, GARBAGE],
+            "--periods": [["0.5", "1"], NUMBERS, GARBAGE],
+            "--e": [["0", "0.5", "0.7"], NUMBERS, GARBAGE],
+            "--q0": [LISTS, GARBAGE],
+            "--p0": [LISTS, GARBAGE],
+            "--h0": [["0.01", "0.05"], NUMBERS, GARBAGE],
+            "--precision": [["double", "long-double", "double-double", "quad", "mpfr"], GARBAGE],
+            "--digits": [["18", "25"], ["0", "-1", "100001"], GARBAGE],
+            "--tol": [["1e-10", "1e-6"], NUMBERS, GARBAGE],
+            "--energy-target": [["previous", "initial"], GARBAGE],
+            "--alpha": [["0.3", "0.5"], NUMBERS, GARBAGE],
+            "--c": [["5", "10"], NUMBERS, GARBAGE],
+            "--tau-end": [["1", "2"], NUMBERS, GARBAGE],
+            "--every": [["1", "10", "100"], ["0", "-1", "1.5"], GARBAGE],
+            "--discrete-lagrangian": [["midpoint", "sv", "se", "se-adjoint"], GARBAGE],
+        }
+        for name in r.sample(sorted(opts), r.choice([0, 1, 1, 2, 2, 3, 5])):
+            args += [name, pick(r, *opts[name])]
+        if r.random() < 0.95:
+            args += ["--csv", r.choice(["out.csv"] * 6 + ["-", "", ".", "nodir/x.csv"])]
+    else:
+        args = ["modified"]
+        if r.random() < 0.95:
+            args += ["--method", r.choice(["sv", "se", "se-adjoint", "midpoint", "vi1",
+                                           "vi1-adjoint", "vi2", "rk4", ""])]
+        opts = {
+            "--potential": [["generic", "kepler", "pendulum", "harmonic"], GARBAGE],
+            "--dim": [["1", "2"], ["0", "4", "-1"], GARBAGE],
+            "--what": [["equation", "lagrangian", "hamiltonian", "meshed", "disc"], GARBAGE],
+            "--format": [["text", "latex", "python"], GARBAGE],
+            "--alpha": [["1/2", "0.3", "1/3", "0", "1", "2.5e-1"], GARBAGE, NUMBERS],
+        }
+        if r.random() < 0.9:
+            args += ["--order", pick(r, ["0", "1", "2"], ["-1", "11", "1.5"], GARBAGE)]
+        for name in r.sample(sorted(opts), r.choice([0, 1, 2, 2, 3])):
+            args += [name, pick(r, *opts[name])]
+        if r.random() < 0.3:
+            args.append("--cross-check")
+    if r.random() < 0.05:
+        args.insert(r.randint(1, len(args)), r.choice(["--nosuch", "-x", "--h=", "--"]))
+    return args
+
+
+def main():
+    ap = argparse.ArgumentParser()
+    ap.add_argument("vibook")
+    ap.add_argument("--seed", type=int, default=int(os.environ.get("VIBOOK_FUZZ_SEED", "20261122")))
+    ap.add_argument("--cases", type=int, default=int(os.environ.get("VIBOOK_FUZZ_CASES", "400")))
+    ap.add_argument("--seconds", type=float, default=float(os.environ.get("VIBOOK_FUZZ_SECONDS", "120")))
+    a = ap.parse_args()
+    vibook = os.path.realpath(a.vibook)
+    r = random.Random(a.seed)
+    print(f"fuzz: seed {a.seed}, at most {a.cases} cases in {a.seconds:.0f} s")
+    start = time.monotonic()
+    done = failed = 0
+    statuses = {}
+    while done < a.cases and time.monotonic() - start < a.seconds:
+        args = run_case(r)
+        with tempfile.TemporaryDirectory() as d:
+            try:
+                p = subprocess.run([vibook] + args, cwd=d, capture_output=True, timeout=60,
+                                   stdin=subprocess.DEVNULL)
+            except subprocess.TimeoutExpired:
+                failed += 1
+                print(f"FAIL (no answer in 60 s): vibook {' '.join(repr(x) for x in args)}")
+                done += 1
+                continue
+            left = sorted(os.listdir(d))
+            csv = args[args.index("--csv") + 1] if "--csv" in args[:-1] else None
+            allowed = set()
+            if p.returncode == 0 and csv and "/" not in csv:
+                allowed.add(csv)
+            if p.returncode == 3 and csv and "/" not in csv:
+                allowed.add(csv + ".partial")
+            err = p.stderr.decode("utf-8", "replace").splitlines()
+            problem = None
+            if p.returncode not in (0, 2, 3, 4):
+                problem = f"exit status {p.returncode}"
+            elif p.returncode != 0 and len(err) != 1:
+                problem = f"{len(err)} stderr lines"
+            elif p.returncode != 0 and not err[0].startswith("vibook: "):
+                problem = "stderr line without the 'vibook: ' prefix"
+            elif set(left) - allowed:
+                problem = f"left {sorted(set(left) - allowed)}"
+            statuses[p.returncode] = statuses.get(p.returncode, 0) + 1
+            if problem:
+                failed += 1
+                print(f"FAIL ({problem}): vibook {' '.join(repr(x) for x in args)}")
+                for line in err[:5]:
+                    print("   ", line)
+        done += 1
+    summary = ", ".join(f"status {k}: {v}" for k, v in sorted(statuses.items()))
+    print(f"fuzz: {done} cases in {time.monotonic() - start:.0f} s ({summary})")
+    print(f"{done - failed} passed, {failed} failed")
+    return 1 if failed else 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
