@@ -192,6 +192,7 @@ claims::ClaimResult series_claim(const char* id, const char* source, const Fig12
   return c;
 }
 
+// [sharma-trajectory-criterion]
 // Trajectory criterion shared by both figures (fixed before measuring): final errors within a
 // factor 3 of each other, EpAVI not worse than the better AVI by more than 10% ("marginally
 // better"), growth exponent of the error envelope in [0.7, 1.3] ("slow linear growth").
@@ -210,11 +211,13 @@ bool trajectories_ok(const Fig12& r, std::string& why) {
   }
   return ok;
 }
+// [sharma-trajectory-criterion]
 
 std::vector<claims::ClaimResult> run_fig1(const Context& ctx) {
   const Fig12 r = compute(0.1, ctx);
   claims::ClaimResult c = series_claim("S-F1", "sharma-fig1", r);
   std::string why;
+  // [sharma-fig1-criterion]
   // (a) EpAVI and AVI1 nearly the same steps (mean within 10%), AVI2 marginally larger (mean
   //     ratio to EpAVI in (1, 1.25]); (b) AVI energy errors about 1e-7 (within [1e-8, 1e-6]),
   //     EpAVI about 1e-14 (≤ 1e-12); (c) trajectories, see trajectories_ok.
@@ -227,6 +230,7 @@ std::vector<claims::ClaimResult> run_fig1(const Context& ctx) {
     if (!(s->max_energy_err >= 1e-8 && s->max_energy_err <= 1e-6)) {
       ok = false, why += fmt::format("AVI energy error {:.2g} not about 1e-7; ", s->max_energy_err);
     }
+  // [sharma-fig1-criterion]
   }
   if (!(r.epavi.max_energy_err <= 1e-12))
     ok = false, why += "EpAVI discrete energy error above 1e-12; ";

@@ -129,6 +129,7 @@ class SplittingKernel {
   SplittingKernel(Split s, SplittingMethod m) : c_(std::move(s)), m_(m) {}
   /// Explicit: the report has residual 0 and no iterations (the kernels' interface).
   SolveReport step(Vec<double, N>& q, Vec<double, N>& p, double h) const {
+    // [splitting-step]
     switch (m_) {
       case SplittingMethod::vi1:
         c_.phi(q, p, h);
@@ -145,6 +146,7 @@ class SplittingKernel {
         c_.phi_adjoint(q, p, 0.5 * h);
         break;
     }
+    // [splitting-step]
     return SolveReport{0.0, 0, true};
   }
 

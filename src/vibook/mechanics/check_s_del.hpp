@@ -8,8 +8,10 @@
 
 namespace vibook::checks {
 
+// [s-del-criterion]
 /// "To round-off" for the two-step residual: 64 ulps of |p| + |E|, fixed before measuring.
 inline constexpr double kSDelTolerance = 64 * kEps;
+// [s-del-criterion]
 
 struct SDelMeasurement {
   double two_step_residual = 0;      ///< max |(11), (12)| / (|p| + |E|) along the run

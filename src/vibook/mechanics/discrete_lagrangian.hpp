@@ -41,6 +41,7 @@ requires requires {
 template <class T>
 using scalar_t = typename scalar_of<std::remove_cvref_t<T>>::type;
 
+// [discrete-lagrangians]
 // Vermeeren 2017, Example 1(a): L_disc = L((x_j + x_{j+1})/2, (x_{j+1} − x_j)/h).
 /// Midpoint discrete Lagrangian; generates the implicit midpoint rule.
 template <class Lagrangian>
@@ -63,6 +64,7 @@ auto stormer_verlet_dl(Lagrangian L) {
         return h * (0.5 * L(q0, v) + 0.5 * L(q1, v));
       };
 }
+// [discrete-lagrangians]
 
 // Vermeeren 2017, Example 1(d); Shen & Sun 2025, (4.16): L_disc = L(x_{j+1}, v).
 /// Discrete Lagrangian of the symplectic Euler method `se` of vibook: for a separable

@@ -41,6 +41,7 @@ enum class EnergyTarget {
   initial,   ///< always E_1, the energy fixed by the start-up step
 };
 
+// [extended-midpoint-dl]
 // Sharma et al. 2022, (25): the midpoint extended discrete Lagrangian.
 /// L_d(t0, q0, t1, q1) = (t1 − t0) · L((q0 + q1)/2, (q1 − q0)/(t1 − t0)) for any continuous
 /// Lagrangian L(q, v) generic in its scalar (autonomous here; the time arguments enter only
@@ -56,6 +57,7 @@ auto extended_midpoint_dl(Lagrangian L) {
     return S(dt * L(qm, v));
   };
 }
+// [extended-midpoint-dl]
 
 /// Report of one extended step: the energy-equation residual |D1 L_d − E_k| at the returned
 /// point, the momentum-equation residual, and the iteration counts of both solves.

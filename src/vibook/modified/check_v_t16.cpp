@@ -243,8 +243,10 @@ Study hamiltonian_study(Method m, Potential pot, int k, Vec<double, Problem::N> 
     s.h.push_back(h);
     s.measured.push_back(static_cast<double>(worst));
   }
+  // [v-se-criterion]
   s.slope = fit_order(s.h, s.measured, 1e-14, 4).slope;
   s.ok = s.expected >= k + 2 && std::abs(s.slope - s.expected) < kOrderTol;
+  // [v-se-criterion]
   return s;
 }
 
