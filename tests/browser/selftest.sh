@@ -18,6 +18,15 @@ cat >"$tmp/bad.html" <<'HTML'
 <script>console.error("deliberate console error");</script>
 </body></html>
 HTML
+# API pages after the first of their kind are checked without the browser: a broken link and a
+# broken image there must be reported too.
+cat >"$tmp/classA.html" <<'HTML'
+<!DOCTYPE html><html><head><title>A</title></head><body><a href="classB.html">B</a></body></html>
+HTML
+cat >"$tmp/classB.html" <<'HTML'
+<!DOCTYPE html><html><head><title>B</title></head><body>
+<a href="classNowhere.html#x">dead API link</a><img src="gone.png" alt="gone"></body></html>
+HTML
 "/usr/bin/python3" "$here/check_book.py" "$tmp" >"$tmp/bad.log" 2>&1
 rc=$?
 fail=0
@@ -25,6 +34,8 @@ fail=0
 for what in "unrendered TeX" "broken image" "broken link" "deliberate console error"; do
   grep -q "bad.html: .*$what" "$tmp/bad.log" || { echo "FAIL: not reported: $what"; fail=1; }
 done
-grep -q "index.html" "$tmp/bad.log" && { echo "FAIL: the clean page was reported"; fail=1; }
-[ $fail = 0 ] && echo "book checker selftest: 2 passed, 0 failed" || cat "$tmp/bad.log"
+grep -q "classB.html: broken link classNowhere.html#x" "$tmp/bad.log" || { echo "FAIL: static broken link not reported"; fail=1; }
+grep -q "classB.html: broken image gone.png" "$tmp/bad.log" || { echo "FAIL: static broken image not reported"; fail=1; }
+grep -q "index.html\|classA.html" "$tmp/bad.log" && { echo "FAIL: a clean page was reported"; fail=1; }
+[ $fail = 0 ] && echo "book checker selftest: passed" || cat "$tmp/bad.log"
 exit $fail

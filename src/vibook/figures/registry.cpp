@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <fstream>
+#include <stdexcept>
 
 #include "vibook/core/output_file.hpp"
 #include "vibook/core/parallel.hpp"
@@ -77,7 +78,7 @@ FigureOutput make_figure(const Check& check, const std::filesystem::path& out_ro
   // the previous figure, or nothing, under the final name (output_file.hpp).
   const std::filesystem::path tmp = temporary_directory_for(out.dir);
   try {
-    out.results = check.run(Context{tmp});
+    out.results = run_check(check, Context{tmp});
     write_output_file((tmp / "claims.json").string(),
                       claims::results_to_json(out.results).dump(2) + "\n", "claims.json");
     try {
@@ -98,35 +99,61 @@ FigureOutput make_figure(const Check& check, const std::filesystem::path& out_ro
   return out;
 }
 
+std::vector<claims::ClaimResult> run_check(const Check& check, const Context& context) {
+  std::vector<claims::ClaimResult> results = check.run(context);
+  for (const auto& id : check.claims) {
+    const auto it = std::find_if(results.begin(), results.end(),
+                                 [&](const claims::ClaimResult& r) { return r.id == id; });
+    if (it == results.end() || it->status == claims::Status::pending)
+      throw std::logic_error("check " + check.id + " names claim " + id +
+                             " but did not measure it");
+  }
+  for (const auto& r : results) {
+    const bool named =
+        std::find(check.claims.begin(), check.claims.end(), r.id) != check.claims.end();
+    if (!named && r.id.find("-ERR-") == std::string::npos)
+      throw std::logic_error("check " + check.id + " measured claim " + r.id +
+                             ", which it does not name");
+  }
+  return results;
+}
+
 std::vector<std::vector<claims::ClaimResult>> run_checks(const std::vector<const Check*>& checks,
                                                          unsigned jobs) {
   std::vector<std::vector<claims::ClaimResult>> results(checks.size());
-  parallel_for(checks.size(), jobs, [&](std::size_t i) { results[i] = checks[i]->run(Context{}); });
+  parallel_for(checks.size(), jobs,
+               [&](std::size_t i) { results[i] = run_check(*checks[i], Context{}); });
   return results;
 }
 
 claims::Ledger measure_all(unsigned jobs, const std::optional<std::filesystem::path>& figures_dir) {
+  // With figures_dir: a figure (or long study) whose DIR/ID/claims.json exists was measured
+  // by `vibook figures` with this same code; its results are read back, not measured again.
   std::vector<const Check*> all;
-  for (const auto& c : registry()) all.push_back(&c);
   std::vector<std::vector<claims::ClaimResult>> reused;
-  if (long_studies_enabled()) {
-    for (const auto& c : long_studies()) {
-      const auto file = figures_dir ? *figures_dir / c.id / "claims.json" : std::filesystem::path();
-      if (figures_dir && std::filesystem::exists(file)) {
-        std::ifstream f(file);
-        reused.push_back(claims::results_from_json(nlohmann::json::parse(f)));
-      } else {
-        all.push_back(&c);
-      }
+  auto take = [&](const Check& c) {
+    const auto file = figures_dir ? *figures_dir / c.id / "claims.json" : std::filesystem::path();
+    if (figures_dir && c.is_figure && std::filesystem::exists(file)) {
+      std::ifstream f(file);
+      reused.push_back(claims::results_from_json(nlohmann::json::parse(f)));
+    } else {
+      all.push_back(&c);
     }
-  }
+  };
+  for (const auto& c : registry()) take(c);
+  if (long_studies_enabled())
+    for (const auto& c : long_studies()) take(c);
+  std::vector<std::vector<claims::ClaimResult>> measured = run_checks(all, jobs);
+  // Recorded in registry order whichever way each check's results were obtained.
   claims::Ledger ledger;
-  for (const auto& rs : run_checks(all, jobs)) {
-    for (const auto& r : rs) ledger.record(r);
-  }
-  for (const auto& rs : reused) {
-    for (const auto& r : rs) ledger.record(r);
-  }
+  std::size_t next_run = 0, next_reused = 0;
+  auto record_next = [&](const Check& c) {
+    const bool ran = next_run < all.size() && all[next_run] == &c;
+    for (const auto& r : ran ? measured[next_run++] : reused[next_reused++]) ledger.record(r);
+  };
+  for (const auto& c : registry()) record_next(c);
+  if (long_studies_enabled())
+    for (const auto& c : long_studies()) record_next(c);
   return ledger;
 }
 

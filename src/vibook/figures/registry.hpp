@@ -44,14 +44,22 @@ struct FigureOutput {
 /// then render with gnuplot. A rendering failure is reported in the result, not thrown.
 FigureOutput make_figure(const Check& check, const std::filesystem::path& out_root);
 
+/// Run one check and hold it to its declaration: every claim it names must be measured (not
+/// pending) in its results, and every result must be a claim it names or an erratum
+/// (`*-ERR-*`). Throws std::logic_error naming the check and the claim otherwise. Every run
+/// (claims, figures, the book) goes through here, so the ledger's "measured exactly when some
+/// check names it" holds by construction.
+std::vector<claims::ClaimResult> run_check(const Check& check, const Context& context);
+
 /// Run checks in parallel (one task per check, at most `jobs` at a time; 0 = hardware).
 std::vector<std::vector<claims::ClaimResult>> run_checks(const std::vector<const Check*>& checks,
                                                          unsigned jobs = 0);
 
 /// Run every check (and the long studies when long_studies_enabled()) and record the results
-/// in a fresh ledger.
-/// With `figures_dir`, a long study whose figure output DIR/ID/claims.json exists is read from
-/// there instead of being run again (the book build runs `vibook figures` first).
+/// in a fresh ledger, in registry order.
+/// With `figures_dir`, a figure whose output DIR/ID/claims.json exists is read from there
+/// instead of being run again: the book build runs `vibook figures` first, then
+/// `vibook claims --figures-dir`, and each measurement is made once.
 claims::Ledger measure_all(unsigned jobs = 0,
                            const std::optional<std::filesystem::path>& figures_dir = {});
 
