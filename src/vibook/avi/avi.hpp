@@ -9,11 +9,11 @@
 #include <limits>
 #include <utility>
 
-#include <fmt/format.h>
 #include <boost/math/tools/toms748_solve.hpp>
 
 #include "vibook/core/autodiff.hpp"
 #include "vibook/core/errors.hpp"
+#include "vibook/core/format.hpp"
 #include "vibook/core/newton.hpp"
 #include "vibook/core/types.hpp"
 #include "vibook/problems/problems.hpp"
@@ -85,15 +85,14 @@ class AdaptiveMidpoint {
       throw;
     } catch (const std::exception& e) {
       // Boost reports an unbracketed or non-finite function with its own exception types.
-      throw SolveError(fmt::format("adaptive midpoint start: no step size Δa in [{:.3g}, {:.3g}] "
-                                   "gives a first step of physical length h0 = {:.3g} ({})",
-                                   lo, hi, h0, e.what()),
+      throw SolveError("adaptive midpoint start: no step size Δa in [" + text::g(lo, 3) + ", " +
+                           text::g(hi, 3) + "] gives a first step of physical length h0 = " +
+                           text::g(h0, 3) + " (" + e.what() + ")",
                        SolveReport{std::numeric_limits<double>::quiet_NaN(), int(it), false});
     }
     if (it >= max_it || !std::isfinite(r.first) || !std::isfinite(r.second))
-      throw SolveError(fmt::format("adaptive midpoint start: the step size for h0 = {:.3g} did "
-                                   "not converge in {} iterations",
-                                   h0, max_it),
+      throw SolveError("adaptive midpoint start: the step size for h0 = " + text::g(h0, 3) +
+                           " did not converge in " + std::to_string(max_it) + " iterations",
                        SolveReport{std::numeric_limits<double>::quiet_NaN(), int(it), false});
     return 0.5 * (r.first + r.second);
   }

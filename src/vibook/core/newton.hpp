@@ -7,10 +7,9 @@
 #include <cmath>
 #include <string>
 
-#include <fmt/format.h>
-
 #include "vibook/core/errors.hpp"
-#include "vibook/core/precision.hpp"
+#include "vibook/core/format.hpp"
+#include "vibook/core/scalar.hpp"
 #include "vibook/core/tolerance.hpp"
 #include "vibook/core/types.hpp"
 
@@ -55,8 +54,9 @@ SolveReport newton_solve(Vec<T, N>& x, FJ&& fj, const NewtonOptions& opt,
     const auto lu = J.partialPivLu();
     const Vec<T, N> dx = lu.solve(F);
     if (!std::isfinite(to_double(T(dx.template lpNorm<Eigen::Infinity>())))) {
-      throw SolveError(fmt::format("{}: singular Jacobian (residual {:.3e} after {} iterations)",
-                                   what, rep.residual, rep.iterations),
+      throw SolveError(std::string(what) + ": singular Jacobian (residual " +
+                           text::e(rep.residual, 3) + " after " + std::to_string(rep.iterations) +
+                           " iterations)",
                        rep);
     }
     x -= dx;
@@ -76,10 +76,10 @@ SolveReport newton_solve(Vec<T, N>& x, FJ&& fj, const NewtonOptions& opt,
     }
   }
   if (rep.iterations > opt.max_iterations) rep.iterations = opt.max_iterations;
-  throw SolveError(
-      fmt::format("{}: no convergence (residual {:.3e} after {} iterations{})", what, rep.residual,
-                  rep.iterations, std::isfinite(rep.residual) ? "" : ", non-finite"),
-      rep);
+  throw SolveError(std::string(what) + ": no convergence (residual " + text::e(rep.residual, 3) +
+                       " after " + std::to_string(rep.iterations) + " iterations" +
+                       (std::isfinite(rep.residual) ? "" : ", non-finite") + ")",
+                   rep);
 }
 
 }  // namespace vibook

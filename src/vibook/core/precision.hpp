@@ -1,15 +1,17 @@
+// clang-format off
 /// \file precision.hpp
-/// \brief The floating-point types a vibook step can be templated on, and what Eigen and the
-/// AutoDiff module need to use them:
+/// \brief Opt-in extended precision: the floating-point types a vibook step can be templated
+/// on, and what Eigen and the AutoDiff module need to use them. Use it through the CMake
+/// target `vibook::precision` (or pkg-config `vibook-precision`), which links libqd, MPFR,
+/// GMP and libquadmath; the rest of the core needs none of them.
 ///
-/// | `--precision`   | C++ type                | significand | library                      |
-/// |-----------------|-------------------------|-------------|------------------------------|
-/// | `double`        | `double`                | 53 bits     | —                            |
-/// | `long-double`   | `long double`           | 64 bits     | — (x87 extended on x86-64)   |
-/// | `double-double` | `dd_real`               | 106 bits    | libqd (Debian `libqd-dev`)   |
-/// | `quad`          | `vibook::quad`          | 113 bits    | Boost.Multiprecision float128
-/// (libquadmath) | | `mpfr`          | `vibook::mpfr_real`     | `--digits`  | Boost.Multiprecision
-/// + MPFR  |
+/// | `--precision`   | C++ type             | significand | library                                   |
+/// |-----------------|----------------------|-------------|-------------------------------------------|
+/// | `double`        | `double`             | 53 bits     | —                                         |
+/// | `long-double`   | `long double`        | 64 bits     | — (x87 extended on x86-64)                |
+/// | `double-double` | `dd_real`            | 106 bits    | libqd (Debian `libqd-dev`)                |
+/// | `quad`          | `vibook::quad`       | 113 bits    | Boost.Multiprecision float128 (libquadmath) |
+/// | `mpfr`          | `vibook::mpfr_real`  | `--digits`  | Boost.Multiprecision + MPFR               |
 ///
 /// `mpfr_real` has a run-time precision in decimal digits (Sharma et al.'s MATLAB VPA with 18
 /// digits is `--precision mpfr --digits 18`); set it with MpfrDigits before creating values.
@@ -18,6 +20,7 @@
 /// mix in a `double` literal (C++ allows one user-defined conversion, the nesting needs two).
 /// Write `constant<S>(0.5)` (types.hpp) for a literal in generic code, and `squared_norm(v)`
 /// (types.hpp) for |v|²: Eigen's squaredNorm() and dot() build `Scalar(0)` from an int.
+// clang-format on
 #pragma once
 
 #include <qd/dd_real.h>
@@ -32,6 +35,7 @@
 #include <string_view>
 
 #include "vibook/core/errors.hpp"
+#include "vibook/core/scalar.hpp"
 #include "vibook/core/types.hpp"
 
 namespace vibook {
@@ -61,33 +65,22 @@ class MpfrDigits {
   unsigned previous_;
 };
 
-/// Nearest double.
-inline double to_double(double x) { return x; }
-inline double to_double(long double x) { return double(x); }
-using ::to_double;  // libqd's, for dd_real
-template <class B, boost::multiprecision::expression_template_option E>
-double to_double(const boost::multiprecision::number<B, E>& x) {
-  return x.template convert_to<double>();
-}
-
-/// Is x finite (no NaN, no infinity)?
-inline bool is_finite(double x) { return std::isfinite(x); }
-inline bool is_finite(long double x) { return std::isfinite(x); }
-inline bool is_finite(const dd_real& x) { return std::isfinite(x.x[0]) && std::isfinite(x.x[1]); }
-template <class B, boost::multiprecision::expression_template_option E>
-bool is_finite(const boost::multiprecision::number<B, E>& x) {
-  return boost::multiprecision::isfinite(x);
-}
-
-/// Unit round-off (2^{1−p}) of the type, at the current precision for mpfr_real.
-template <class T>
-T unit_roundoff() {
-  return std::numeric_limits<T>::epsilon();
-}
+/// libqd's double-double (106-bit significand).
 template <>
-inline dd_real unit_roundoff<dd_real>() {
-  return dd_real(dd_real::_eps);
-}
+struct ScalarTraits<dd_real> {
+  static double to_double(const dd_real& x) { return ::to_double(x); }
+  static bool is_finite(const dd_real& x) { return std::isfinite(x.x[0]) && std::isfinite(x.x[1]); }
+  static dd_real unit_roundoff() { return dd_real(dd_real::_eps); }
+};
+
+/// Boost.Multiprecision numbers (quad, mpfr_real): the round-off at the current precision.
+template <class B, boost::multiprecision::expression_template_option E>
+struct ScalarTraits<boost::multiprecision::number<B, E>> {
+  using T = boost::multiprecision::number<B, E>;
+  static double to_double(const T& x) { return x.template convert_to<double>(); }
+  static bool is_finite(const T& x) { return boost::multiprecision::isfinite(x); }
+  static T unit_roundoff() { return std::numeric_limits<T>::epsilon(); }
+};
 
 /// The precisions of the command line, in the order of the table above.
 enum class Precision { double_, long_double, double_double, quad, mpfr };

@@ -4,13 +4,12 @@
 /// offered row (so that the final state can always be written).
 #pragma once
 
+#include <charconv>
 #include <cstdint>
 #include <ostream>
 #include <stdexcept>
 #include <string>
 #include <vector>
-
-#include <fmt/format.h>
 
 namespace vibook {
 
@@ -56,17 +55,22 @@ class TrajectoryRecorder {
 
  private:
   void write_last() {
-    fmt::memory_buffer buf;
+    // %.17g of each value (std::to_chars is correctly rounded, as printf is), no allocation
+    // after the first row.
+    line_.clear();
     for (std::size_t i = 0; i < last_.size(); ++i) {
-      if (i) buf.push_back(',');
-      fmt::format_to(std::back_inserter(buf), "{:.17g}", last_[i]);
+      if (i) line_.push_back(',');
+      char buf[32];
+      const auto r = std::to_chars(buf, buf + sizeof buf, last_[i], std::chars_format::general, 17);
+      line_.append(buf, r.ptr);
     }
-    buf.push_back('\n');
-    out_.write(buf.data(), static_cast<std::streamsize>(buf.size()));
+    line_.push_back('\n');
+    out_.write(line_.data(), static_cast<std::streamsize>(line_.size()));
     last_written_ = last_step_;
     ++written_;
   }
 
+  std::string line_;
   std::ostream& out_;
   std::vector<std::string> columns_;
   std::int64_t every_;

@@ -4,8 +4,6 @@
 /// scaling L_d ≈ h·L (see discrete_lagrangian.hpp).
 #pragma once
 
-#include <fmt/format.h>
-
 #include "vibook/core/autodiff.hpp"
 #include "vibook/core/errors.hpp"
 #include "vibook/core/newton.hpp"

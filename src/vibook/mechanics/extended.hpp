@@ -10,7 +10,6 @@
 /// L_d = (t1 − t0) L. The paper's (14) prints it without the minus (erratum S-ERR-14).
 #pragma once
 
-#include <fmt/format.h>
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
@@ -19,6 +18,7 @@
 
 #include "vibook/core/autodiff.hpp"
 #include "vibook/core/errors.hpp"
+#include "vibook/core/format.hpp"
 #include "vibook/core/newton.hpp"
 #include "vibook/core/root.hpp"
 #include "vibook/core/types.hpp"
@@ -123,9 +123,10 @@ class ExtendedDelIntegrator {
     const double u = to_double(unit_roundoff<T>());
     if (options_.tol == 0) options_.tol = 4 * u;
     if (!(options_.tol >= u && options_.tol < 1e-2))
-      throw ArgumentError("--tol", fmt::format("must lie in [{:.3g}, 1e-2) (the round-off of the "
-                                               "chosen precision up to 1e-2), got {:.3g}",
-                                               u, options_.tol));
+      throw ArgumentError("--tol", "must lie in [" + text::g(u, 3) +
+                                       ", 1e-2) (the round-off of the chosen precision up to "
+                                       "1e-2), got " +
+                                       text::g(options_.tol, 3));
     newton_.step_rel = 4 * u;
     newton_.max_iterations = options_.max_newton_iterations;
     if (options_.max_root_iterations == 0)
@@ -199,9 +200,10 @@ class ExtendedDelIntegrator {
       const RootResult<T> r =
           bracketed_root(g, lo, hi, glo, ghi, bracket_tol, options_.max_root_iterations, f_tol);
       if (!r.converged)
-        throw SolveError(fmt::format("extended step at t = {:.17g}: the energy equation did not "
-                                     "converge in {} evaluations (residual {:.3e})",
-                                     to_double(k.t), r.evaluations, std::abs(to_double(r.fx))),
+        throw SolveError("extended step at t = " + text::g(to_double(k.t), 17) +
+                             ": the energy equation did not converge in " +
+                             std::to_string(r.evaluations) + " evaluations (residual " +
+                             text::e(std::abs(to_double(r.fx)), 3) + ")",
                          SolveReport{std::abs(to_double(r.fx)), rep.root_iterations, false});
       return r.x;
     };
@@ -278,18 +280,18 @@ class ExtendedDelIntegrator {
       if (!found) {
         std::string q, p;
         for (int i = 0; i < N; ++i) {
-          q += fmt::format("{}{:.17g}", i ? ", " : "", to_double(k.q(i)));
-          p += fmt::format("{}{:.17g}", i ? ", " : "", to_double(k.p(i)));
+          q += (i ? ", " : "") + text::g(to_double(k.q(i)), 17);
+          p += (i ? ", " : "") + text::g(to_double(k.p(i)), 17);
         }
-        throw SolveError(
-            fmt::format(
-                "extended step at t = {:.17g}, q = ({}), p = ({}), E = {:.17g}: the "
-                "energy equation D1 L_d = E_k has no root for a step in [{:.3g}, {:.3g}] "
-                "(previous step {:.3g}; closest |D1 L_d - E_k| = {:.3e}): no admissible "
-                "time step",
-                to_double(k.t), q, p, to_double(target), to_double(center) / options_.max_ratio,
-                to_double(center) * options_.max_ratio, to_double(last_dt_), to_double(closest)),
-            SolveReport{to_double(closest), rep.root_iterations, false});
+        throw SolveError("extended step at t = " + text::g(to_double(k.t), 17) + ", q = (" + q +
+                             "), p = (" + p + "), E = " + text::g(to_double(target), 17) +
+                             ": the energy equation D1 L_d = E_k has no root for a step in [" +
+                             text::g(to_double(center) / options_.max_ratio, 3) + ", " +
+                             text::g(to_double(center) * options_.max_ratio, 3) +
+                             "] (previous step " + text::g(to_double(last_dt_), 3) +
+                             "; closest |D1 L_d - E_k| = " + text::e(to_double(closest), 3) +
+                             "): no admissible time step",
+                         SolveReport{to_double(closest), rep.root_iterations, false});
       }
     }
     const VecN q1 = solve_q(dt);

@@ -6,8 +6,6 @@
 #include <array>
 #include <sstream>
 
-#include <fmt/format.h>
-
 #include "vibook/integrators/splitting.hpp"
 #include "vibook/kepler/kepler.hpp"
 #include "vibook/mechanics/discrete_lagrangian.hpp"
@@ -35,9 +33,8 @@ Method parse_method(const std::string& s) {
   if (s == "vi1") return Method::vi1;
   if (s == "vi1-adjoint") return Method::vi1_adjoint;
   if (s == "vi2") return Method::vi2;
-  throw ArgumentError("--method", fmt::format("unknown method '{}' (sv, se, se-adjoint, midpoint, "
-                                              "vi1, vi1-adjoint, vi2)",
-                                              s));
+  throw ArgumentError("--method", "unknown method '" + s +
+                                      "' (sv, se, se-adjoint, midpoint, vi1, vi1-adjoint, vi2)");
 }
 
 Potential parse_potential(const std::string& s) {
@@ -45,16 +42,15 @@ Potential parse_potential(const std::string& s) {
   if (s == "kepler") return Potential::kepler;
   if (s == "pendulum") return Potential::pendulum;
   if (s == "harmonic") return Potential::harmonic;
-  throw ArgumentError(
-      "--potential",
-      fmt::format("unknown potential '{}' (generic, kepler, pendulum, harmonic)", s));
+  throw ArgumentError("--potential",
+                      "unknown potential '" + s + "' (generic, kepler, pendulum, harmonic)");
 }
 
 Format parse_format(const std::string& s) {
   if (s == "text") return Format::text;
   if (s == "latex") return Format::latex;
   if (s == "python") return Format::python;
-  throw ArgumentError("--format", fmt::format("unknown format '{}' (text, latex, python)", s));
+  throw ArgumentError("--format", "unknown format '" + s + "' (text, latex, python)");
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -125,9 +121,9 @@ SymbolicDL generic_dl(Method m) {
   AbstractSplit<N> split{};
   for (int i = 0; i < N; ++i)
     split.family[i] =
-        J->add_family(fmt::format("phi{}", i + 1), fmt::format("\\phi^{{[{}]}}", i + 1));
+        J->add_family("phi" + std::to_string(i + 1), "\\phi^{[" + std::to_string(i + 1) + "]}");
   const std::string what =
-      fmt::format("generic potential, {} degree{} of freedom", N, N == 1 ? "" : "s");
+      "generic potential, " + std::to_string(N) + " degree" + (N == 1 ? "" : "s") + " of freedom";
   if (m == Method::vi1 || m == Method::vi1_adjoint || m == Method::vi2) {
     // U is not used: the pieces are the potential.
     return build<N>(m, AbstractPotential<N>{U}, split, J, what + " split as phi1 + phi2 + …");
@@ -145,9 +141,9 @@ SymbolicDL make_discrete_lagrangian(Method m, Potential p, int dim,
       if (dim == 1) return generic_dl<1>(m);
       if (dim == 2) return generic_dl<2>(m);
       if (dim == 3) return generic_dl<3>(m);
-      throw ArgumentError("--dim", fmt::format("{}: a generic potential has 1, 2 or 3 degrees of "
-                                               "freedom",
-                                               dim));
+      throw ArgumentError("--dim", std::to_string(dim) +
+                                       ": a generic potential has 1, 2 or 3 degrees of "
+                                       "freedom");
     case Potential::kepler: {
       if (dim != 2) throw ArgumentError("--dim", "the Kepler potential is two-dimensional");
       auto J = std::make_shared<JetSpace>(2);
@@ -176,8 +172,8 @@ SymbolicDL make_discrete_lagrangian(Method m, Potential p, int dim,
 
 Engine::Engine(SymbolicDL dl, int order) : dl_(std::move(dl)), K_(order) {
   if (order < 0 || order > max_order)
-    throw ArgumentError("--order",
-                        fmt::format("{}: supported orders are 0 to {}", order, max_order));
+    throw ArgumentError("--order", std::to_string(order) + ": supported orders are 0 to " +
+                                       std::to_string(max_order));
 }
 
 GiNaC::numeric Engine::mesh_coefficient(int i) {
@@ -339,7 +335,7 @@ Series shifted_sum(const JetSpace& J, const std::vector<ex>& e, const SubsMap& s
 GiNaC::matrix inverse_checked(const GiNaC::matrix& A, const char* what) {
   const ex det = GiNaC::normal(A.determinant());
   if (det.is_zero())
-    throw NumericalError(fmt::format("{} is singular: the Lagrangian is not regular", what));
+    throw NumericalError(std::string(what) + " is singular: the Lagrangian is not regular");
   GiNaC::matrix inv = A.inverse();
   for (unsigned i = 0; i < inv.rows(); ++i)
     for (unsigned j = 0; j < inv.cols(); ++j) inv(i, j) = GiNaC::normal(inv(i, j));
@@ -398,7 +394,8 @@ std::vector<std::vector<ex>> Engine::solve_for_acceleration(const std::vector<st
       const Series R = along(col, jets, cap);
       for (int k = 0; k < m; ++k)
         if (!vanishes(R.coeff(k)))
-          throw std::logic_error(fmt::format("recursive elimination: h^{} term left over", k));
+          throw std::logic_error("recursive elimination: h^" + std::to_string(k) +
+                                 " term left over");
       r[i] = R.coeff(m);
     }
     f.emplace_back(n);

@@ -17,6 +17,7 @@
 /// \endcode
 #pragma once
 
+#include <algorithm>
 #include <memory>
 #include <mutex>
 #include <optional>
@@ -60,6 +61,11 @@ struct SymbolicDL {
   std::vector<int> solve_for;
   ex Ld;
   std::string description;
+  /// Floating-point numbers met in the template whose exact binary64 value is almost surely
+  /// not the number meant (0.1, 1.0/6): one message each. They are used as they are (the
+  /// integrator computes with the same binary64 values); `vibook modified` and the examples
+  /// print these as warnings. Sorted (GiNaC's traversal order varies from run to run).
+  std::vector<std::string> inexact_literals;
 };
 
 /// Evaluate a discrete-Lagrangian template (any callable `dl(q0, q1, h)` generic in its
@@ -78,7 +84,8 @@ SymbolicDL symbolic_dl(const DL& dl, std::shared_ptr<JetSpace> jets, std::string
     b(i) = out.q1.back();
   }
   const ex h = out.jets->h();
-  out.Ld = exact_rationals(dl(a, b, h));
+  out.Ld = exact_rationals(dl(a, b, h), &out.inexact_literals);
+  std::sort(out.inexact_literals.begin(), out.inexact_literals.end());  // not GiNaC's order
   return out;
 }
 
@@ -98,7 +105,8 @@ SymbolicDL symbolic_dl3(const DL& dl, std::shared_ptr<JetSpace> jets, std::strin
     b(i) = out.q1.back();
   }
   const ex h = out.jets->h();
-  out.Ld = exact_rationals(dl(a, m, b, h));
+  out.Ld = exact_rationals(dl(a, m, b, h), &out.inexact_literals);
+  std::sort(out.inexact_literals.begin(), out.inexact_literals.end());  // not GiNaC's order
   return out;
 }
 

@@ -5,8 +5,6 @@
 #include <algorithm>
 #include <stdexcept>
 
-#include <fmt/format.h>
-
 namespace vibook::modified {
 
 // Abstract functions of 1, 2 and 3 degrees of freedom; the first argument is the family id.
@@ -53,11 +51,11 @@ bool match_abstract(const ex& e, int& family, std::vector<ex>& args, std::vector
 
 JetSpace::JetSpace(int dofs) : n_(dofs), h_("h", "h") {
   if (dofs < 1 || dofs > 3)
-    throw std::invalid_argument(fmt::format("{} degrees of freedom: supported are 1 to 3", dofs));
+    throw std::invalid_argument(std::to_string(dofs) + " degrees of freedom: supported are 1 to 3");
   ensure_order(2);
   for (int i = 0; i < n_; ++i) {
-    const std::string name = fmt::format("p{}", i + 1);
-    const std::string tex = n_ == 1 ? "p" : fmt::format("p_{{{}}}", i + 1);
+    const std::string name = "p" + std::to_string(i + 1);
+    const std::string tex = n_ == 1 ? "p" : "p_{" + std::to_string(i + 1) + "}";
     p_.emplace_back(name, tex);
   }
 }
@@ -67,17 +65,17 @@ void JetSpace::ensure_order(int order) const {
     const int k = static_cast<int>(jets_.size());
     std::vector<GiNaC::symbol> row;
     for (int i = 0; i < n_; ++i) {
-      const std::string sub = n_ == 1 ? "" : fmt::format("_{{{}}}", i + 1);
+      const std::string sub = n_ == 1 ? "" : "_{" + std::to_string(i + 1) + "}";
       std::string name, tex;
       if (k == 0) {
-        name = fmt::format("x{}", i + 1);
+        name = "x" + std::to_string(i + 1);
         tex = "x" + sub;
       } else if (k == 1) {
-        name = fmt::format("v{}", i + 1);
+        name = "v" + std::to_string(i + 1);
         tex = "\\dot{x}" + sub;
       } else {
-        name = fmt::format("x{}_{}", i + 1, k);
-        tex = k == 2 ? "\\ddot{x}" + sub : fmt::format("{{x{}^{{({})}}}}", sub, k);
+        name = "x" + std::to_string(i + 1) + "_" + std::to_string(k);
+        tex = k == 2 ? "\\ddot{x}" + sub : "{x" + sub + "^{(" + std::to_string(k) + ")}}";
       }
       row.emplace_back(name, tex);
     }
@@ -112,7 +110,7 @@ GiNaC::symbol JetSpace::derivative(int family, std::vector<int> index) const {
     for (int i : index) name += std::to_string(i + 1);
     if (f.dofs.size() == 1) {
       const auto m = index.size();
-      tex += m <= 3 ? "^{" + std::string(m, '\'') + "}" : fmt::format("^{{({})}}", m);
+      tex += m <= 3 ? "^{" + std::string(m, '\'') + "}" : "^{(" + std::to_string(m) + ")}";
     } else {
       std::string sub;
       for (int i : index) sub += std::to_string(i + 1);

@@ -40,6 +40,33 @@ TEST_CASE("series: floating-point literals become the rationals they are") {
   CHECK(vanishes(exact_rationals(ex(0.1)) - numeric(3602879701896397L, 36028797018963968L)));
 }
 
+TEST_CASE(
+    "symbolic_dl: a decimal or 1.0/6 in a template is reported, an integer division is exact") {
+  // The kinetic term with 1/6 written two ways: exact (integer division of the symbolic
+  // scalar) and through the binary64 number 1.0/6.
+  auto exact = [](const auto& q0, const auto& q1, const auto& h) -> vibook::scalar_t<decltype(h)> {
+    const auto v = (q1(0) - q0(0)) / h;
+    return h * (v * v / 2 - q0(0) * q0(0) / 6);
+  };
+  auto inexact = [](const auto& q0, const auto& q1,
+                    const auto& h) -> vibook::scalar_t<decltype(h)> {
+    const auto v = (q1(0) - q0(0)) / h;
+    return h * (v * v / 2 - q0(0) * q0(0) * (1.0 / 6) + 0.1 * q1(0));
+  };
+  const auto a = symbolic_dl<1>(exact, std::make_shared<JetSpace>(1), "exact");
+  CHECK(a.inexact_literals.empty());
+  CHECK(vanishes(a.Ld.expand().coeff(a.q0[0], 2).subs(a.jets->h() == 1) - (numeric(1, 2) - numeric(1, 6))));
+  const auto b = symbolic_dl<1>(inexact, std::make_shared<JetSpace>(1), "inexact");
+  // GiNaC folds the floating-point factors as it builds the expression: the numbers reported
+  // are the ones in the result (such as 2 · (1.0/6)), each once, sorted.
+  CHECK_FALSE(b.inexact_literals.empty());
+  for (const auto& w : b.inexact_literals) CHECK(w.find("binary64 value") != std::string::npos);
+  CHECK(std::is_sorted(b.inexact_literals.begin(), b.inexact_literals.end()));
+  // Built-in discrete Lagrangians write only binary fractions.
+  for (auto m : {Method::sv, Method::midpoint, Method::vi2})
+    CHECK(make_discrete_lagrangian(m, Potential::kepler, 2).inexact_literals.empty());
+}
+
 TEST_CASE("engine: Störmer–Verlet on the oscillator, exact modified frequency to h^8") {
   Engine E(make_discrete_lagrangian(Method::sv, Potential::harmonic, 1), 8);
   const ex x = E.jets().x(0, 0);
@@ -232,7 +259,8 @@ TEST_CASE("radial_form: the display form of Kepler expressions has the same valu
     }
 }
 
-TEST_CASE("engine: midpoint on the oscillator, modified Hamiltonian = (1/h)·arctan(h/2)·(p² + x²)") {
+TEST_CASE(
+    "engine: midpoint on the oscillator, modified Hamiltonian = (1/h)·arctan(h/2)·(p² + x²)") {
   // The midpoint rule rotates phase space by θ = 2 arctan(h/2) per step, so it is exactly the
   // time-h flow of (θ/h)·½(p² + x²). The engine's Legendre transform of L_mod must agree to h^8.
   Engine E(make_discrete_lagrangian(Method::midpoint, Potential::harmonic, 1), 8);

@@ -3,13 +3,12 @@
 #include "vibook/modified/series.hpp"
 
 #include <algorithm>
+#include <charconv>
 #include <cmath>
 #include <cstdint>
 #include <functional>
 #include <sstream>
 #include <stdexcept>
-
-#include <fmt/format.h>
 
 namespace vibook::modified {
 
@@ -73,7 +72,8 @@ Series Series::h() {
 
 ex Series::coeff(int k) const {
   if (k >= prec)
-    throw std::logic_error(fmt::format("series coefficient h^{} beyond O(h^{})", k, prec));
+    throw std::logic_error("series coefficient h^" + std::to_string(k) + " beyond O(h^" +
+                           std::to_string(prec) + ")");
   const long long idx = static_cast<long long>(k) - low;
   return idx >= 0 && idx < static_cast<long long>(c.size()) ? c[idx] : ex(0);
 }
@@ -212,20 +212,36 @@ bool vanishes(const ex& e) {
   return GiNaC::normal(x).is_zero();
 }
 
-ex exact_rationals(const ex& e) {
+ex exact_rationals(const ex& e, std::vector<std::string>* inexact) {
   struct Map : GiNaC::map_function {
+    std::vector<std::string>* inexact = nullptr;
     ex operator()(const ex& x) override {
       if (GiNaC::is_a<numeric>(x)) {
         const numeric& n = GiNaC::ex_to<numeric>(x);
         if (n.is_rational() || !n.is_real()) return x;
         int e2 = 0;
-        const double m = std::frexp(n.to_double(), &e2);
+        const double d = n.to_double();
+        const double m = std::frexp(d, &e2);
         const auto mant = static_cast<std::int64_t>(std::ldexp(m, 53));
-        return numeric(static_cast<long>(mant)) * GiNaC::pow(numeric(2), numeric(e2 - 53));
+        const numeric exact =
+            numeric(static_cast<long>(mant)) * GiNaC::pow(numeric(2), numeric(e2 - 53));
+        if (inexact && exact.denom() > numeric(4294967296L)) {
+          std::ostringstream text;
+          char buf[32];
+          const auto r = std::to_chars(buf, buf + sizeof buf, d);  // shortest round trip
+          text << "a floating-point literal made the coefficient " << std::string(buf, r.ptr)
+               << ", taken as its binary64 value " << exact
+               << " exactly; for an exact fraction divide the symbolic scalar by integers "
+                  "(x / 6, not x / 6.0 or x * (1.0 / 6))";
+          if (std::find(inexact->begin(), inexact->end(), text.str()) == inexact->end())
+            inexact->push_back(text.str());
+        }
+        return exact;
       }
       return x.map(*this);
     }
   } map;
+  map.inexact = inexact;
   return map(e);
 }
 

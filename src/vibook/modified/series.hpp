@@ -7,6 +7,7 @@
 
 #include <limits>
 #include <map>
+#include <string>
 #include <vector>
 
 #include "vibook/modified/jets.hpp"
@@ -49,8 +50,10 @@ Series shifted_jet(const JetSpace& J, int i, const ex& s, int p);
 /// True if e is zero: its expansion, or failing that its normal form, is zero.
 bool vanishes(const ex& e);
 /// Replace every floating-point number in e by the rational it exactly represents
-/// (C++ literals such as 0.5 in the integrators' code are binary fractions).
-ex exact_rationals(const ex& e);
+/// (C++ literals such as 0.5 in the integrators' code are binary fractions). With `inexact`,
+/// each number whose exact value needs a denominator above 2^32 (0.1, 1/6.0: almost surely a
+/// decimal or a quotient that binary64 only approximates) is also described there, once.
+ex exact_rationals(const ex& e, std::vector<std::string>* inexact = nullptr);
 
 /// Evaluate e with the symbols in `subs` replaced by series (everything else is constant),
 /// truncated at `cap` terms. Abstract functions are expanded by their multivariate Taylor

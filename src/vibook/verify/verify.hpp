@@ -1,0 +1,247 @@
+/// \file verify.hpp
+/// \brief Verify a one-step method of your own: measured convergence order (two-sided),
+/// symplecticity and time-reversibility defects of the one-step map, and the long-time
+/// behaviour of the energy error (bounded, random walk or drift, by a fitted exponent).
+///
+/// A method is given to these helpers as a *step*: any callable
+/// `step(Eigen::VectorXd& z, double h)` that advances the phase-space state z = (q, p) (first
+/// half positions, second half momenta) by one step of size h in place. A DelIntegrator is
+/// wrapped in one line (see examples/henon_heiles_simpson.cpp):
+/// \code
+///   vibook::DelIntegrator<2, decltype(Ld)> vi(Ld);
+///   auto step = [&](Eigen::VectorXd& z, double h) { vibook::verify::step_qp<2>(vi, z, h); };
+/// \endcode
+/// Each result carries the numbers it was judged on and the criterion, so that a report can
+/// print both; none of these functions prints or throws on a failed criterion (`passed` says).
+#pragma once
+
+#include <algorithm>
+#include <cmath>
+#include <functional>
+#include <limits>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include <Eigen/Dense>
+
+#include "vibook/core/order.hpp"
+
+namespace vibook::verify {
+
+/// A one-step method on the phase-space state z = (q, p): `step(z, h)` advances z in place.
+using Step = std::function<void(Eigen::VectorXd& z, double h)>;
+/// A scalar function of the state, e.g. the Hamiltonian.
+using Observable = std::function<double(const Eigen::VectorXd& z)>;
+
+/// Advance a position–momentum integrator (DelIntegrator, ExplicitKernel, … : anything with
+/// `step(Vec<double,N>& q, Vec<double,N>& p, double h)`) on the packed state z = (q, p).
+template <int N, class Integrator>
+void step_qp(Integrator& integrator, Eigen::VectorXd& z, double h) {
+  Eigen::Matrix<double, N, 1> q = z.head<N>(), p = z.tail<N>();
+  integrator.step(q, p, h);
+  z.head<N>() = q;
+  z.tail<N>() = p;
+}
+
+/// Integrate from z0 over [0, T] with steps of size h (the last one shortened to end at T).
+inline Eigen::VectorXd integrate(const Step& step, Eigen::VectorXd z0, double h, double T) {
+  if (!(h > 0) || !(T >= 0) || !std::isfinite(h) || !std::isfinite(T))
+    throw std::invalid_argument("integrate: need h > 0 and T >= 0, both finite");
+  const double n = std::ceil(T / h - 1e-9);
+  if (n > 1e12) throw std::invalid_argument("integrate: more than 1e12 steps");
+  const long long steps = static_cast<long long>(n);
+  for (long long k = 0; k < steps; ++k) {
+    const double hk = k + 1 == steps ? T - h * double(k) : h;
+    step(z0, hk);
+  }
+  return z0;
+}
+
+// -------------------------------------------------------------------------------------------
+// Convergence order
+// -------------------------------------------------------------------------------------------
+
+/// Result of convergence_order: the error at time T for each step size, the fitted slope
+/// of log(error) against log(h) over the points above `floor`, and the two-sided verdict
+/// |slope − expected| < tolerance.
+struct ConvergenceStudy {
+  std::vector<double> h;
+  std::vector<double> error;  ///< max-norm distance to the reference at T
+  double order = std::numeric_limits<double>::quiet_NaN();
+  int points = 0;  ///< points used in the fit (error above floor)
+  double expected = 0;
+  double tolerance = 0;
+  double floor = 0;
+  bool passed = false;
+};
+
+/// Measured order at time T against `reference` (the exact solution, or a run of a
+/// higher-order method or of this one at a much smaller step, accurate well below the
+/// smallest error). Errors at or below `floor` (the round-off plateau, or the reference's own
+/// error) are left out of the fit; at least 3 points must remain.
+inline ConvergenceStudy convergence_order(const Step& step, const Eigen::VectorXd& z0, double T,
+                                          const Eigen::VectorXd& reference,
+                                          const std::vector<double>& hs, double expected,
+                                          double tolerance, double floor) {
+  ConvergenceStudy s;
+  s.expected = expected;
+  s.tolerance = tolerance;
+  s.floor = floor;
+  for (double h : hs) {
+    const Eigen::VectorXd z = integrate(step, z0, h, T);
+    s.h.push_back(h);
+    s.error.push_back((z - reference).lpNorm<Eigen::Infinity>());
+  }
+  try {
+    const OrderFit f = fit_order(s.h, s.error, floor, 3);
+    s.order = f.slope;
+    s.points = f.points;
+    s.passed = std::abs(f.slope - expected) < tolerance;
+  } catch (const std::invalid_argument&) {
+    s.passed = false;  // fewer than 3 points above the floor: nothing measured
+  }
+  return s;
+}
+
+// -------------------------------------------------------------------------------------------
+// Symplecticity and reversibility of the one-step map
+// -------------------------------------------------------------------------------------------
+
+/// Jacobian of the one-step map z ↦ Φ_h(z) by fourth-order central differences with relative
+/// increment `delta` in each coordinate (error ~ delta⁴ + (solver tolerance)/delta).
+inline Eigen::MatrixXd step_jacobian(const Step& step, const Eigen::VectorXd& z, double h,
+                                     double delta = 1e-3) {
+  const Eigen::Index n = z.size();
+  Eigen::MatrixXd J(n, n);
+  for (Eigen::Index j = 0; j < n; ++j) {
+    const double d = delta * std::max(1.0, std::abs(z(j)));
+    auto at = [&](double s) {
+      Eigen::VectorXd w = z;
+      w(j) += s * d;
+      step(w, h);
+      return w;
+    };
+    J.col(j) = (8 * (at(1) - at(-1)) - (at(2) - at(-2))) / (12 * d);
+  }
+  return J;
+}
+
+/// Result of a defect measurement: the largest defect over the sample states, and the
+/// verdict defect <= tolerance.
+struct Defect {
+  double defect = 0;
+  double tolerance = 0;
+  int samples = 0;
+  bool passed = false;
+};
+
+/// Symplecticity: max over the states of |Jᵀ Ω J − Ω|_max, J the Jacobian of Φ_h (by
+/// step_jacobian), Ω = [[0, I], [−I, 0]]. A symplectic method gives the difference-quotient
+/// error only (about 1e-9 with the default increment); a non-symplectic one of order p
+/// gives O(h^{p+1}).
+inline Defect symplecticity_defect(const Step& step, const std::vector<Eigen::VectorXd>& states,
+                                   double h, double tolerance, double delta = 1e-3) {
+  Defect d;
+  d.tolerance = tolerance;
+  for (const auto& z : states) {
+    const Eigen::Index n = z.size() / 2;
+    if (z.size() != 2 * n) throw std::invalid_argument("symplecticity_defect: odd state size");
+    Eigen::MatrixXd W = Eigen::MatrixXd::Zero(2 * n, 2 * n);
+    W.topRightCorner(n, n) = Eigen::MatrixXd::Identity(n, n);
+    W.bottomLeftCorner(n, n) = -Eigen::MatrixXd::Identity(n, n);
+    const Eigen::MatrixXd J = step_jacobian(step, z, h, delta);
+    d.defect = std::max(d.defect, (J.transpose() * W * J - W).lpNorm<Eigen::Infinity>());
+    ++d.samples;
+  }
+  d.passed = d.defect <= tolerance;
+  return d;
+}
+
+/// Time reversibility with respect to ρ(q, p) = (q, −p): max over the states of
+/// |ρ Φ_h ρ Φ_h (z) − z|_max / max(1, |z|_max). A symmetric method on a reversible system
+/// (H even in p) returns to z up to the solver's tolerance.
+inline Defect reversibility_defect(const Step& step, const std::vector<Eigen::VectorXd>& states,
+                                   double h, double tolerance) {
+  Defect d;
+  d.tolerance = tolerance;
+  for (const auto& z0 : states) {
+    const Eigen::Index n = z0.size() / 2;
+    Eigen::VectorXd z = z0;
+    step(z, h);
+    z.tail(n) *= -1;
+    step(z, h);
+    z.tail(n) *= -1;
+    const double scale = std::max(1.0, z0.lpNorm<Eigen::Infinity>());
+    d.defect = std::max(d.defect, (z - z0).lpNorm<Eigen::Infinity>() / scale);
+    ++d.samples;
+  }
+  d.passed = d.defect <= tolerance;
+  return d;
+}
+
+// -------------------------------------------------------------------------------------------
+// Long-time energy behaviour
+// -------------------------------------------------------------------------------------------
+
+/// Result of energy_behaviour: the envelope max_{k ≤ K} |H_k − H_0| at K = 2^j steps, and its
+/// fitted exponent β in envelope ≈ C K^β over the second half of the run (the first steps
+/// show the O(h^p) oscillation building up, not the trend). β ≈ 0: bounded (a symplectic
+/// method away from resonance); β ≈ 1/2: a random walk of round-off (Brouwer's law);
+/// β ≈ 1: a drift.
+struct EnergyBehaviour {
+  long long steps = 0;
+  double h = 0;
+  std::vector<double> envelope_steps;
+  std::vector<double> envelope;
+  double max_error = 0;
+  double exponent = std::numeric_limits<double>::quiet_NaN();
+  double bounded_below = 0.25;  ///< the verdict "bounded" is exponent < bounded_below
+  bool bounded = false;
+};
+
+/// Run `steps` steps of size h from z0 and measure |H − H(z0)|. Memory O(log steps).
+inline EnergyBehaviour energy_behaviour(const Step& step, const Observable& H, Eigen::VectorXd z,
+                                        double h, long long steps, double bounded_below = 0.25) {
+  if (steps < 64) throw std::invalid_argument("energy_behaviour: need at least 64 steps");
+  EnergyBehaviour r;
+  r.steps = steps;
+  r.h = h;
+  r.bounded_below = bounded_below;
+  const double H0 = H(z);
+  long long next = 1;
+  double env = 0;
+  for (long long k = 1; k <= steps; ++k) {
+    step(z, h);
+    const double e = std::abs(H(z) - H0);
+    if (!std::isfinite(e)) {
+      env = std::numeric_limits<double>::infinity();
+      r.envelope_steps.push_back(double(k));
+      r.envelope.push_back(env);
+      break;
+    }
+    env = std::max(env, e);
+    if (k == next || k == steps) {
+      r.envelope_steps.push_back(double(k));
+      r.envelope.push_back(env);
+      next *= 2;
+    }
+  }
+  r.max_error = env;
+  // Fit over the points with K >= sqrt(steps) (the second half in log K).
+  std::vector<double> kk, ee;
+  for (std::size_t i = 0; i < r.envelope.size(); ++i)
+    if (r.envelope_steps[i] * r.envelope_steps[i] >= double(r.envelope_steps.back())) {
+      kk.push_back(r.envelope_steps[i]);
+      ee.push_back(r.envelope[i]);
+    }
+  try {
+    r.exponent = fit_order(kk, ee, 0.0, 3).slope;
+    r.bounded = std::isfinite(env) && r.exponent < bounded_below;
+  } catch (const std::invalid_argument&) {
+    r.bounded = false;
+  }
+  return r;
+}
+
+}  // namespace vibook::verify

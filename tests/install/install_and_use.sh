@@ -1,0 +1,54 @@
+#!/usr/bin/env bash
+# Installs vibook from this build tree into a temporary prefix and builds examples/ against it
+# as a separate project would: with CMake's find_package(vibook), and with pkg-config.
+# Usage: install_and_use.sh BUILD_DIR SOURCE_DIR [EXTRA_CXX_FLAGS]
+set -euo pipefail
+build=$1 src=$2 flags=${3:-}
+tmp=$(mktemp -d)
+trap 'rm -rf "$tmp"' EXIT
+prefix=$tmp/prefix
+
+cmake --install "$build" --prefix "$prefix" >"$tmp/install.log" || { cat "$tmp/install.log"; exit 1; }
+# Only the library is installed: headers of the numerics and the engine, the engine's archive,
+# the CMake package and the pkg-config files; none of the reproduction code.
+for f in include/vibook/mechanics/del_solver.hpp include/vibook/modified/engine.hpp \
+         include/vibook/core/precision.hpp include/vibook/verify/verify.hpp \
+         lib/libvibook_modified.a lib/cmake/vibook/vibookConfig.cmake \
+         lib/cmake/vibook/vibookConfigVersion.cmake lib/pkgconfig/vibook.pc; do
+  [ -e "$prefix/$f" ] || { echo "FAIL: $f not installed"; exit 1; }
+done
+if find "$prefix/include" -name 'checks.hpp' -o -name 'check_*.hpp' -o -name '*_test.cpp' \
+     -o -path '*/claims/*' -o -path '*/figures/*' | grep -q .; then
+  echo "FAIL: reproduction code installed:"; find "$prefix/include" -name 'check*'; exit 1
+fi
+
+# 1. CMake: find_package(vibook) in a separate project.
+cmake -S "$src/examples" -B "$tmp/build" -G Ninja -DCMAKE_BUILD_TYPE=Release \
+      -DCMAKE_PREFIX_PATH="$prefix" -DCMAKE_CXX_FLAGS="$flags" >"$tmp/configure.log" \
+  || { cat "$tmp/configure.log"; exit 1; }
+cmake --build "$tmp/build" >"$tmp/build.log" || { cat "$tmp/build.log"; exit 1; }
+"$tmp/build/henon_heiles_simpson" || { echo "FAIL: the example's checks failed"; exit 1; }
+
+# 2. pkg-config: the header-only core needs no library at all.
+cat >"$tmp/core_only.cpp" <<'CPP'
+#include "vibook/integrators/kernels.hpp"
+#include "vibook/problems/problems.hpp"
+#include "vibook/verify/verify.hpp"
+int main() {
+  vibook::StormerVerlet<vibook::Pendulum> sv;
+  const vibook::verify::Step step = [&](Eigen::VectorXd& z, double h) {
+    vibook::verify::step_qp<1>(sv, z, h);
+  };
+  Eigen::VectorXd z(2);
+  z << 1.0, 0.0;
+  const auto r = vibook::verify::reversibility_defect(step, {z}, 0.1, 1e-14);
+  return r.passed ? 0 : 1;
+}
+CPP
+export PKG_CONFIG_PATH=$prefix/lib/pkgconfig
+# shellcheck disable=SC2046,SC2086
+g++ -std=c++20 $flags $(pkg-config --cflags vibook) "$tmp/core_only.cpp" -o "$tmp/core_only" \
+    $(pkg-config --libs vibook)
+"$tmp/core_only" || { echo "FAIL: core-only program"; exit 1; }
+pkg-config --exists --print-errors vibook-modified vibook-precision
+echo "install and use: ok"
