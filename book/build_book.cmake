@@ -62,6 +62,14 @@ if(NOT rc EQUAL 0)
   message(FATAL_ERROR "examples/henon_heiles_simpson failed (exit ${rc}); see ${GEN}/verify-example.txt")
 endif()
 
+execute_process(COMMAND ${VIBOOK} verify
+                        --ld "h*((q1-q0)^2/(2*h^2) - (V(q0)+4*V((q0+q1)/2)+V(q1))/6)"
+                        --potential "x^2/2+y^2/2+x^2*y-y^3/3" --q0 0,0.1 --p0 0.35,0
+                OUTPUT_FILE ${GEN}/verify-cli.txt RESULT_VARIABLE rc)
+if(NOT rc EQUAL 0)
+  message(FATAL_ERROR "vibook verify failed (exit ${rc}); see ${GEN}/verify-cli.txt")
+endif()
+
 # 3. Benchmarks: the table of the last `./build.sh bench` run, or of a run made now when
 #    VIBOOK_BOOK_BENCH is set (./build.sh book sets it; the test build does not).
 set(BENCH_JSON ${BINARY_DIR}/bench/bench.json)

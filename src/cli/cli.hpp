@@ -13,5 +13,7 @@ enum Exit : int { kOk = 0, kFailure = 1, kBadArgument = 2, kNumerical = 3, kIo =
 std::function<int()> add_run_command(CLI::App& app);
 /// Register `vibook modified` (the symbolic modified-equation engine).
 std::function<int()> add_modified_command(CLI::App& app);
+/// Register `vibook verify` (a typed discrete Lagrangian through solver, helpers and engine).
+std::function<int()> add_verify_command(CLI::App& app);
 
 }  // namespace vibook::cli

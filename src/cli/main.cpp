@@ -137,7 +137,8 @@ int cmd_claims(bool json, const std::string& json_out, const std::string& html_d
 }
 
 // The subcommands, for the message about an unknown one.
-constexpr const char* kCommands[] = {"list", "figure", "figures", "claims", "run", "modified"};
+constexpr const char* kCommands[] = {"list", "figure",   "figures", "claims",
+                                     "run",  "modified", "verify"};
 
 }  // namespace
 
@@ -179,6 +180,7 @@ int main(int argc, char** argv) {
 
   const auto run = cli::add_run_command(app);
   const auto modified = cli::add_modified_command(app);
+  const auto verify = cli::add_verify_command(app);
 
   // A first word that is neither an option nor a command: say which word.
   if (argc > 1 && argv[1][0] != '-') {
@@ -235,6 +237,8 @@ int main(int argc, char** argv) {
       rc = cmd_claims(cl_json, cl_json_out, cl_html_dir, cl_figures_dir, cl_only);
     else if (app.got_subcommand("modified"))
       rc = modified();
+    else if (app.got_subcommand("verify"))
+      rc = verify();
     else
       rc = run();
     // Whatever went to standard output must have arrived (a full disk, a closed pipe).

@@ -10,6 +10,7 @@
 
 #include "cli.hpp"
 #include "vibook/modified/engine.hpp"
+#include "vibook/verify/expression.hpp"
 
 namespace vibook::cli {
 
@@ -19,60 +20,6 @@ struct ModifiedOptions {
   int dim = 0, order = -1;
   bool cross_check = false, dim_given = false, alpha_given = false;
 };
-
-// "1/2", "-3", "0.25", "2.5e-1": the exact rational the text denotes (a decimal is read as the
-// decimal fraction it is, 0.3 = 3/10, not as the binary double nearest to it). Anything else,
-// including trailing characters and an empty string, is an ArgumentError naming --alpha.
-GiNaC::numeric parse_rational(const std::string& s) {
-  const auto bad = [&] {
-    return ArgumentError("--alpha",
-                         fmt::format("'{}' is not a number (write 1/2, 0.25, 3 or 2.5e-1)", s));
-  };
-  const auto digits = [](const std::string& t) {
-    return !t.empty() && t.size() <= 18 &&
-           std::all_of(t.begin(), t.end(), [](char c) { return c >= '0' && c <= '9'; });
-  };
-  std::string t = s;
-  bool negative = false;
-  if (!t.empty() && (t[0] == '+' || t[0] == '-')) {
-    negative = t[0] == '-';
-    t.erase(0, 1);
-  }
-  GiNaC::numeric value;
-  if (const auto slash = t.find('/'); slash != std::string::npos) {
-    const std::string p = t.substr(0, slash), q = t.substr(slash + 1);
-    if (!digits(p) || !digits(q)) throw bad();
-    if (std::stoll(q) == 0)
-      throw ArgumentError("--alpha", fmt::format("'{}' has a zero denominator", s));
-    value = GiNaC::numeric(std::stoll(p)) / GiNaC::numeric(std::stoll(q));
-  } else {
-    long exponent = 0;
-    if (const auto e = t.find_first_of("eE"); e != std::string::npos) {
-      std::string x = t.substr(e + 1);
-      t.erase(e);
-      bool xneg = false;
-      if (!x.empty() && (x[0] == '+' || x[0] == '-')) {
-        xneg = x[0] == '-';
-        x.erase(0, 1);
-      }
-      if (!digits(x) || x.size() > 3) throw bad();
-      exponent = xneg ? -std::stol(x) : std::stol(x);
-    }
-    std::string whole = t, frac;
-    if (const auto dot = t.find('.'); dot != std::string::npos) {
-      whole = t.substr(0, dot);
-      frac = t.substr(dot + 1);
-    }
-    if ((whole.empty() && frac.empty()) || (!whole.empty() && !digits(whole)) ||
-        (!frac.empty() && !digits(frac)))
-      throw bad();
-    const std::string mantissa = whole + frac;
-    if (!digits(mantissa)) throw bad();
-    value = GiNaC::numeric(std::stoll(mantissa)) *
-            GiNaC::pow(GiNaC::numeric(10), GiNaC::numeric(exponent - long(frac.size())));
-  }
-  return negative ? -value : value;
-}
 
 // Every symbol in the expressions, for the Python header (sorted by name, h first).
 void collect_symbols(const GiNaC::ex& e, std::set<std::string>& out) {
@@ -109,7 +56,7 @@ int run_modified(const ModifiedOptions& o) {
     if (p == Potential::generic)
       throw ArgumentError("--alpha",
                           "with a generic potential the pieces are abstract (phi1, phi2)");
-    alpha = parse_rational(o.alpha);
+    alpha = verify::parse_rational(o.alpha, "--alpha");
     if (*alpha < 0 || *alpha > 1)
       throw ArgumentError("--alpha", fmt::format("{}: the split φ^[1] = αU needs α in [0, 1] (as "
                                                  "vibook run)",

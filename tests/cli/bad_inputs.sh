@@ -135,6 +135,32 @@ row 2 "--alpha"          modified --method vi1 --potential kepler --order 1 --al
 row 2 "--alpha"          modified --method vi1 --potential kepler --order 1 --alpha 2
 row 2 "--alpha"          modified --method vi1 --potential kepler --order 1 --alpha 1/0
 row 2 "--alpha"          modified --method sv --potential kepler --order 1 --alpha 1/2
+# --- verify: typed expressions ------------------------------------------------------------------
+SIMPSON='h*((q1-q0)^2/(2*h^2) - (V(q0)+4*V((q0+q1)/2)+V(q1))/6)'
+HH='x^2/2+y^2/2+x^2*y-y^3/3'
+VF=(verify --t-end 0.5 --h-list 0.1,0.05,0.025 --steps 1024)
+row 2 "--ld"             verify --potential "$HH"
+row 2 "--potential"      verify --ld "$SIMPSON"
+row 2 "--ld"             "${VF[@]}" --ld 'h*(q1-q0)^2/(2*h^2' --potential "$HH"
+row 2 "--ld"             "${VF[@]}" --ld '(q1-q0)^2/h - w' --potential "$HH"
+row 2 "--ld"             "${VF[@]}" --ld '(q1-q0)^2/h - W(q0)' --potential "$HH"
+row 2 "--ld"             "${VF[@]}" --ld '(q1-q0)^2/h + q0' --potential "$HH"
+row 2 "--ld"             "${VF[@]}" --ld '(q1-q0)/h' --potential "$HH"
+row 2 "--ld"             "${VF[@]}" --ld '' --potential "$HH"
+row 2 "--ld"             "${VF[@]}" --ld '(q1-q0)^2/h - h*V(q0)/0' --potential "$HH"
+row 2 "--potential"      "${VF[@]}" --ld "$SIMPSON" --potential 'x^2 + t'
+row 2 "--potential"      "${VF[@]}" --ld "$SIMPSON" --potential 'x^2 +'
+row 2 "--dim"            "${VF[@]}" --ld "$SIMPSON" --potential "$HH" --dim 1
+row 2 "--dim"            "${VF[@]}" --ld "$SIMPSON" --potential "$HH" --dim 4
+row 2 "--q0"             "${VF[@]}" --ld "$SIMPSON" --potential "$HH" --q0 1,2,3
+row 2 "--p0"             "${VF[@]}" --ld "$SIMPSON" --potential "$HH" --p0 1,,2
+row 2 "--h-list"         "${VF[@]}" --ld "$SIMPSON" --potential "$HH" --h-list 0.1,0.05
+row 2 "--steps"          "${VF[@]}" --ld "$SIMPSON" --potential "$HH" --steps 10
+row 2 "--modified-order" "${VF[@]}" --ld "$SIMPSON" --potential "$HH" --modified-order 9
+row 2 "--format"         "${VF[@]}" --ld "$SIMPSON" --potential "$HH" --format python
+row 2 "--json-out"       "${VF[@]}" --ld "$SIMPSON" --potential "$HH" --json-out link.csv
+# A discrete Lagrangian without the velocity coupling D1 D2 L_d: degenerate, status 3.
+row 3 "degenerate"       "${VF[@]}" --ld 'q0^2 + q1^2 - h*V(q0)' --potential "$HH"
 # --- standard output that cannot be written: status 4 ------------------------------------------
 if [ -w /dev/full ]; then
   "$V" run --problem kepler --method sv --csv - >/dev/full 2>stderr

@@ -174,6 +174,33 @@ grep -q "h,p1\|h,x1\|symbols" "$tmp/out" && ok || bad "vi1 kepler python"
 expect 0 "" -- modified --method midpoint --potential pendulum --order 2 --what hamiltonian --format latex
 grep -q "H_{\\\\mathrm{mod}}" "$tmp/out" && ok || bad "latex hamiltonian"
 
+# --- verify: a typed discrete Lagrangian (the README's and the chapter's example) -------------
+expect 0 "" -- verify --ld 'h*((q1-q0)^2/(2*h^2) - (V(q0)+4*V((q0+q1)/2)+V(q1))/6)' \
+  --potential 'x^2/2+y^2/2+x^2*y-y^3/3' --q0 0,0.1 --p0 0.35,0 --json-out "$tmp/verify.json"
+for want in "order  *1.99[0-9] .*: yes" "symplectic .*: yes" "time-reversible .*: yes" \
+            "energy .*: bounded" "f_2\[1\] = 1/12\*x1+1/2\*x1\*x2+1/6\*x1\*x2^2+1/6\*x1^3"; do
+  grep -q "$want" "$tmp/out" && ok || bad "verify output lacks '$want': $(cat "$tmp/out")"
+done
+python3 - "$tmp/verify.json" <<'PY' && ok || bad "verify JSON"
+import json, sys
+j = json.load(open(sys.argv[1]))
+assert j["dim"] == 2 and j["order"]["passed"] and abs(j["order"]["fitted"] - 2) < 0.1, j["order"]
+assert j["symplecticity"]["passed"] and j["reversibility"]["passed"] and j["energy"]["bounded"]
+assert j["modified_equation"][1] == ["0", "0"], j["modified_equation"]
+PY
+# Two runs, the same bytes (the typed expression keeps its own order of operations).
+cp "$tmp/out" "$tmp/verify1.txt"
+cp "$tmp/verify.json" "$tmp/verify1.json"
+expect 0 "" -- verify --ld 'h*((q1-q0)^2/(2*h^2) - (V(q0)+4*V((q0+q1)/2)+V(q1))/6)' \
+  --potential 'x^2/2+y^2/2+x^2*y-y^3/3' --q0 0,0.1 --p0 0.35,0 --json-out "$tmp/verify.json"
+cmp -s "$tmp/out" "$tmp/verify1.txt" && cmp -s "$tmp/verify.json" "$tmp/verify1.json" && ok ||
+  bad "verify: two runs differ"
+# Symplectic Euler typed in (L(q1, v)): first order, symplectic, not symmetric.
+expect 0 "" -- verify --ld '(q1-q0)^2/(2*h) - h*V(q1)' --potential='-cos(x)' --q0 1 --p0 0.5 \
+  --expected-order 1
+grep -q "order  *1.0[0-9]* .*: yes" "$tmp/out" && grep -q "time-reversible .*: NO" "$tmp/out" &&
+  grep -q "symplectic .*: yes" "$tmp/out" && ok || bad "verify symplectic Euler: $(cat "$tmp/out")"
+
 # --- figures and claims ---------------------------------------------------------------------
 expect 0 "" -- figure vermeeren-fig1 --out "$tmp/f"
 for f in vermeeren-fig1.svg vermeeren-fig1.png claims.json discrete.csv curves.csv; do

@@ -1,7 +1,8 @@
 #!/usr/bin/env python3
-"""Seeded random arguments for `vibook run` and `vibook modified` (the argument parser, the
-strict number and list parsers, and the --alpha rational parser), run for a bounded number of
-cases and time. Every case must end with exit status 0, 2, 3 or 4 (never a signal, an
+"""Seeded random arguments for `vibook run`, `vibook modified` and `vibook verify` (the argument
+parser, the strict number and list parsers, the --alpha rational parser, and the expression
+parser of --ld and --potential, fed mutated expressions), run for a bounded number of cases
+and time. Every case must end with exit status 0, 2, 3 or 4 (never a signal, an
 uncaught exception's 1, or a hang), with exactly one stderr line when it fails, and must leave
 nothing in its directory but the file it was asked to write (or FILE.partial after status 3).
 
@@ -30,7 +31,55 @@ def pick(r, *pools):
     return r.choice(pool)
 
 
+LDS = ["h*((q1-q0)^2/(2*h^2) - (V(q0)+4*V((q0+q1)/2)+V(q1))/6)",
+       "(q1-q0)^2/(2*h) - h*(V(q0)+V(q1))/2", "(q1-q0)^2/(2*h) - h*V((q0+q1)/2)",
+       "(q1-q0)^2/(2*h) - h*V(q1)"]
+POTENTIALS = ["x^2/2+y^2/2+x^2*y-y^3/3", "x^2/2", "-cos(x)", "-1/sqrt(x^2+y^2)",
+              "x^4/4+y^2/2+z^2/2", "exp(x)-x"]
+ALPHABET = "q01h()+-*/^V.xyz 23sincoexplgrt,"
+
+
+def mutate(r, text):
+    # Delete, insert or replace a few characters: most mutants are syntax or type errors.
+    t = list(text)
+    for _ in range(r.choice([0, 1, 1, 2, 3])):
+        i = r.randrange(len(t) + 1)
+        op = r.choice("dir")
+        if op == "d" and i < len(t):
+            del t[i]
+        elif op == "i":
+            t.insert(i, r.choice(ALPHABET))
+        elif i < len(t):
+            t[i] = r.choice(ALPHABET)
+    return "".join(t)
+
+
+def verify_case(r):
+    args = ["verify"]
+    if r.random() < 0.97:
+        args += ["--ld", mutate(r, r.choice(LDS)) if r.random() < 0.8 else r.choice(GARBAGE)]
+    if r.random() < 0.97:
+        args += ["--potential", mutate(r, r.choice(POTENTIALS)) if r.random() < 0.8 else r.choice(GARBAGE)]
+    # Small studies only.
+    args += ["--t-end", "0.5", "--h-list", "0.1,0.05,0.025", "--steps", "1024"]
+    opts = {
+        "--dim": [["1", "2", "3"], ["0", "4"], GARBAGE],
+        "--q0": [LISTS, GARBAGE],
+        "--p0": [LISTS, GARBAGE],
+        "--h": [["0.05", "0.1"], NUMBERS, GARBAGE],
+        "--modified-order": [["0", "1", "2"], ["-1", "7"], GARBAGE],
+        "--format": [["text", "latex"], ["python"], GARBAGE],
+        "--expected-order": [["1", "2"], NUMBERS, GARBAGE],
+        "--json-out": [["out.json"], ["", ".", "nodir/x.json"]],
+    }
+    for name in r.sample(sorted(opts), r.choice([0, 1, 1, 2, 3])):
+        args += [name, pick(r, *opts[name])]
+    return args
+
+
 def run_case(r):
+    if r.random() < 0.15:
+        return verify_case(r)
     if r.random() < 0.7:
         args = ["run"]
         if r.random() < 0.95:
@@ -112,6 +161,8 @@ def main():
                 continue
             left = sorted(os.listdir(d))
             csv = args[args.index("--csv") + 1] if "--csv" in args[:-1] else None
+            if "--json-out" in args[:-1]:
+                csv = args[args.index("--json-out") + 1]
             allowed = set()
             if p.returncode == 0 and csv and "/" not in csv:
                 allowed.add(csv)

@@ -1,0 +1,126 @@
+// Doctests of the typed discrete Lagrangian (expression.hpp): the text gives the same numbers,
+// the same integrator and the same modified equation as the C++ template it spells, and every
+// malformed text is an ArgumentError naming its option.
+#include "vibook/verify/expression.hpp"
+
+#include <doctest/doctest.h>
+
+#include <memory>
+
+#include "vibook/mechanics/del_solver.hpp"
+#include "vibook/modified/engine.hpp"
+
+using namespace vibook;
+using vibook::verify::TypedDiscreteLagrangian;
+
+namespace {
+
+const char* kSimpson = "h*((q1-q0)^2/(2*h^2) - (V(q0)+4*V((q0+q1)/2)+V(q1))/6)";
+const char* kHenonHeiles = "x^2/2+y^2/2+x^2*y-y^3/3";
+
+template <class S>
+S henon_heiles(const Vec<S, 2>& q) {
+  return (q(0) * q(0) + q(1) * q(1)) / 2 + q(0) * q(0) * q(1) - q(1) * q(1) * q(1) / 3;
+}
+
+// The same discrete Lagrangian written as C++ (as in examples/henon_heiles_simpson.cpp).
+auto simpson_template = [](const auto& q0, const auto& q1, const auto& h) -> scalar_t<decltype(h)> {
+  using S = scalar_t<decltype(h)>;
+  const Vec<S, 2> v = (q1 - q0) / h;
+  const Vec<S, 2> qm = (q0 + q1) / 2;
+  const S kinetic = (v(0) * v(0) + v(1) * v(1)) / 2;
+  return h * (kinetic - (henon_heiles<S>(q0) + 4 * henon_heiles<S>(qm) + henon_heiles<S>(q1)) / 6);
+};
+
+// An ArgumentError naming `arg`, with `text` in its message.
+void refused(const std::string& ld, const std::string& potential, int dim, const std::string& arg,
+             const std::string& text) {
+  INFO("--ld ", ld, " --potential ", potential, " --dim ", dim);
+  try {
+    std::lock_guard<std::mutex> lock(modified::ginac_mutex());
+    TypedDiscreteLagrangian dl(ld, potential, dim);
+    FAIL("accepted");
+  } catch (const ArgumentError& e) {
+    CHECK(std::string(e.what()).find(arg) != std::string::npos);
+    CHECK(std::string(e.what()).find(text) != std::string::npos);
+  }
+}
+
+}  // namespace
+
+TEST_CASE("typed discrete Lagrangian: Simpson on Hénon–Heiles is the C++ template") {
+  std::lock_guard<std::mutex> lock(modified::ginac_mutex());
+  const TypedDiscreteLagrangian typed(kSimpson, kHenonHeiles);
+  CHECK(typed.dim() == 2);
+  const auto Ld = typed.bind<2>();
+
+  SUBCASE("values, and the integrator's steps, agree to round-off") {
+    const Vec<double, 2> a(0.3, -0.2), b(0.35, -0.1);
+    const double t = Ld(a, b, 0.07), c = simpson_template(a, b, 0.07);
+    CHECK(std::abs(t - c) <= 4e-16 * std::abs(c));
+    DelIntegrator<2, decltype(Ld)> vt(Ld);
+    DelIntegrator<2, decltype(simpson_template)> vc(simpson_template);
+    Vec<double, 2> qt(0.0, 0.1), pt(0.35, 0.0), qc = qt, pc = pt;
+    for (int k = 0; k < 200; ++k) {
+      vt.step(qt, pt, 0.05);
+      vc.step(qc, pc, 0.05);
+    }
+    CHECK((qt - qc).lpNorm<Eigen::Infinity>() <= 1e-13);
+    CHECK((pt - pc).lpNorm<Eigen::Infinity>() <= 1e-13);
+  }
+  SUBCASE("the engine derives the same modified equation from both") {
+    modified::Engine from_text(
+        modified::symbolic_dl<2>(Ld, std::make_shared<modified::JetSpace>(2), "typed"), 2);
+    auto jets = std::make_shared<modified::JetSpace>(2);
+    modified::Engine from_cpp(modified::symbolic_dl<2>(simpson_template, jets, "C++"), 2);
+    const auto& f = from_text.modified_equation();
+    const auto& g = from_cpp.modified_equation();
+    REQUIRE(f.size() == g.size());
+    for (std::size_t k = 0; k < f.size(); ++k)
+      for (int i = 0; i < 2; ++i)
+        CHECK(modified::canonical_string(f[k][i]) == modified::canonical_string(g[k][i]));
+    CHECK(modified::canonical_string(f[2][0]) == "1/12*x1+1/2*x1*x2+1/6*x1*x2^2+1/6*x1^3");
+  }
+}
+
+TEST_CASE("typed discrete Lagrangian: numbers are exact, decimals are the fractions they denote") {
+  std::lock_guard<std::mutex> lock(modified::ginac_mutex());
+  // 0.5 and 1/2, 0.1 and 1/10: the same expression, exactly.
+  const TypedDiscreteLagrangian a("0.5*(q1-q0)^2/h - 0.1*h*V(q0)", "x^2", 0);
+  const TypedDiscreteLagrangian b("(q1-q0)^2/(2*h) - h*V(q0)/10", "x^2", 0);
+  CHECK(a.dim() == 1);
+  const GiNaC::symbol x0("x0"), x1("x1"), h("h");
+  const GiNaC::ex ea = a.evaluate<1, GiNaC::ex>(Vec<GiNaC::ex, 1>(x0), Vec<GiNaC::ex, 1>(x1), h);
+  const GiNaC::ex eb = b.evaluate<1, GiNaC::ex>(Vec<GiNaC::ex, 1>(x0), Vec<GiNaC::ex, 1>(x1), h);
+  CHECK((ea - eb).expand().is_zero());
+  CHECK((ea.expand().coeff(x0, 2) - (GiNaC::numeric(1, 2) / h - h / 10)).expand().is_zero());
+  CHECK(verify::parse_rational("2.5e-1", "--x") == GiNaC::numeric(1, 4));
+  CHECK(verify::parse_rational("-3/9", "--x") == GiNaC::numeric(-1, 3));
+}
+
+TEST_CASE("typed discrete Lagrangian: every malformed text is refused, naming its option") {
+  refused("h*(q1-q0)^2/(2*h^2", kHenonHeiles, 0, "--ld", "expected ')'");
+  refused("h*(q1-q0)^2/(2*h^2))", kHenonHeiles, 0, "--ld", "unexpected ')'");
+  refused("(q1-q0)^2/h - sin()", kHenonHeiles, 0, "--ld", "unexpected ')'");
+  refused("(q1-q0)^2/h - V(q0)/q1", kHenonHeiles, 0, "--ld", "divides by a vector");
+  refused("(q1-q0)^2/h - V(q0)/(1-1)", kHenonHeiles, 0, "--ld", "divides by zero");
+  refused("(q1-q0)^2/h - h^h", kHenonHeiles, 0, "--ld", "exponent must be");
+  refused("(q1-q0)^2/h - V(q0)", "x^2 + q0", 0, "--potential", "unknown symbol 'q0'");
+  refused("(q1-q0)^2/h - V(q0)", "V(x)", 0, "--potential", "unknown function 'V'");
+  refused("(q1-q0)^2/h - V(q0)", "x^2 + 1e400", 0, "--potential", "range of double");
+  refused("h*(q1-q0)^2/h - w", kHenonHeiles, 0, "--ld", "unknown symbol 'w'");
+  refused("(q1-q0)^2/h - W(q0)", kHenonHeiles, 0, "--ld", "unknown function 'W'");
+  refused("(q1-q0)^2/h - h*V(q0)", "x^2 + t", 0, "--potential", "unknown symbol 't'");
+  refused("(q1-q0)^2/h + q0", kHenonHeiles, 0, "--ld", "adds a vector and a scalar");
+  refused("(q1-q0)/h", kHenonHeiles, 0, "--ld", "is a vector");
+  refused("(q1-q0)^2/h - V(h)", kHenonHeiles, 0, "--ld", "V takes a vector");
+  refused("(q1-q0)^2/h - sin(q0)", kHenonHeiles, 0, "--ld", "sin of a vector");
+  refused("(q1-q0)^3/h", kHenonHeiles, 0, "--ld", "even positive powers");
+  refused("(q1-q0)^2/h - h^(1/3)", kHenonHeiles, 0, "--ld", "half-integer constant");
+  refused("(q1-q0)^2/h - V(q0)", "x^2+y^2+z^2", 2, "--dim", "fewer than");
+  refused("(q1-q0)^2/h", kHenonHeiles, 4, "--dim", "1, 2 or 3");
+  refused("", kHenonHeiles, 0, "--ld", "empty");
+  refused("q1^2/h", kHenonHeiles, 0, "--ld", "both q0 and q1");
+  refused("(q1-q0)^2/h - 1.5.2*V(q0)", kHenonHeiles, 0, "--ld", "not a number");
+  refused("(q1-q0)^2/h - 2x*V(q0)", kHenonHeiles, 0, "--ld", "not a number");
+}
