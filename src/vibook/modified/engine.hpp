@@ -71,6 +71,12 @@ struct SymbolicDL {
 /// Evaluate a discrete-Lagrangian template (any callable `dl(q0, q1, h)` generic in its
 /// scalar, as written for the integrators) on GiNaC symbols. Floating-point literals in the
 /// template become the rationals they represent.
+///
+/// **Comparing two engines.** Each JetSpace makes symbols of its own: x1 of one and x1 of
+/// another print alike but are different GiNaC symbols, so `f - g` of expressions from two
+/// engines does not cancel. Build both discrete Lagrangians on one shared JetSpace (pass the
+/// same `jets`), or compare the printed forms with canonical_string (canonical.hpp), which
+/// does not depend on which symbols they are.
 template <int N, class DL>
 SymbolicDL symbolic_dl(const DL& dl, std::shared_ptr<JetSpace> jets, std::string description) {
   SymbolicDL out;
