@@ -65,10 +65,12 @@ endif()
 execute_process(COMMAND ${VIBOOK} verify
                         --ld "h*((q1-q0)^2/(2*h^2) - (V(q0)+4*V((q0+q1)/2)+V(q1))/6)"
                         --potential "x^2/2+y^2/2+x^2*y-y^3/3" --q0 0,0.1 --p0 0.35,0
+                        --report ${FIGS}/verify-report
                 OUTPUT_FILE ${GEN}/verify-cli.txt RESULT_VARIABLE rc)
 if(NOT rc EQUAL 0)
   message(FATAL_ERROR "vibook verify failed (exit ${rc}); see ${GEN}/verify-cli.txt")
 endif()
+file(COPY ${FIGS}/verify-report/verify-report.svg DESTINATION ${IMAGES})
 
 # 3. Benchmarks: the table of the last `./build.sh bench` run, or of a run made now when
 #    VIBOOK_BOOK_BENCH is set (./build.sh book sets it; the test build does not).

@@ -1,8 +1,12 @@
 // `vibook verify`: a discrete Lagrangian and a potential typed as expressions, run by the
 // generic variational integrator, measured by the verification helpers (verify/verify.hpp) and
 // expanded by the modified-equation engine: the route of examples/ without writing C++.
+#include <unistd.h>
+
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
+#include <fstream>
 #include <iostream>
 #include <memory>
 #include <sstream>
@@ -17,7 +21,9 @@
 #include "cli.hpp"
 #include "vibook/core/output_file.hpp"
 #include "vibook/mechanics/del_solver.hpp"
+#include "vibook/mechanics/discrete_lagrangian.hpp"
 #include "vibook/modified/engine.hpp"
+#include "vibook/plot/gnuplot.hpp"
 #include "vibook/verify/expression.hpp"
 #include "vibook/verify/verify.hpp"
 
@@ -28,7 +34,8 @@ namespace {
 struct VerifyOptions {
   std::string ld, potential, dim, q0, p0,
       t_end = "5", h_list = "0.2,0.1,0.05,0.025,0.0125", expected = "2", order_tol = "0.1",
-      h = "0.05", steps = "100000", modified_order = "2", format = "text", json_out;
+      h = "0.05", steps = "100000", modified_order = "2", format = "text", json_out, report;
+  bool json_given = false, report_given = false;
 };
 
 struct Plan {
@@ -39,6 +46,60 @@ struct Plan {
   int modified_order = 0;
   modified::Format format = modified::Format::text;
 };
+
+// --report DIR: a new name in an existing writable directory, or an earlier report (a
+// directory holding index.html and verify.json), which is replaced; nothing else is.
+std::filesystem::path report_path(const std::string& dir) {
+  std::filesystem::path d = std::filesystem::path(dir).lexically_normal();
+  if (d.filename().empty()) d = d.parent_path();  // "rep/"
+  return d;
+}
+
+void check_report_dir(const std::string& dir) {
+  namespace fs = std::filesystem;
+  std::error_code ec;
+  if (dir.empty()) throw ArgumentError("--report", "is empty");
+  const fs::path d = report_path(dir);
+  if (d.empty() || d.filename() == "." || d.filename() == "..")
+    throw ArgumentError("--report", "'" + dir + "' does not name a new directory");
+  const auto st = fs::symlink_status(d, ec);
+  if (fs::exists(st)) {
+    if (fs::is_symlink(st) || !fs::is_directory(st))
+      throw ArgumentError("--report", "'" + dir + "' exists and is not a directory");
+    const bool empty = fs::is_empty(d, ec);
+    if (!empty && !(fs::exists(d / "index.html") && fs::exists(d / "verify.json")))
+      throw ArgumentError("--report", "'" + dir +
+                                          "' exists and is not an earlier report (index.html and "
+                                          "verify.json); give a new name");
+  }
+  const fs::path parent = d.has_parent_path() ? d.parent_path() : fs::path(".");
+  if (!fs::is_directory(parent, ec) || ::access(parent.c_str(), W_OK) != 0)
+    throw ArgumentError("--report", "cannot create '" + dir + "': '" + parent.string() +
+                                        "' is not a writable directory");
+}
+
+std::string html_escape(const std::string& s) {
+  std::string out;
+  for (char c : s) {
+    switch (c) {
+      case '&':
+        out += "&amp;";
+        break;
+      case '<':
+        out += "&lt;";
+        break;
+      case '>':
+        out += "&gt;";
+        break;
+      case '"':
+        out += "&quot;";
+        break;
+      default:
+        out += c;
+    }
+  }
+  return out;
+}
 
 // Every argument checked before any work (exit 2 naming it).
 Plan check(const VerifyOptions& o, const verify::TypedDiscreteLagrangian& dl) {
@@ -80,7 +141,8 @@ Plan check(const VerifyOptions& o, const verify::TypedDiscreteLagrangian& dl) {
   p.format = modified::parse_format(o.format);
   if (p.format == modified::Format::python)
     throw ArgumentError("--format", "verify prints text or latex");
-  if (!o.json_out.empty()) check_output_path(o.json_out, "--json-out", true);
+  if (o.json_given) check_output_path(o.json_out, "--json-out", true);
+  if (o.report_given) check_report_dir(o.report);
   return p;
 }
 
@@ -133,6 +195,36 @@ int run_verify(const VerifyOptions& o, const verify::TypedDiscreteLagrangian& dl
   vi.reset();
   const auto en = verify::energy_behaviour(warm, energy, z0, p.h, p.steps);
 
+  // Work–precision beside Störmer–Verlet and the implicit midpoint rule, the same generic
+  // solver on L = |v|²/2 − V(q), every error against one reference (Störmer–Verlet at
+  // h_min/64): error at T against the number of steps.
+  std::vector<std::array<double, 3>> wp;
+  if (o.report_given) {
+    auto L = [&](const auto& q, const auto& v) -> scalar_t<decltype(q)> {
+      using S = scalar_t<decltype(q)>;
+      return constant<S>(0.5) * squared_norm(v) - dl.potential<N, S>(Vec<S, N>(q));
+    };
+    auto sv_dl = stormer_verlet_dl(L);
+    auto mid_dl = midpoint_dl(L);
+    DelIntegrator<N, decltype(sv_dl)> sv(sv_dl);
+    DelIntegrator<N, decltype(mid_dl)> mid(mid_dl);
+    const verify::Step sv_step = [&](Eigen::VectorXd& z, double h) {
+      sv.reset();
+      verify::step_qp<N>(sv, z, h);
+    };
+    const verify::Step mid_step = [&](Eigen::VectorXd& z, double h) {
+      mid.reset();
+      verify::step_qp<N>(mid, z, h);
+    };
+    const Eigen::VectorXd common = verify::integrate(sv_step, z0, hmin / 64, p.t_end);
+    for (double h : p.hs) {
+      wp.push_back(
+          {(verify::integrate(step, z0, h, p.t_end) - common).lpNorm<Eigen::Infinity>(),
+           (verify::integrate(sv_step, z0, h, p.t_end) - common).lpNorm<Eigen::Infinity>(),
+           (verify::integrate(mid_step, z0, h, p.t_end) - common).lpNorm<Eigen::Infinity>()});
+    }
+  }
+
   // The engine, on the same evaluator over GiNaC symbols.
   std::vector<std::vector<std::string>> terms;
   {
@@ -171,8 +263,8 @@ int run_verify(const VerifyOptions& o, const verify::TypedDiscreteLagrangian& dl
     for (int i = 0; i < N; ++i) out << fmt::format("  f_{}[{}] = {}\n", k, i + 1, terms[k][i]);
   std::cout << out.str();
 
-  if (!o.json_out.empty()) {
-    nlohmann::json js;
+  nlohmann::json js;
+  {
     js["ld"] = o.ld;
     js["potential"] = o.potential;
     js["dim"] = N;
@@ -194,7 +286,100 @@ int run_verify(const VerifyOptions& o, const verify::TypedDiscreteLagrangian& dl
                     {"bounded_below", en.bounded_below},
                     {"bounded", en.bounded}};
     js["modified_equation"] = terms;
-    write_output_file(o.json_out, js.dump(2) + "\n", "--json-out");
+  }
+  if (o.json_given) write_output_file(o.json_out, js.dump(2) + "\n", "--json-out");
+  if (!o.report_given) return kOk;
+
+  // The report: a directory filled beside its final name and renamed onto it at the end.
+  namespace fs = std::filesystem;
+  const fs::path final_dir = report_path(o.report);
+  const fs::path tmp = temporary_directory_for(final_dir);
+  bool rendered = false;
+  std::string render_error;
+  try {
+    write_output_file((tmp / "verify.json").string(), js.dump(2) + "\n", "--report");
+    std::ostringstream conv;
+    conv << "h,steps,typed,stormer_verlet,midpoint\n";
+    for (std::size_t i = 0; i < p.hs.size(); ++i)
+      conv << fmt::format("{:.17g},{:.0f},{:.17g},{:.17g},{:.17g}\n", p.hs[i],
+                          std::ceil(p.t_end / p.hs[i] - 1e-9), wp[i][0], wp[i][1], wp[i][2]);
+    write_output_file((tmp / "convergence.csv").string(), conv.str(), "--report");
+    std::ostringstream env;
+    env << "steps,envelope\n";
+    for (std::size_t i = 0; i < en.envelope.size(); ++i)
+      env << fmt::format("{:.17g},{:.17g}\n", en.envelope_steps[i], en.envelope[i]);
+    write_output_file((tmp / "energy.csv").string(), env.str(), "--report");
+    try {
+      plot::render("verify-report", tmp);
+      rendered = true;
+      fs::remove(tmp / "gnuplot.log");
+    } catch (const plot::PlotError& e) {
+      render_error = e.what();
+    }
+    std::ostringstream html;
+    const auto row = [&](const char* what, const std::string& measured,
+                         const std::string& criterion, bool passed) {
+      html << "<tr><td>" << what << "</td><td>" << html_escape(measured) << "</td><td>"
+           << html_escape(criterion) << "</td><td class=\"" << (passed ? "yes" : "no") << "\">"
+           << (passed ? "yes" : "no") << "</td></tr>\n";
+    };
+    html << "<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\">"
+            "<title>vibook verify</title>\n<style>\n"
+            "body{font-family:'DejaVu Sans',sans-serif;max-width:1100px;margin:2em auto;"
+            "padding:0 1em;color:#222;line-height:1.45}\n"
+            "code,pre{font-family:'DejaVu Sans Mono',monospace;background:#f6f6f6}\n"
+            "pre{padding:.6em;overflow-x:auto}\ntable{border-collapse:collapse}\n"
+            "td,th{border:1px solid #ccc;padding:.3em .6em;text-align:left}\n"
+            ".yes{color:#1e7b34;font-weight:bold}.no{color:#b03a2e;font-weight:bold}\n"
+            "img{max-width:100%}\n</style></head><body>\n"
+         << "<h1>vibook verify</h1>\n<p>Discrete Lagrangian <code>" << html_escape(o.ld)
+         << "</code>, potential <code>" << html_escape(o.potential) << "</code>, " << N
+         << "-dimensional; initial state q0 = ("
+         << html_escape(fmt::format("{}", fmt::join(p.q0, ", "))) << "), p0 = ("
+         << html_escape(fmt::format("{}", fmt::join(p.p0, ", "))) << ").</p>\n"
+         << "<table><tr><th>property</th><th>measured</th><th>criterion</th><th>holds</th></tr>\n";
+    row("order",
+        fmt::format("{:.3f} over {} step sizes at T = {:g}", order.order, order.points, p.t_end),
+        fmt::format("|p − {:g}| < {:g}", p.expected, p.order_tol), order.passed);
+    row("symplecticity", fmt::format("|JᵀΩJ − Ω| = {:.2e} at h = {:g}", sym.defect, p.h),
+        fmt::format("≤ {:.0e}", sym.tolerance), sym.passed);
+    row("time reversibility", fmt::format("|ρΦρΦ(z) − z| = {:.2e} at h = {:g}", rev.defect, p.h),
+        fmt::format("≤ {:.0e}", rev.tolerance), rev.passed);
+    row("energy",
+        fmt::format("{} steps: max |H − H₀| = {:.2e}, envelope exponent {:.3f}", en.steps,
+                    en.max_error, en.exponent),
+        fmt::format("bounded: exponent < {:g}", en.bounded_below), en.bounded);
+    html << "</table>\n";
+    if (rendered)
+      html << "<p><a href=\"verify-report.png\"><img src=\"verify-report.svg\" alt=\"error at T "
+              "against steps beside Störmer–Verlet and the implicit midpoint rule; energy error "
+              "envelope\"></a></p>\n<p>Left: error at T = "
+           << fmt::format("{:g}", p.t_end)
+           << " against the number of steps, each method against Störmer–Verlet at h_min/64 "
+              "(data: <a href=\"convergence.csv\">convergence.csv</a>). Right: the envelope "
+              "max<sub>k≤K</sub>|H<sub>k</sub> − H<sub>0</sub>| (data: <a "
+              "href=\"energy.csv\">energy.csv</a>).</p>\n";
+    else
+      html << "<p>No figure: " << html_escape(render_error)
+           << " (data: <a href=\"convergence.csv\">convergence.csv</a>, <a "
+              "href=\"energy.csv\">energy.csv</a>).</p>\n";
+    html << "<h2>Modified equation</h2>\n<pre>";
+    for (std::size_t k = 0; k < terms.size(); ++k)
+      for (int i = 0; i < N; ++i)
+        html << html_escape(fmt::format("h^{} term of x{}'': {}", k, i + 1, terms[k][i])) << "\n";
+    html << "</pre>\n<p>Every number: <a "
+            "href=\"verify.json\">verify.json</a>.</p>\n</body></html>\n";
+    write_output_file((tmp / "index.html").string(), html.str(), "--report");
+    commit_directory(tmp, final_dir);
+  } catch (...) {
+    std::error_code ec;
+    fs::remove_all(tmp, ec);
+    throw;
+  }
+  std::cout << "report: " << (final_dir / "index.html").string() << '\n';
+  if (!rendered) {
+    fmt::print(stderr, "vibook: --report: figure not drawn: {}\n", render_error);
+    return kFailure;
   }
   return kOk;
 }
@@ -247,7 +432,14 @@ std::function<int()> add_verify_command(CLI::App& app) {
                 "highest h power of the modified equation (2)");
   c->add_option("--format", o->format, "modified equation as text (default) or latex");
   c->add_option("--json-out", o->json_out, "also write every measurement as JSON to this file");
-  return [o] { return run(*o); };
+  c->add_option("--report", o->report,
+                "also write an HTML report into this new directory (figures, CSV, JSON; work-"
+                "precision beside Störmer-Verlet and the implicit midpoint rule)");
+  return [o, c] {
+    o->json_given = c->count("--json-out") > 0;
+    o->report_given = c->count("--report") > 0;
+    return run(*o);
+  };
 }
 
 }  // namespace vibook::cli

@@ -159,6 +159,13 @@ row 2 "--steps"          "${VF[@]}" --ld "$SIMPSON" --potential "$HH" --steps 10
 row 2 "--modified-order" "${VF[@]}" --ld "$SIMPSON" --potential "$HH" --modified-order 9
 row 2 "--format"         "${VF[@]}" --ld "$SIMPSON" --potential "$HH" --format python
 row 2 "--json-out"       "${VF[@]}" --ld "$SIMPSON" --potential "$HH" --json-out link.csv
+row 2 "--json-out"       "${VF[@]}" --ld "$SIMPSON" --potential "$HH" --json-out ""
+row 2 "--report"         "${VF[@]}" --ld "$SIMPSON" --potential "$HH" --report link.csv
+row 2 "--report"         "${VF[@]}" --ld "$SIMPSON" --potential "$HH" --report readonly.csv
+row 2 "--report"         "${VF[@]}" --ld "$SIMPSON" --potential "$HH" --report /nonexistent/r
+row 2 "--report"         "${VF[@]}" --ld "$SIMPSON" --potential "$HH" --report .
+row 2 "--report"         "${VF[@]}" --ld "$SIMPSON" --potential "$HH" --report ..
+row 2 "--report"         "${VF[@]}" --ld "$SIMPSON" --potential "$HH" --report ""
 # A discrete Lagrangian without the velocity coupling D1 D2 L_d: degenerate, status 3.
 row 3 "degenerate"       "${VF[@]}" --ld 'q0^2 + q1^2 - h*V(q0)' --potential "$HH"
 # --- standard output that cannot be written: status 4 ------------------------------------------

@@ -195,6 +195,16 @@ expect 0 "" -- verify --ld 'h*((q1-q0)^2/(2*h^2) - (V(q0)+4*V((q0+q1)/2)+V(q1))/
   --potential 'x^2/2+y^2/2+x^2*y-y^3/3' --q0 0,0.1 --p0 0.35,0 --json-out "$tmp/verify.json"
 cmp -s "$tmp/out" "$tmp/verify1.txt" && cmp -s "$tmp/verify.json" "$tmp/verify1.json" && ok ||
   bad "verify: two runs differ"
+# --report: a page with the figure, the data and the JSON; twice, the same bytes.
+for r in rep1 rep2; do
+  expect 0 "" -- verify --ld '(q1-q0)^2/(2*h) - h*(V(q0)+V(q1))/2' --potential 'x^2/2+x^4/4' \
+    --q0 0.5 --p0 0 --steps 4096 --report "$tmp/$r"
+done
+for f in index.html verify-report.svg verify-report.png convergence.csv energy.csv verify.json; do
+  [ -s "$tmp/rep1/$f" ] && ok || bad "verify --report: $f missing"
+done
+diff -r "$tmp/rep1" "$tmp/rep2" >/dev/null && ok || bad "verify --report: two runs differ"
+[ -z "$(find "$tmp" -maxdepth 1 -name '.*rep*')" ] && ok || bad "verify --report left a temporary"
 # Symplectic Euler typed in (L(q1, v)): first order, symplectic, not symmetric.
 expect 0 "" -- verify --ld '(q1-q0)^2/(2*h) - h*V(q1)' --potential='-cos(x)' --q0 1 --p0 0.5 \
   --expected-order 1

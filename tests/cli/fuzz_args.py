@@ -71,6 +71,7 @@ def verify_case(r):
         "--format": [["text", "latex"], ["python"], GARBAGE],
         "--expected-order": [["1", "2"], NUMBERS, GARBAGE],
         "--json-out": [["out.json"], ["", ".", "nodir/x.json"]],
+        "--report": [["rep"], ["", ".", "nodir/rep", "rep/"]],
     }
     for name in r.sample(sorted(opts), r.choice([0, 1, 1, 2, 3])):
         args += [name, pick(r, *opts[name])]
@@ -160,14 +161,14 @@ def main():
                 done += 1
                 continue
             left = sorted(os.listdir(d))
-            csv = args[args.index("--csv") + 1] if "--csv" in args[:-1] else None
-            if "--json-out" in args[:-1]:
-                csv = args[args.index("--json-out") + 1]
+            outputs = [args[args.index(o) + 1].rstrip("/") for o in ("--csv", "--json-out", "--report")
+                       if o in args[:-1]]
             allowed = set()
-            if p.returncode == 0 and csv and "/" not in csv:
-                allowed.add(csv)
-            if p.returncode == 3 and csv and "/" not in csv:
-                allowed.add(csv + ".partial")
+            for out in outputs:
+                if p.returncode == 0 and out and "/" not in out:
+                    allowed.add(out)
+                if p.returncode == 3 and out and "/" not in out:
+                    allowed.add(out + ".partial")
             err = p.stderr.decode("utf-8", "replace").splitlines()
             problem = None
             if p.returncode not in (0, 2, 3, 4):
