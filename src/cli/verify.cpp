@@ -3,6 +3,7 @@
 // expanded by the modified-equation engine: the route of examples/ without writing C++.
 #include <unistd.h>
 
+#include <array>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -198,7 +199,7 @@ int run_verify(const VerifyOptions& o, const verify::TypedDiscreteLagrangian& dl
   // Work–precision beside Störmer–Verlet and the implicit midpoint rule, the same generic
   // solver on L = |v|²/2 − V(q), every error against one reference (Störmer–Verlet at
   // h_min/64): error at T against the number of steps.
-  std::vector<std::array<double, 3>> wp;
+  verify::WorkPrecision wp;
   if (o.report_given) {
     auto L = [&](const auto& q, const auto& v) -> scalar_t<decltype(q)> {
       using S = scalar_t<decltype(q)>;
@@ -217,16 +218,15 @@ int run_verify(const VerifyOptions& o, const verify::TypedDiscreteLagrangian& dl
       verify::step_qp<N>(mid, z, h);
     };
     const Eigen::VectorXd common = verify::integrate(sv_step, z0, hmin / 64, p.t_end);
-    for (double h : p.hs) {
-      wp.push_back(
-          {(verify::integrate(step, z0, h, p.t_end) - common).lpNorm<Eigen::Infinity>(),
-           (verify::integrate(sv_step, z0, h, p.t_end) - common).lpNorm<Eigen::Infinity>(),
-           (verify::integrate(mid_step, z0, h, p.t_end) - common).lpNorm<Eigen::Infinity>()});
-    }
+    wp = verify::work_precision(
+        {{"typed", step}, {"stormer_verlet", sv_step}, {"midpoint", mid_step}}, z0, p.t_end, common,
+        p.hs);
   }
 
   // The engine, on the same evaluator over GiNaC symbols.
   std::vector<std::vector<std::string>> terms;
+  std::vector<std::string> lagrangian;
+  std::string lagrangian_error;
   {
     std::lock_guard<std::mutex> lock(modified::ginac_mutex());
     auto jets = std::make_shared<modified::JetSpace>(N);
@@ -237,6 +237,12 @@ int run_verify(const VerifyOptions& o, const verify::TypedDiscreteLagrangian& dl
       terms.emplace_back();
       for (int i = 0; i < N; ++i)
         terms.back().push_back(modified::canonical_string(f[k][i], p.format));
+    }
+    try {
+      for (const auto& l : engine.l_mod())
+        lagrangian.push_back(modified::canonical_string(l, p.format));
+    } catch (const NumericalError& e) {
+      lagrangian_error = e.what();  // e.g. a Lagrangian that is not regular
     }
   }
 
@@ -261,6 +267,10 @@ int run_verify(const VerifyOptions& o, const verify::TypedDiscreteLagrangian& dl
   out << "modified equation    x'' = sum_k h^k f_k:\n";
   for (std::size_t k = 0; k < terms.size(); ++k)
     for (int i = 0; i < N; ++i) out << fmt::format("  f_{}[{}] = {}\n", k, i + 1, terms[k][i]);
+  out << "modified Lagrangian  L_mod = sum_k h^k L_k:\n";
+  if (!lagrangian_error.empty()) out << "  not derived: " << lagrangian_error << '\n';
+  for (std::size_t k = 0; k < lagrangian.size(); ++k)
+    out << fmt::format("  L_{} = {}\n", k, lagrangian[k]);
   std::cout << out.str();
 
   nlohmann::json js;
@@ -286,6 +296,7 @@ int run_verify(const VerifyOptions& o, const verify::TypedDiscreteLagrangian& dl
                     {"bounded_below", en.bounded_below},
                     {"bounded", en.bounded}};
     js["modified_equation"] = terms;
+    js["modified_lagrangian"] = lagrangian;
   }
   if (o.json_given) write_output_file(o.json_out, js.dump(2) + "\n", "--json-out");
   if (!o.report_given) return kOk;
@@ -301,8 +312,8 @@ int run_verify(const VerifyOptions& o, const verify::TypedDiscreteLagrangian& dl
     std::ostringstream conv;
     conv << "h,steps,typed,stormer_verlet,midpoint\n";
     for (std::size_t i = 0; i < p.hs.size(); ++i)
-      conv << fmt::format("{:.17g},{:.0f},{:.17g},{:.17g},{:.17g}\n", p.hs[i],
-                          std::ceil(p.t_end / p.hs[i] - 1e-9), wp[i][0], wp[i][1], wp[i][2]);
+      conv << fmt::format("{:.17g},{:.0f},{:.17g},{:.17g},{:.17g}\n", wp.h[i], wp.steps[i],
+                          wp.error[0][i], wp.error[1][i], wp.error[2][i]);
     write_output_file((tmp / "convergence.csv").string(), conv.str(), "--report");
     std::ostringstream env;
     env << "steps,envelope\n";
@@ -367,6 +378,10 @@ int run_verify(const VerifyOptions& o, const verify::TypedDiscreteLagrangian& dl
     for (std::size_t k = 0; k < terms.size(); ++k)
       for (int i = 0; i < N; ++i)
         html << html_escape(fmt::format("h^{} term of x{}'': {}", k, i + 1, terms[k][i])) << "\n";
+    html << "</pre>\n<h2>Modified Lagrangian</h2>\n<pre>";
+    if (!lagrangian_error.empty()) html << "not derived: " << html_escape(lagrangian_error) << "\n";
+    for (std::size_t k = 0; k < lagrangian.size(); ++k)
+      html << html_escape(fmt::format("h^{} term: {}", k, lagrangian[k])) << "\n";
     html << "</pre>\n<p>Every number: <a "
             "href=\"verify.json\">verify.json</a>.</p>\n</body></html>\n";
     write_output_file((tmp / "index.html").string(), html.str(), "--report");

@@ -104,6 +104,40 @@ inline ConvergenceStudy convergence_order(const Step& step, const Eigen::VectorX
   return s;
 }
 
+/// One method of a work–precision comparison: its name and its step.
+struct NamedStep {
+  std::string name;
+  Step step;
+};
+
+/// Result of work_precision: for each method, the error at T against `reference` for each
+/// step size, with the work measured in steps (deterministic, unlike wall-clock time: the
+/// benchmarks under tests/bench measure time).
+struct WorkPrecision {
+  std::vector<double> h;
+  std::vector<double> steps;  ///< steps to T for each h
+  std::vector<std::string> methods;
+  std::vector<std::vector<double>> error;  ///< error[m][i]: method m at h[i]
+};
+
+/// Every method at every step size, against one reference (DiffEqDevTools' WorkPrecisionSet
+/// is the model; here for one-step methods on a phase-space state).
+inline WorkPrecision work_precision(const std::vector<NamedStep>& methods,
+                                    const Eigen::VectorXd& z0, double T,
+                                    const Eigen::VectorXd& reference,
+                                    const std::vector<double>& hs) {
+  WorkPrecision w;
+  w.h = hs;
+  for (double h : hs) w.steps.push_back(std::ceil(T / h - 1e-9));
+  for (const auto& m : methods) {
+    w.methods.push_back(m.name);
+    w.error.emplace_back();
+    for (double h : hs)
+      w.error.back().push_back((integrate(m.step, z0, h, T) - reference).lpNorm<Eigen::Infinity>());
+  }
+  return w;
+}
+
 // -------------------------------------------------------------------------------------------
 // Symplecticity and reversibility of the one-step map
 // -------------------------------------------------------------------------------------------
