@@ -9,8 +9,8 @@ trap 'rm -rf "$tmp"' EXIT
 prefix=$tmp/prefix
 
 cmake --install "$build" --prefix "$prefix" >"$tmp/install.log" || { cat "$tmp/install.log"; exit 1; }
-# Only the library is installed: headers of the numerics and the engine, the engine's archive,
-# the CMake package and the pkg-config files; none of the reproduction code.
+# The library (headers of the numerics and the engine, the engine's archive, the CMake package
+# and the pkg-config files) and the command; none of the reproduction code's headers.
 for f in include/vibook/mechanics/del_solver.hpp include/vibook/modified/engine.hpp \
          include/vibook/core/precision.hpp include/vibook/verify/verify.hpp \
          lib/libvibook_modified.a lib/cmake/vibook/vibookConfig.cmake \
@@ -51,4 +51,11 @@ g++ -std=c++20 $flags $(pkg-config --cflags vibook) "$tmp/core_only.cpp" -o "$tm
     $(pkg-config --libs vibook)
 "$tmp/core_only" || { echo "FAIL: core-only program"; exit 1; }
 pkg-config --exists --print-errors vibook-modified vibook-precision
+
+# 3. The installed command, with its scripts under the prefix: a verify report with its figure.
+[ -x "$prefix/bin/vibook" ] && [ -f "$prefix/share/vibook/figures/verify-report.gp" ] ||
+  { echo "FAIL: vibook or its figure scripts not installed"; exit 1; }
+(cd "$tmp" && "$prefix/bin/vibook" verify --ld '(q1-q0)^2/(2*h) - h*V((q0+q1)/2)' --potential 'x^2/2' \
+   --q0 1 --p0 0 --steps 2048 --report rep >/dev/null) || { echo "FAIL: installed vibook verify"; exit 1; }
+[ -s "$tmp/rep/verify-report.svg" ] || { echo "FAIL: installed vibook drew no figure"; exit 1; }
 echo "install and use: ok"

@@ -27,8 +27,19 @@ std::filesystem::path find_on_path(const std::string& program) {
   return {};
 }
 
+std::filesystem::path installed_path(const std::string& relative) {
+  std::error_code ec;
+  const auto exe = std::filesystem::read_symlink("/proc/self/exe", ec);
+  if (ec || relative.empty()) return {};
+  const auto candidate = exe.parent_path().parent_path() / relative;
+  return std::filesystem::exists(candidate, ec) ? candidate : std::filesystem::path();
+}
+
 std::filesystem::path scripts_dir() {
   if (const char* env = std::getenv("VIBOOK_FIGURES_DIR"); env && *env) return env;
+#ifdef VIBOOK_INSTALL_FIGURES_REL
+  if (auto p = installed_path(VIBOOK_INSTALL_FIGURES_REL); !p.empty()) return p;
+#endif
   return VIBOOK_FIGURES_DIR;
 }
 

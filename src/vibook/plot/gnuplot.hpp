@@ -19,8 +19,13 @@ class PlotError : public std::runtime_error {
 /// Full path of an executable found on PATH, or empty.
 std::filesystem::path find_on_path(const std::string& program);
 
+/// `PREFIX/relative` when this executable runs from an installed `PREFIX/bin/` and that path
+/// exists; empty otherwise.
+std::filesystem::path installed_path(const std::string& relative);
+
 /// Directory that holds the figure scripts (`ID.gp`, `style.gp`): `$VIBOOK_FIGURES_DIR` if set,
-/// else the source tree's figures/ (compiled in).
+/// else the installed copy (`PREFIX/share/vibook/figures`) for an installed `vibook`, else the
+/// source tree's figures/ (compiled in).
 std::filesystem::path scripts_dir();
 
 /// Render figure `id` from the CSV files in `data_dir` to `data_dir/ID.svg` and `.png`.

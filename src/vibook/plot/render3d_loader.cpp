@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "vibook/plot/gnuplot.hpp"
 #include "vibook/plot/render3d.hpp"
 
 namespace vibook::plot {
@@ -24,7 +25,11 @@ const Module& module() {
   static const Module m = [] {
     Module r;
     const char* env = std::getenv("VIBOOK_RENDER_MODULE");
-    const std::string path = env && *env ? env : VIBOOK_RENDER_MODULE_PATH;
+    std::string path = VIBOOK_RENDER_MODULE_PATH;
+#ifdef VIBOOK_INSTALL_MODULE_REL
+    if (auto p = plot::installed_path(VIBOOK_INSTALL_MODULE_REL); !p.empty()) path = p.string();
+#endif
+    if (env && *env) path = env;
     void* handle = ::dlopen(path.c_str(), RTLD_NOW | RTLD_LOCAL);
     if (!handle) {
       const char* why = ::dlerror();
