@@ -27,6 +27,7 @@
 #include "vibook/plot/gnuplot.hpp"
 #include "vibook/verify/expression.hpp"
 #include "vibook/verify/verify.hpp"
+#include "vibook_book_stylesheet.hpp"
 
 namespace vibook::cli {
 
@@ -330,25 +331,28 @@ int run_verify(const VerifyOptions& o, const verify::TypedDiscreteLagrangian& dl
     std::ostringstream html;
     const auto row = [&](const char* what, const std::string& measured,
                          const std::string& criterion, bool passed) {
-      html << "<tr><td>" << what << "</td><td>" << html_escape(measured) << "</td><td>"
-           << html_escape(criterion) << "</td><td class=\"" << (passed ? "yes" : "no") << "\">"
-           << (passed ? "yes" : "no") << "</td></tr>\n";
+      html << "<tr class=\"status-" << (passed ? "reproduced" : "not-reproduced") << "\"><td>"
+           << what << "</td><td>" << html_escape(measured) << "</td><td>" << html_escape(criterion)
+           << "</td><td>" << (passed ? "yes" : "no") << "</td></tr>\n";
     };
+    // The book's own stylesheet (book/vibook.css, compiled in), so that the report's table
+    // reads like the reproduction report: same borders, same status colours.
+    write_output_file((tmp / "vibook.css").string(), std::string(kBookStylesheet), "--report");
     html << "<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\">"
-            "<title>vibook verify</title>\n<style>\n"
-            "body{font-family:'DejaVu Sans',sans-serif;max-width:1100px;margin:2em auto;"
-            "padding:0 1em;color:#222;line-height:1.45}\n"
-            "code,pre{font-family:'DejaVu Sans Mono',monospace;background:#f6f6f6}\n"
-            "pre{padding:.6em;overflow-x:auto}\ntable{border-collapse:collapse}\n"
-            "td,th{border:1px solid #ccc;padding:.3em .6em;text-align:left}\n"
-            ".yes{color:#1e7b34;font-weight:bold}.no{color:#b03a2e;font-weight:bold}\n"
-            "img{max-width:100%}\n</style></head><body>\n"
+            "<meta name=\"viewport\" content=\"width=device-width, initial-scale=1\">"
+            "<title>vibook verify</title>\n<link rel=\"stylesheet\" href=\"vibook.css\">\n"
+            "<style>\nbody{font-family:Roboto,'DejaVu Sans',sans-serif;max-width:1100px;"
+            "margin:2em auto;padding:0 1em;color:#222;line-height:1.45}\n"
+            "code,pre{font-family:'DejaVu Sans Mono',monospace;background:#fbfcfd}\n"
+            "pre{padding:.6em;overflow-x:auto;border:1px solid #c4cfe5}\n"
+            "h1,h2{color:#354c7b}\n</style></head><body>\n"
          << "<h1>vibook verify</h1>\n<p>Discrete Lagrangian <code>" << html_escape(o.ld)
          << "</code>, potential <code>" << html_escape(o.potential) << "</code>, " << N
          << "-dimensional; initial state q0 = ("
          << html_escape(fmt::format("{}", fmt::join(p.q0, ", "))) << "), p0 = ("
          << html_escape(fmt::format("{}", fmt::join(p.p0, ", "))) << ").</p>\n"
-         << "<table><tr><th>property</th><th>measured</th><th>criterion</th><th>holds</th></tr>\n";
+         << "<table class=\"vibook-claims\"><tr><th>property</th><th>measured</th>"
+            "<th>criterion</th><th>holds</th></tr>\n";
     row("order",
         fmt::format("{:.3f} over {} step sizes at T = {:g}", order.order, order.points, p.t_end),
         fmt::format("|p − {:g}| < {:g}", p.expected, p.order_tol), order.passed);

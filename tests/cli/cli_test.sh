@@ -3,6 +3,7 @@
 # figures on disk. Usage: cli_test.sh path/to/vibook
 set -u
 V=$1
+SRC=$(cd "$(dirname "${BASH_SOURCE[0]}")/../.." && pwd)  # the source tree
 # Under ASan/UBSan (VIBOOK_SANITIZED=1, set by CTest in the sanitize preset) the extended-
 # precision runs are shorter.
 SAN=${VIBOOK_SANITIZED:-0}
@@ -200,10 +201,13 @@ for r in rep1 rep2; do
   expect 0 "" -- verify --ld '(q1-q0)^2/(2*h) - h*(V(q0)+V(q1))/2' --potential 'x^2/2+x^4/4' \
     --q0 0.5 --p0 0 --steps 4096 --report "$tmp/$r"
 done
-for f in index.html verify-report.svg verify-report.png convergence.csv energy.csv verify.json; do
+for f in index.html vibook.css verify-report.svg verify-report.png convergence.csv energy.csv verify.json; do
   [ -s "$tmp/rep1/$f" ] && ok || bad "verify --report: $f missing"
 done
 diff -r "$tmp/rep1" "$tmp/rep2" >/dev/null && ok || bad "verify --report: two runs differ"
+# In the book's style: the book's stylesheet beside the page, the verdicts in its claims table.
+cmp -s "$tmp/rep1/vibook.css" "$SRC/book/vibook.css" && grep -q 'table class="vibook-claims"' "$tmp/rep1/index.html" &&
+  ok || bad "verify --report: not in the book's stylesheet"
 [ -z "$(find "$tmp" -maxdepth 1 -name '.*rep*')" ] && ok || bad "verify --report left a temporary"
 # Symplectic Euler typed in (L(q1, v)): first order, symplectic, not symmetric.
 expect 0 "" -- verify --ld '(q1-q0)^2/(2*h) - h*V(q1)' --potential='-cos(x)' --q0 1 --p0 0.5 \
