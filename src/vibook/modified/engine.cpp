@@ -4,6 +4,7 @@
 #include "vibook/modified/engine.hpp"
 
 #include <array>
+#include <cstdio>
 #include <sstream>
 
 #include "vibook/integrators/splitting.hpp"
@@ -12,6 +13,20 @@
 #include "vibook/problems/problems.hpp"
 
 namespace vibook::modified {
+
+void apply_inexact_policy(const SymbolicDL& dl, InexactLiterals policy) {
+  if (dl.inexact_literals.empty() || policy == InexactLiterals::collect) return;
+  if (policy == InexactLiterals::error) {
+    std::string more;
+    if (dl.inexact_literals.size() > 1)
+      more = " (and " + std::to_string(dl.inexact_literals.size() - 1) + " more)";
+    throw ArgumentError("discrete Lagrangian '" + dl.description + "'",
+                        dl.inexact_literals.front() + more);
+  }
+  for (const auto& w : dl.inexact_literals)
+    std::fprintf(stderr, "vibook: warning: discrete Lagrangian '%s': %s\n", dl.description.c_str(),
+                 w.c_str());
+}
 
 using GiNaC::numeric;
 using SubsMap = std::map<ex, Series, GiNaC::ex_is_less>;

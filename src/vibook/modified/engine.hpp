@@ -62,15 +62,28 @@ struct SymbolicDL {
   ex Ld;
   std::string description;
   /// Floating-point numbers met in the template whose exact binary64 value is almost surely
-  /// not the number meant (0.1, 1.0/6): one message each. They are used as they are (the
-  /// integrator computes with the same binary64 values); `vibook modified` and the examples
-  /// print these as warnings. Sorted (GiNaC's traversal order varies from run to run).
+  /// not the number meant (0.1, 1.0/6): one message each, sorted (GiNaC's traversal order
+  /// varies from run to run). What else happens to them is the InexactLiterals policy.
   std::vector<std::string> inexact_literals;
 };
 
+/// What symbolic_dl does when the template holds a floating-point number whose exact binary64
+/// value is almost surely not the number meant (0.1, 1.0/6, a division by 6.0: the symbolic
+/// engine would otherwise derive everything with 6004799503160661/36028797018963968 where the
+/// author meant 1/6).
+enum class InexactLiterals {
+  warn,     ///< default: print each message once to stderr ("vibook: warning: ..."), go on
+  error,    ///< throw ArgumentError naming the template's description and the first literal
+  collect,  ///< only list them in SymbolicDL::inexact_literals (the caller reports them)
+};
+
+/// Apply `policy` to `dl.inexact_literals` (symbolic_dl and symbolic_dl3 call this).
+void apply_inexact_policy(const SymbolicDL& dl, InexactLiterals policy);
+
 /// Evaluate a discrete-Lagrangian template (any callable `dl(q0, q1, h)` generic in its
 /// scalar, as written for the integrators) on GiNaC symbols. Floating-point literals in the
-/// template become the rationals they represent.
+/// template become the rationals they represent; those that are not short binary fractions
+/// (0.5 is, 0.1 and 1.0/6 are not) are warned about, or refused, or listed (`policy`).
 ///
 /// **Comparing two engines.** Each JetSpace makes symbols of its own: x1 of one and x1 of
 /// another print alike but are different GiNaC symbols, so `f - g` of expressions from two
@@ -78,7 +91,8 @@ struct SymbolicDL {
 /// same `jets`), or compare the printed forms with canonical_string (canonical.hpp), which
 /// does not depend on which symbols they are.
 template <int N, class DL>
-SymbolicDL symbolic_dl(const DL& dl, std::shared_ptr<JetSpace> jets, std::string description) {
+SymbolicDL symbolic_dl(const DL& dl, std::shared_ptr<JetSpace> jets, std::string description,
+                       InexactLiterals policy = InexactLiterals::warn) {
   SymbolicDL out;
   out.jets = std::move(jets);
   out.description = std::move(description);
@@ -92,12 +106,14 @@ SymbolicDL symbolic_dl(const DL& dl, std::shared_ptr<JetSpace> jets, std::string
   const ex h = out.jets->h();
   out.Ld = exact_rationals(dl(a, b, h), &out.inexact_literals);
   std::sort(out.inexact_literals.begin(), out.inexact_literals.end());  // not GiNaC's order
+  apply_inexact_policy(out, policy);
   return out;
 }
 
 /// The same for a three-point discrete Lagrangian `dl(q0, qm, q1, h)`.
 template <int N, class DL>
-SymbolicDL symbolic_dl3(const DL& dl, std::shared_ptr<JetSpace> jets, std::string description) {
+SymbolicDL symbolic_dl3(const DL& dl, std::shared_ptr<JetSpace> jets, std::string description,
+                        InexactLiterals policy = InexactLiterals::warn) {
   SymbolicDL out;
   out.jets = std::move(jets);
   out.description = std::move(description);
@@ -113,6 +129,7 @@ SymbolicDL symbolic_dl3(const DL& dl, std::shared_ptr<JetSpace> jets, std::strin
   const ex h = out.jets->h();
   out.Ld = exact_rationals(dl(a, m, b, h), &out.inexact_literals);
   std::sort(out.inexact_literals.begin(), out.inexact_literals.end());  // not GiNaC's order
+  apply_inexact_policy(out, policy);
   return out;
 }
 

@@ -55,13 +55,27 @@ TEST_CASE(
   };
   const auto a = symbolic_dl<1>(exact, std::make_shared<JetSpace>(1), "exact");
   CHECK(a.inexact_literals.empty());
-  CHECK(vanishes(a.Ld.expand().coeff(a.q0[0], 2).subs(a.jets->h() == 1) - (numeric(1, 2) - numeric(1, 6))));
-  const auto b = symbolic_dl<1>(inexact, std::make_shared<JetSpace>(1), "inexact");
+  CHECK(vanishes(a.Ld.expand().coeff(a.q0[0], 2).subs(a.jets->h() == 1) -
+                 (numeric(1, 2) - numeric(1, 6))));
+  const auto b =
+      symbolic_dl<1>(inexact, std::make_shared<JetSpace>(1), "inexact", InexactLiterals::collect);
   // GiNaC folds the floating-point factors as it builds the expression: the numbers reported
   // are the ones in the result (such as 2 · (1.0/6)), each once, sorted.
   CHECK_FALSE(b.inexact_literals.empty());
   for (const auto& w : b.inexact_literals) CHECK(w.find("binary64 value") != std::string::npos);
   CHECK(std::is_sorted(b.inexact_literals.begin(), b.inexact_literals.end()));
+  // Refused on request: one message naming the template and the first literal.
+  try {
+    symbolic_dl<1>(inexact, std::make_shared<JetSpace>(1), "inexact", InexactLiterals::error);
+    FAIL("an inexact literal was accepted under InexactLiterals::error");
+  } catch (const vibook::ArgumentError& e) {
+    const std::string what = e.what();
+    CHECK(what.find("discrete Lagrangian 'inexact'") == 0);
+    CHECK(what.find("binary64 value") != std::string::npos);
+    CHECK(what.find(" more)") != std::string::npos);
+  }
+  CHECK_NOTHROW(
+      symbolic_dl<1>(exact, std::make_shared<JetSpace>(1), "exact", InexactLiterals::error));
   // Built-in discrete Lagrangians write only binary fractions.
   for (auto m : {Method::sv, Method::midpoint, Method::vi2})
     CHECK(make_discrete_lagrangian(m, Potential::kepler, 2).inexact_literals.empty());
