@@ -330,6 +330,23 @@ class ExtendedDelIntegrator {
   }
   T last_step() const { return last_dt_; }
 
+  /// What a step remembers of the earlier ones: the last two steps (for the prediction), the
+  /// last increment q_{k+1} − q_k (Newton's start), the Kahan compensation of t and the
+  /// start-up energy E_1. A faster stepper for a special class of L_d (epavi/mechanical.hpp)
+  /// hands a step it cannot take over to this integrator through set_history.
+  struct History {
+    T last_dt = T(0), prev_dt = T(0), t_compensation = T(0), E_start = T(0);
+    VecN increment = VecN::Zero();
+  };
+  History history() const { return {last_dt_, prev_dt_, t_compensation_, E_start_, increment_}; }
+  void set_history(const History& h) {
+    last_dt_ = h.last_dt;
+    prev_dt_ = h.prev_dt;
+    t_compensation_ = h.t_compensation;
+    E_start_ = h.E_start;
+    increment_ = h.increment;
+  }
+
   /// Residuals of the two-step equations (11) (N components) and (12) (last component) at
   /// (t_{k−1}, q_{k−1}), (t_k, q_k), (t_{k+1}, q_{k+1}):
   ///   D4 L_d(k−1, k) + D2 L_d(k, k+1)   and   D3 L_d(k−1, k) + D1 L_d(k, k+1).

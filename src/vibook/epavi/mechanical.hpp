@@ -1,0 +1,311 @@
+/// \file mechanical.hpp
+/// \brief EpAVI in closed form for mechanical Lagrangians L = ½|v|² − V(q): Sharma et al.
+/// 2022, the time-marching form (15)–(18) of the midpoint extended discrete Lagrangian (25),
+/// with every derivative written out from ∇V and ∇²V, a Newton iteration on the step Δt whose
+/// derivative comes from the implicit function theorem, and a discrete energy whose per-step
+/// error has no preferred sign.
+///
+/// The generic path (EpAVI, mechanics/extended.hpp) differentiates any extended discrete
+/// Lagrangian by nested AutoDiff and finds Δt by a secant and bracket search; it stays the
+/// reference, and this stepper hands it any step it cannot take itself.
+///
+/// **The equations, written out.** With τ = t_{k+1} − t_k, Δq = q_{k+1} − q_k,
+/// q̄ = (q_k + q_{k+1})/2, G = ∇V(q̄), H = ∇²V(q̄), (25) is
+///   L_d = |Δq|²/(2τ) − τ V(q̄),
+/// and (15)–(18) become
+///   (15) Δq + (τ²/2) G − τ p_k = 0                 (the momentum equation times τ)
+///   (16) g(τ) = |Δq|²/(2τ²) + V(q̄) − E_k = 0
+///   (17) p_{k+1} = Δq/τ − (τ/2) G
+///   (18) E_{k+1} = |Δq|²/(2τ²) + V(q̄)              (= E_k + g: (16) telescopes exactly)
+/// (15) is solved for q_{k+1}(τ) by Newton with A = I + (τ²/4) H. Differentiating (15) and (16)
+/// along q_{k+1}(τ) and using (15) to cancel the terms of order 1/τ gives, with u = Δq/τ,
+///   dg/dτ = −(τ/4) (uᵀ A⁻¹ H u + Gᵀ A⁻¹ G),
+/// so Newton on (16) needs no secant and no nested AutoDiff.
+///
+/// **Why a second phase.** q_{k+1} is rounded to T: one unit in its last place changes g by
+/// about |u|/τ · ulp(q), far more than the explicit τ-dependence ∂g/∂τ = −|u|²/τ moves it per
+/// unit of τ. As a function of the rounded τ, g is a saw-tooth around its smooth mean, and the
+/// zero of the mean is known only to the height of a tooth. Newton with dg/dτ brings the mean
+/// to zero (phase 1). Then q_{k+1} stays the representable point found and τ alone moves, by
+/// Newton with ∂g/∂τ (phase 2), to the representable τ nearest the zero of (16): a move of
+/// the order of the rounding of q_{k+1}, so (15) still holds to that order (its residual is
+/// reported). g is evaluated in a wider type (long double for double), so the residual left is
+/// set by the spacing of representable τ and is as often positive as negative: the discrete
+/// energy E_k performs a random walk (Brouwer's law) instead of drifting.
+/// Options::tol is honoured as in the generic path: phase 1 stops as soon as |g| <= tol·|E_k|;
+/// with a tol looser than the default (4 units of round-off) that ends the step, so a loose tol
+/// leaves residuals up to tol·|E_k| (Sharma's Fig. 5); at the default, phase 2 always runs.
+#pragma once
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+
+#include "vibook/core/autodiff.hpp"
+#include "vibook/core/errors.hpp"
+#include "vibook/core/format.hpp"
+#include "vibook/core/scalar.hpp"
+#include "vibook/core/types.hpp"
+#include "vibook/epavi/epavi.hpp"
+
+namespace vibook {
+
+/// The type in which the energy equation is evaluated: long double for double (64-bit
+/// significand on x86-64), the type itself otherwise.
+template <class T>
+struct WiderScalar {
+  using type = T;
+};
+template <>
+struct WiderScalar<double> {
+  using type = long double;
+};
+
+/// EpAVI for a mechanical problem L = ½|v|² − V(q) whose potential and gradient are templated
+/// on the scalar (`potential(q)`, `gradient(q)`), computed in T. Same options, state, start-up
+/// and reports as EpAVI<Problem, T>; the two give the same trajectory to the conditioning of
+/// (16) (epavi_test.cpp).
+template <class Problem, class T = double>
+class MechanicalEpAVI {
+ public:
+  static constexpr int N = Problem::N;
+  using Reference = EpAVI<Problem, T>;
+  using State = ExtendedState<N, T>;
+  using Options = typename Reference::Options;
+  using VecN = Vec<T, N>;
+  using MatN = Mat<T, N>;
+  using W = typename WiderScalar<T>::type;
+  using VecW = Vec<W, N>;
+
+  explicit MechanicalEpAVI(Problem P, Options options = {})
+      : P_(P), reference_(P, options), options_(reference_.integrator().options()) {
+    u_ = unit_roundoff<T>();
+  }
+
+  const Options& options() const { return options_; }
+  /// Steps handed to the generic path so far (no Newton convergence near the predicted step).
+  long long fallbacks() const { return fallbacks_; }
+
+  /// The generic path, with what each step remembers of the earlier ones (to take the same
+  /// step both ways from one state: `generic().set_history(history())`).
+  using History = typename Reference::Integrator::History;
+  History history() const { return {last_dt_, prev_dt_, t_compensation_, E_start_, increment_}; }
+  typename Reference::Integrator& generic() { return reference_.integrator(); }
+
+  /// Start from (t0, q0) with the first step to (t0 + h0, q1): p1 by (17), E1 by (18).
+  State start(const T& t0, const VecN& q0, const T& h0, const VecN& q1) {
+    const VecN dq = q1 - q0;
+    const VecN G = P_.gradient(VecN((q0 + q1) * constant<T>(0.5)));
+    State s;
+    s.t = t0 + h0;
+    s.q = q1;
+    s.p = dq / h0 - G * T(h0 * constant<T>(0.5));
+    s.E = T(energy(q0, q1, h0));
+    E_start_ = s.E;
+    have_hessian_ = false;
+    prev_dt_ = T(0);
+    last_dt_ = h0;
+    increment_ = dq;
+    t_compensation_ = T(0);
+    return s;
+  }
+
+  /// One step of (15)–(18). Throws SolveError as EpAVI::step does.
+  ExtendedStepReport step(State& s) {
+    ExtendedStepReport rep;
+    const State k = s;
+    const T target = options_.energy_target == EnergyTarget::previous ? k.E : E_start_;
+    const W targetW = W(target);
+    // The predicted step, as in the generic path: Δt_{k−1}²/Δt_{k−2}, ratio clamped to [½, 2].
+    T center = last_dt_;
+    if (prev_dt_ > T(0)) center = last_dt_ * std::clamp(T(last_dt_ / prev_dt_), T(0.5), T(2));
+
+    T tau = center;
+    VecN x = k.q + increment_ * T(tau / last_dt_);
+    VecN G;
+    // The Newton matrix of (15) starts from the Hessian of the previous step: A changes by
+    // O(τ³) from step to step, which only slows the contraction of (15) negligibly.
+    if (!have_hessian_) H_ = hessian(VecN((k.q + x) * constant<T>(0.5))), have_hessian_ = true;
+    MatN Ainv = inverse_newton_matrix(H_, tau);
+    W gW(0);
+    auto evaluate = [&]() {
+      rep.momentum_residual = solve_momentum(k, tau, Ainv, x, G, rep.newton_iterations);
+      ++rep.root_iterations;
+      gW = energy(k.q, x, tau) - targetW;
+    };
+    using std::abs;
+    // [epavi-closed-form-step]
+    // Phase 1: Newton on (16) with the total derivative dg/dτ.
+    bool converged = false;
+    for (int it = 0; it < kMaxPhase1; ++it) {
+      try {
+        evaluate();
+      } catch (const SolveError&) {
+        break;  // (15) not solved at this trial step: the generic path searches instead
+      }
+      if (!is_finite(gW)) break;
+      if (abs(gW) <= floor(k, x, tau, G, target)) {
+        converged = true;
+        break;
+      }
+      H_ = hessian(VecN((k.q + x) * constant<T>(0.5)));
+      Ainv = inverse_newton_matrix(H_, tau);
+      const VecN v = (x - k.q) / tau;
+      const VecN AHv = Ainv * VecN(H_ * v), AG = Ainv * G;
+      const T dg = -tau * constant<T>(0.25) * (v.dot(AHv) + G.dot(AG));
+      const T next = tau - T(gW) / dg;
+      if (!is_finite(next) || !(next > center / T(2) && next < center * T(2))) break;
+      x = k.q + (x - k.q) * T(next / tau);
+      tau = next;
+    }
+    if (!converged) return fall_back(s, rep);
+    // Phase 2: q_{k+1} stays the representable point found; τ alone moves, by Newton with
+    // ∂g/∂τ = −|Δq|²/τ³, to the representable τ nearest the zero of (16). The move is of the
+    // order of the rounding of q_{k+1} (|δτ| ≈ ulp(q)/|Δq/τ|), so (15) stays satisfied to the
+    // same order; its residual is measured again below.
+    // A tolerance looser than the default, once met, ends the step here. Otherwise phase 2
+    // always runs: where phase 1 stops, Newton has approached the zero from one side, and a
+    // residual left there would carry that side's sign into E_{k+1}.
+    const bool loose = options_.tol > 4 * to_double(u_) * (1 + 1e-9);
+    if (!(loose && abs(gW) <= W(options_.tol) * abs(targetW))) {
+      const VecW dq = widen(x) - widen(k.q);
+      const W kinetic2 = dq.squaredNorm(), rest = gW - kinetic2 / (W(2.0) * W(tau) * W(tau));
+      for (int it = 0; it < kMaxPhase2; ++it) {
+        const W tw = W(tau);
+        const T next = T(tw + gW * tw * tw * tw / kinetic2);
+        if (next == tau || !is_finite(next)) break;
+        tau = next;
+        gW = kinetic2 / (W(2.0) * W(tau) * W(tau)) + rest;
+      }
+    }
+    // (17)–(18) at the chosen point.
+    const VecN dq = x - k.q;
+    G = P_.gradient(VecN((k.q + x) * constant<T>(0.5)));
+    rep.energy_residual = std::abs(to_double(T(gW)));
+    rep.momentum_residual = to_double(T(
+        (dq + G * T(tau * tau * constant<T>(0.5)) - k.p * tau).template lpNorm<Eigen::Infinity>() /
+        tau));
+    prev_dt_ = last_dt_;
+    last_dt_ = tau;
+    increment_ = dq;
+    const T y = tau - t_compensation_;  // Kahan: t_{k+1} = t_k + τ, compensated
+    const T t1 = k.t + y;
+    t_compensation_ = (t1 - k.t) - y;
+    s.t = t1;
+    s.q = x;
+    s.p = dq / tau - G * T(tau * constant<T>(0.5));
+    s.E = T(targetW + gW);
+    return rep;
+    // [epavi-closed-form-step]
+  }
+
+  /// (18) in the wide type: |Δq|²/(2τ²) + V(q̄), the discrete energy of the step q0 → q1.
+  W energy(const VecN& q0, const VecN& q1, const T& tau) const {
+    const VecW a = widen(q0), b = widen(q1);
+    const W tw = W(tau);
+    return (b - a).squaredNorm() / (W(2.0) * tw * tw) +
+           P_.potential(VecW((a + b) * constant<W>(0.5)));
+  }
+
+ private:
+  static constexpr int kMaxPhase1 = 30;
+  static constexpr int kMaxPhase2 = 8;
+
+  static VecW widen(const VecN& v) {
+    VecW w;
+    for (int i = 0; i < N; ++i) w(i) = W(v(i));
+    return w;
+  }
+  static bool is_finite(const W& w) { return ScalarTraits<W>::is_finite(w); }
+
+  /// ∇²V(x) by one level of forward AutoDiff on the problem's gradient.
+  MatN hessian(const VecN& x) const {
+    using D = ad::Dual<N, T>;
+    Vec<D, N> y;
+    for (int i = 0; i < N; ++i) y(i) = D(x(i), N, i);
+    const Vec<D, N> g = P_.gradient(y);
+    MatN H;
+    for (int i = 0; i < N; ++i) H.row(i) = g(i).derivatives().transpose();
+    return H;
+  }
+
+  /// A⁻¹ for A = I + (τ²/4) H: A is I plus a small perturbation wherever (15) is solvable at
+  /// all, so the explicit inverse (closed-form cofactors for N <= 4 in Eigen) is accurate and
+  /// far cheaper than a pivoted factorization of a 2×2 system.
+  static MatN inverse_newton_matrix(const MatN& H, const T& tau) {
+    return MatN(MatN::Identity() + H * T(tau * tau * constant<T>(0.25))).inverse();
+  }
+
+  /// (15) for q_{k+1} = x at step τ: Newton with the Jacobian A held fixed (A differs from the
+  /// exact Jacobian by O(τ²) changes of ∇²V, so the iteration contracts by far more than a
+  /// Newton step needs). Returns |p_k + D2 L_d|_inf; G is ∇V at the last midpoint used.
+  double solve_momentum(const State& k, const T& tau, const MatN& Ainv, VecN& x, VecN& G,
+                        int& iterations) const {
+    const T half_tau2 = tau * tau * constant<T>(0.5);
+    for (int it = 1; it <= options_.max_newton_iterations; ++it) {
+      G = P_.gradient(VecN((k.q + x) * constant<T>(0.5)));
+      const VecN F = (x - k.q) + G * half_tau2 - k.p * tau;
+      const VecN dx = Ainv * F;
+      x -= dx;
+      ++iterations;
+      using std::abs;
+      const T scale = (x - k.q).template lpNorm<Eigen::Infinity>();
+      bool small = true;
+      for (int i = 0; i < N; ++i) {
+        if (!ScalarTraits<T>::is_finite(dx(i)) || !ScalarTraits<T>::is_finite(x(i)))
+          throw SolveError(
+              "EpAVI step at t = " + text::g(to_double(k.t), 17) +
+                  ": the momentum equation (15) gave a non-finite value at step " +
+                  text::g(to_double(tau), 17),
+              SolveReport{to_double(T(F.template lpNorm<Eigen::Infinity>())), iterations, false});
+        if (abs(dx(i)) > T(2) * u_ * std::max({abs(x(i)), abs(k.q(i)), scale})) small = false;
+      }
+      if (small) return to_double(T(F.template lpNorm<Eigen::Infinity>() / tau));
+    }
+    throw SolveError("EpAVI step at t = " + text::g(to_double(k.t), 17) +
+                         ": the momentum equation (15) did not converge in " +
+                         std::to_string(options_.max_newton_iterations) + " iterations at step " +
+                         text::g(to_double(tau), 17),
+                     SolveReport{0, iterations, false});
+  }
+
+  /// Where phase 1 stops: the height of a tooth of g (what rounding q_{k+1} to T moves it by)
+  /// plus the energy's own round-off, or tol·|E_k| if that is larger.
+  W floor(const State& k, const VecN& x, const T& tau, const VecN& G, const T& target) const {
+    using std::abs;
+    T f(0);
+    for (int i = 0; i < N; ++i) {
+      const T dgdq = abs(T((x(i) - k.q(i)) / (tau * tau) + G(i) * constant<T>(0.5)));
+      f += dgdq * u_ * std::max(abs(x(i)), abs(T(x(i) - k.q(i))));
+    }
+    f = std::max(T(T(2) * f + u_ * abs(target)), T(T(options_.tol) * abs(target)));
+    return W(f);
+  }
+
+  ExtendedStepReport fall_back(State& s, ExtendedStepReport rep) {
+    ++fallbacks_;
+    auto& gen = reference_.integrator();
+    gen.set_history(history());
+    ExtendedStepReport r = reference_.step(s);
+    const auto h = gen.history();
+    prev_dt_ = h.prev_dt;
+    last_dt_ = h.last_dt;
+    t_compensation_ = h.t_compensation;
+    increment_ = h.increment;
+    r.root_iterations += rep.root_iterations;
+    r.newton_iterations += rep.newton_iterations;
+    return r;
+  }
+
+  Problem P_;
+  Reference reference_;
+  Options options_;
+  T u_;
+  long long fallbacks_ = 0;
+  MatN H_ = MatN::Zero();  ///< ∇²V at the last midpoint where dg/dτ was needed
+  bool have_hessian_ = false;
+  T E_start_ = T(0), last_dt_ = T(0), prev_dt_ = T(0), t_compensation_ = T(0);
+  VecN increment_ = VecN::Zero();
+};
+
+}  // namespace vibook
