@@ -23,6 +23,7 @@
 #include "vibook/core/precision.hpp"
 #include "vibook/core/recorder.hpp"
 #include "vibook/epavi/epavi.hpp"
+#include "vibook/epavi/mechanical.hpp"
 #include "vibook/integrators/kernels.hpp"
 #include "vibook/integrators/splitting.hpp"
 #include "vibook/kepler/kepler.hpp"
@@ -39,7 +40,7 @@ namespace {
 // own conversions accept an empty value as "not given" and drop empty list elements.
 struct RunOptions {
   std::string problem, method, discrete_lagrangian = "midpoint", csv;
-  std::string precision = "double", energy_target = "previous";
+  std::string precision = "double", energy_target = "previous", solver = "closed-form";
   std::string h_text, t_end_text, periods_text, e_text, c_text, tau_end_text, h0_text, tol_text,
       alpha_text, digits_text, every_text, q0_text, p0_text;
   // Parsed and checked:
@@ -381,27 +382,37 @@ int integrate_adaptive_kepler(const RunOptions& o) {
         opt.tol = o.tol.value_or(0.0);
         opt.energy_target =
             o.energy_target == "initial" ? EnergyTarget::initial : EnergyTarget::previous;
-        EpAVI<Kepler, T> m{Kepler{}, opt};
         auto lift = [](const Vec<double, 2>& v) { return Vec<T, 2>(T(v(0)), T(v(1))); };
         auto down = [](const Vec<T, 2>& v) {
           return Vec<double, 2>(to_double(v(0)), to_double(v(1)));
         };
-        auto s = m.start(T(0), lift(s0.q), T(h0), lift(orbit.at(h0).q));
-        const T E1 = s.E;
-        // The momentum at t0 from the discrete Legendre transform of the first step.
-        offer(0, 0.0, 0.0, s0.q, s0.p, to_double(s.E), 0.0, 0.0, 0);
-        k = 1;
-        offer(1, to_double(s.t), h0, down(s.q), down(s.p), to_double(s.E), 0.0, 0.0, 0);
-        while (s.t < T(Tend)) {
-          const T t0 = s.t;
-          t_before = to_double(s.t), q_before = down(s.q), p_before = down(s.p);
-          const ExtendedStepReport r = m.step(s);
-          ++k;
-          check_finite(to_double(s.t), down(s.q), down(s.p));
-          if (rec.due(k) || s.t >= T(Tend))
-            offer(k, to_double(s.t), to_double(T(s.t - t0)), down(s.q), down(s.p), to_double(s.E),
-                  to_double(T(s.E - E1)), r.energy_residual, r.root_iterations);
-          progress.update(k);
+        // --solver: the closed form for L = ½|v|² − V (epavi/mechanical.hpp) or the generic
+        // nested-AutoDiff path (mechanics/extended.hpp); the same equations (15)–(18).
+        auto go = [&](auto& m) {
+          auto s = m.start(T(0), lift(s0.q), T(h0), lift(orbit.at(h0).q));
+          const T E1 = s.E;
+          // The momentum at t0 from the discrete Legendre transform of the first step.
+          offer(0, 0.0, 0.0, s0.q, s0.p, to_double(s.E), 0.0, 0.0, 0);
+          k = 1;
+          offer(1, to_double(s.t), h0, down(s.q), down(s.p), to_double(s.E), 0.0, 0.0, 0);
+          while (s.t < T(Tend)) {
+            const T t0 = s.t;
+            t_before = to_double(s.t), q_before = down(s.q), p_before = down(s.p);
+            const ExtendedStepReport r = m.step(s);
+            ++k;
+            check_finite(to_double(s.t), down(s.q), down(s.p));
+            if (rec.due(k) || s.t >= T(Tend))
+              offer(k, to_double(s.t), to_double(T(s.t - t0)), down(s.q), down(s.p), to_double(s.E),
+                    to_double(T(s.E - E1)), r.energy_residual, r.root_iterations);
+            progress.update(k);
+          }
+        };
+        if (o.solver == "generic") {
+          EpAVI<Kepler, T> m{Kepler{}, opt};
+          go(m);
+        } else {
+          MechanicalEpAVI<Kepler, T> m{Kepler{}, opt};
+          go(m);
         }
         return 0;
       });
@@ -433,7 +444,7 @@ int integrate_adaptive_kepler(const RunOptions& o) {
     // EpAVI's "no admissible time step" names its time and state itself.
     const std::string what = e.what();
     const std::string where =
-        what.starts_with("extended step at t =")
+        what.starts_with("extended step at t =") || what.starts_with("EpAVI step at t =")
             ? fmt::format("(step {})", k + 1)
             : fmt::format("at step {} (t = {:.17g}), from {}", k + 1, t_before,
                           state_text(q_before.data(), p_before.data(), N));
@@ -525,6 +536,11 @@ std::function<int()> add_run_command(CLI::App& app) {
                   "epavi: solve the energy equation for the previous step's E_k (previous, the "
                   "paper) or always for E_1 (initial)")
       ->check(CLI::IsMember({"previous", "initial"}));
+  run->add_option("--solver", o->solver,
+                  "epavi: closed-form (default: derivatives of (25) written out for "
+                  "L = |v|^2/2 - V, Newton on the step, unbiased energy residual) or generic "
+                  "(nested AutoDiff of any extended L_d, secant and bracket search; the reference)")
+      ->check(CLI::IsMember({"closed-form", "generic"}));
   run->add_option("--alpha", o->alpha_text,
                   "vi1/vi2 on kepler: split φ^[1] = αφ, φ^[2] = (1−α)φ (default 0.5, the paper's)");
   run->add_option("--c", o->c_text, "relativistic-kepler: the speed of light (required)");
@@ -583,6 +599,7 @@ std::function<int()> add_run_command(CLI::App& app) {
     require(epavi || !given("--tol"), "--tol",
             "applies to epavi only (the other implicit methods use Newton at 4 ulp)");
     require(epavi || !given("--energy-target"), "--energy-target", "applies to epavi only");
+    require(epavi || !given("--solver"), "--solver", "applies to epavi only");
     require(epavi || o->precision == "double", "--precision",
             "only epavi is templated on the scalar; the other methods run in double");
     require(!o->digits || o->precision == "mpfr", "--digits", "applies to --precision mpfr only");
