@@ -18,19 +18,20 @@ TEST_CASE("sharma-fig1 and sharma-fig2: EpAVI against AVI1/AVI2, measured") {
   // Mean steps as printed in the text of Fig. 3 (S-F3).
   CHECK(m1.status == claims::Status::reproduced_with_caveat);
   CHECK(m2.status == claims::Status::reproduced_with_caveat);
-  // e = 0.1: steps and AVI energy errors as claimed; EpAVI's discrete energy error accumulates
-  // beyond the claimed ~1e-14 over 10 periods, so S-F1 is not reproduced as stated.
+  // e = 0.1: steps and AVI energy errors as claimed; EpAVI's discrete energy error stays at the
+  // claimed ~1e-14 over 10 periods (the closed-form stepper's residuals have no preferred sign;
+  // the generic path's accumulated 4.4e-12 here, see the chapter).
   CHECK(std::abs(s1.value("avi1_mean_step_over_h0") / s1.value("epavi_mean_step_over_h0") - 1) <=
         0.1);
   CHECK(s1.value("avi1_max_energy_err") >= 1e-8);
   CHECK(s1.value("avi1_max_energy_err") <= 1e-6);
   CHECK(s1.value("epavi_final_trajectory_err") < s1.value("avi1_final_trajectory_err"));
-  CHECK(s1.value("epavi_max_energy_err") > 1e-12);
-  CHECK(s1.status == claims::Status::not_reproduced);
+  CHECK(s1.value("epavi_max_energy_err") <= 1e-13);
+  CHECK(s1.status == claims::Status::reproduced_with_caveat);
   // e = 0.7: AVI2's steps grow ((1+e)/(1−e))² = 32× by construction of g2, not 12–15×.
   CHECK(std::abs(s2.value("avi2_max_step_over_h0") - std::pow(1.7 / 0.3, 2)) <= 0.1);
   CHECK(s2.value("epavi_max_step_over_h0") >= 12);
   CHECK(s2.value("epavi_max_step_over_h0") <= 15);
-  CHECK(s2.value("epavi_max_energy_err") <= 1e-11);
+  CHECK(s2.value("epavi_max_energy_err") <= 1e-13);
   CHECK(s2.status == claims::Status::not_reproduced);
 }

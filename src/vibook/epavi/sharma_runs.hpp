@@ -16,6 +16,7 @@
 #include "vibook/core/precision.hpp"
 #include "vibook/core/recorder.hpp"
 #include "vibook/epavi/epavi.hpp"
+#include "vibook/epavi/mechanical.hpp"
 #include "vibook/kepler/kepler.hpp"
 
 namespace vibook::checks {
@@ -45,6 +46,8 @@ inline const std::vector<std::string>& adaptive_columns() {
 
 /// EpAVI in precision T from the perihelion of the orbit with eccentricity e, first step h0
 /// from the exact solution, until t ≥ t_end. A SolveError ends the run (recorded, not thrown).
+/// The studies run the closed-form stepper (epavi/mechanical.hpp); it takes the generic path's
+/// options and hands it any step it cannot take.
 template <class T>
 AdaptiveRun run_epavi(double e, double h0, double t_end, typename EpAVI<Kepler, T>::Options opt,
                       std::ostream* csv = nullptr, std::int64_t every = 1) {
@@ -52,7 +55,7 @@ AdaptiveRun run_epavi(double e, double h0, double t_end, typename EpAVI<Kepler, 
   const State<2> s0 = kepler_perihelion_state(e);
   const double H0 = energy(Kepler{}, s0.q, s0.p);
   auto lift = [](const Vec<double, 2>& v) { return Vec<T, 2>(T(v(0)), T(v(1))); };
-  EpAVI<Kepler, T> m{Kepler{}, opt};
+  MechanicalEpAVI<Kepler, T> m{Kepler{}, opt};
   auto s = m.start(T(0), lift(s0.q), T(h0), lift(orbit.at(h0).q));
   const T E1 = s.E;
   std::optional<TrajectoryRecorder> rec;

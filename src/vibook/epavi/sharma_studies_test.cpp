@@ -2,6 +2,7 @@
 // sharma-fig4 sharma-fig5 epavi-existence` and the checks of `vibook claims`. Each asserts the
 // measured status and the numbers its criterion rests on (criteria: in sharma_studies.cpp).
 #include <cmath>
+#include <string>
 
 #include <doctest/doctest.h>
 
@@ -48,9 +49,20 @@ TEST_CASE("sharma-fig5: 18-digit MPFR, drift against the solver tolerance") {
   // The trend holds (drift falls with the tolerance) ...
   CHECK(r[0].value("tol_1e-17_max_dE_d") < r[0].value("tol_1e-10_max_dE_d") * 1e-5);
   CHECK(r[0].value("max_rel_change_of_mean_step") <= 1e-4);
-  // ... but not conservation "up to precision": residuals well above 10 u|E| at 1e-17.
-  CHECK(r[0].value("tol_1e-17_max_residual") > 10 * r[0].value("mpfr18_unit_roundoff") * 0.5);
-  CHECK(r[0].status == claims::Status::not_reproduced);
+  // At 1e-17 the residuals are at the round-off of evaluating (16) in 18 digits, whose terms
+  // reach |v|²/2 + 1/r ≈ 6 near perihelion at e = 0.7: a few tens of u|E| at most.
+  const double uE = r[0].value("mpfr18_unit_roundoff") * 0.5;
+  CHECK(r[0].value("tol_1e-17_max_residual") <= 64 * uE);
+  // The status is the verdict of the criterion fixed in sharma_studies.cpp, whichever it is.
+  bool monotone = true;
+  const char* tols[] = {"1e-10", "1e-12", "1e-14", "1e-16", "1e-17"};
+  for (int i = 1; i < 5; ++i)
+    monotone = monotone && r[0].value(std::string("tol_") + tols[i] + "_max_dE_d") <
+                               r[0].value(std::string("tol_") + tols[i - 1] + "_max_dE_d");
+  const bool met = monotone && r[0].value("tol_1e-17_max_residual") <= 10 * uE &&
+                   r[0].value("max_rel_change_of_mean_step") <= 1e-4;
+  CHECK(r[0].status ==
+        (met ? claims::Status::reproduced_with_caveat : claims::Status::not_reproduced));
 }
 
 TEST_CASE("epavi-existence: EpAVI fails with a typed error where no step exists") {
@@ -94,14 +106,15 @@ TEST_CASE("check-s-eq29: accumulated discrete-energy error over 1e6 steps agains
 }
 
 TEST_CASE("sharma-eq29-long: the long study's machinery, at 1e-3 of its length") {
-  // The study itself (1e7 steps) runs in the book build only; this checks that it runs, fits
-  // β and records the claim, on short runs.
+  // The study itself (1e8 steps in double) runs in the book build only; this checks that it
+  // runs, fits β and records the claim, on short runs.
   const auto r = checks::run_eq29_long({}, 1e-3);
   REQUIRE(r.size() == 1);
   INFO(r[0].note);
   CHECK(r[0].id == "S-EQ29");
-  CHECK(r[0].value("double_steps") == 10000);
-  CHECK(r[0].value("double_absolute_time_steps") == 10000);
+  CHECK(r[0].value("double_steps") == 100000);
+  CHECK(r[0].value("double_generic_steps") == 10000);
+  CHECK(r[0].value("double_generic_absolute_time_steps") == 10000);
   CHECK(std::isfinite(r[0].value("double_beta")));
   CHECK(r[0].value("quad_final_abs_dE_d") < 1e-25);
   CHECK(r[0].status == claims::Status::reproduced);
