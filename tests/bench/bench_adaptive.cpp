@@ -1,12 +1,15 @@
-// EpAVI (five precisions), AVI1, AVI2 and Störmer–Verlet on Kepler e = 0.7, h0 = h = 1e-3, from
-// perihelion: nanoseconds per step and solver iterations per step (root-finder evaluations
-// for EpAVI, Newton iterations for AVI). Each iteration runs kSteps steps from the start. The
-// ratios (EpAVI / SV step, each precision / double EpAVI) are computed by bench_table.py.
+// EpAVI (closed form, epavi/mechanical.hpp, and the generic nested-AutoDiff path, in five
+// precisions), AVI1, AVI2, the implicit midpoint rule (the implicit baseline) and
+// Störmer–Verlet on Kepler e = 0.7, h0 = h = 1e-3, from perihelion: nanoseconds per step and
+// solver iterations per step (evaluations of the energy equation for EpAVI, Newton iterations
+// for AVI and midpoint). Each iteration runs kSteps steps from the start. The ratios (each /
+// SV step, each precision / double EpAVI) are computed by bench_table.py.
 #include <benchmark/benchmark.h>
 
 #include "vibook/avi/avi.hpp"
 #include "vibook/core/precision.hpp"
 #include "vibook/epavi/epavi.hpp"
+#include "vibook/epavi/mechanical.hpp"
 #include "vibook/integrators/kernels.hpp"
 #include "vibook/kepler/kepler.hpp"
 
@@ -23,7 +26,7 @@ void counters(benchmark::State& state, double iterations) {
       iterations / (double(kSteps) * double(state.iterations()));
 }
 
-template <class T>
+template <class T, template <class, class> class Stepper = vibook::EpAVI>
 void BM_epavi(benchmark::State& state) {
   std::optional<vibook::MpfrDigits> digits;
   if constexpr (std::is_same_v<T, vibook::mpfr_real>) digits.emplace(18);
@@ -32,7 +35,7 @@ void BM_epavi(benchmark::State& state) {
   const auto q1 = orbit.at(kH0).q;
   double its = 0;
   for (auto _ : state) {
-    vibook::EpAVI<vibook::Kepler, T> m{vibook::Kepler{}};
+    Stepper<vibook::Kepler, T> m{vibook::Kepler{}};
     auto s = m.start(T(0), vibook::Vec<T, 2>(T(s0.q(0)), T(s0.q(1))), T(kH0),
                      vibook::Vec<T, 2>(T(q1(0)), T(q1(1))));
     for (int k = 0; k < kSteps; ++k) its += m.step(s).root_iterations;
@@ -75,9 +78,27 @@ void BM_sv_e07(benchmark::State& state) {
   counters(state, 0);
 }
 
+void BM_midpoint_e07(benchmark::State& state) {
+  const auto s0 = vibook::kepler_perihelion_state(kE);
+  double its = 0;
+  for (auto _ : state) {
+    vibook::ImplicitMidpoint<vibook::Kepler> mp;
+    vibook::Vec<double, 2> q = s0.q, p = s0.p;
+    for (int k = 0; k < kSteps; ++k) its += mp.step(q, p, kH0).iterations;
+    benchmark::DoNotOptimize(q);
+    benchmark::DoNotOptimize(p);
+  }
+  counters(state, its);
+}
+
 }  // namespace
 
 BENCHMARK(BM_sv_e07);
+BENCHMARK(BM_midpoint_e07);
+BENCHMARK(BM_epavi<double, vibook::MechanicalEpAVI>)->Name("BM_epavi_fast_double");
+BENCHMARK(BM_epavi<long double, vibook::MechanicalEpAVI>)->Name("BM_epavi_fast_long_double");
+BENCHMARK(BM_epavi<dd_real, vibook::MechanicalEpAVI>)->Name("BM_epavi_fast_double_double");
+BENCHMARK(BM_epavi<vibook::quad, vibook::MechanicalEpAVI>)->Name("BM_epavi_fast_quad");
 BENCHMARK(BM_epavi<double>)->Name("BM_epavi_double");
 BENCHMARK(BM_epavi<long double>)->Name("BM_epavi_long_double");
 BENCHMARK(BM_epavi<dd_real>)->Name("BM_epavi_double_double");
