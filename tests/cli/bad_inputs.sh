@@ -85,6 +85,7 @@ row 2 "--h0"             "${R[@]}" --h0 0.1 --csv a.csv
 row 2 "--discrete-lagrangian" "${R[@]}" --discrete-lagrangian sv --csv a.csv
 row 2 "--tol"            "${R[@]}" --tol 1e-3 --csv a.csv
 row 2 "--energy-target"  "${R[@]}" --energy-target initial --csv a.csv
+row 2 "--solver"         "${R[@]}" --solver generic --csv a.csv
 row 2 "--precision"      "${R[@]}" --precision quad --csv a.csv
 row 2 "--digits"         run --problem kepler --method epavi --digits 30 --csv a.csv
 row 2 "--digits"         run --problem kepler --method epavi --precision mpfr --digits x --csv a.csv

@@ -100,6 +100,13 @@ expect 2 "--digits" -- run --problem kepler --method epavi --precision mpfr --di
 expect 2 "--tol" -- run --problem kepler --method epavi --tol 0 --csv "$tmp/r.csv"
 expect 2 "--tol" -- run --problem kepler --method epavi --tol 1e-20 --csv "$tmp/r.csv"
 expect 2 "--energy-target" -- run --problem kepler --method epavi --energy-target final --csv "$tmp/r.csv"
+expect 2 "--solver" -- run --problem kepler --method epavi --solver newton --csv "$tmp/r.csv"
+# The closed-form step (the default): the discrete energy of one period at e = 0.1, h0 = 1e-3
+# stays within 1e-13 of E_1 (issue 11's criterion); the generic path runs the same orbit.
+expect 0 "" -- run --problem kepler --method epavi --e 0.1 --h0 0.001 --periods 1 --csv "$tmp/ep01.csv"
+awk -F, 'NR > 1 { d = $13 < 0 ? -$13 : $13; if (d > m) m = d } END { exit !(NR > 5000 && m <= 1e-13) }' \
+  "$tmp/ep01.csv" && ok || bad "epavi e = 0.1: |E_d - E_1| above 1e-13 over one period"
+expect 0 "" -- run --problem kepler --method epavi --solver generic --e 0.1 --h0 0.001 --periods $PERIODS --every 1000 --csv "$tmp/ep01g.csv"
 expect 2 "--precision" -- run --problem kepler --method sv --precision quad --csv "$tmp/r.csv"
 # No admissible step (e = 0.9 from perihelion, see the EpAVI chapter): exit 3, time and state.
 expect 3 "no admissible time step" -- run --problem kepler --method epavi --e 0.9 --h0 0.001 --periods 1 --csv "$tmp/r.csv"
