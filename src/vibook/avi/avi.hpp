@@ -51,8 +51,8 @@ struct TimedState {
 
 /// AVI: one step of (21)–(23) with step Δa in the fictitious time a,
 ///   q1 − q0 = Δa g(q̄) p̄,   p1 − p0 = −Δa g(q̄) ∇V(q̄),   t1 − t0 = Δa g(q̄),
-/// with q̄, p̄ the averages. (q1, p1) by Newton's method (Jacobian by AutoDiff); every step
-/// reports residual and iterations, a failure throws SolveError.
+/// with q̄, p̄ the averages. (q1, p1) by simplified Newton (the Jacobian by AutoDiff, once per
+/// step); every step reports residual and iterations, a failure throws SolveError.
 template <class Problem, class Monitor>
 class AdaptiveMidpoint {
  public:
@@ -115,12 +115,11 @@ class AdaptiveMidpoint {
       return F;
     };
     // [avi-step]
-    auto fj = [&](const Vec<double, M>& z, Vec<double, M>& F, Mat<double, M>& J) {
-      F = residual(z);
-      J = ad::jacobian<M>(residual, z);
-    };
-    const SolveReport rep =
-        newton_solve<M>(z1, fj, options_, "adaptive midpoint step (21)-(22)", &z0);
+    // Simplified Newton: the AutoDiff Jacobian once per step (it changes by O(Δa) over it).
+    const SolveReport rep = simplified_newton_solve<M>(
+        z1, [&](const Vec<double, M>& z) { return Vec<double, M>(residual(z)); },
+        [&](const Vec<double, M>& z) { return ad::jacobian<M>(residual, z); }, options_,
+        "adaptive midpoint step (21)-(22)", &z0);
     const Vec<double, N> qa = (z1.template head<N>() + s.q) * 0.5;
     s.t += da * g_(P_, qa);  // (23)
     s.q = z1.template head<N>();

@@ -69,6 +69,49 @@ TEST_CASE("newton_solve fails with a typed error instead of looping or returning
   }
 }
 
+TEST_CASE("simplified_newton_solve: one Jacobian where it suffices, typed failures") {
+  // x² = 2 componentwise from a close start: the frozen Jacobian contracts fast enough.
+  int jacobians = 0;
+  auto f = [](const Vec<double, 2>& v) { return Vec<double, 2>(v.array().square() - 2.0); };
+  auto jac = [&](const Vec<double, 2>& v) {
+    ++jacobians;
+    return Mat<double, 2>((2.0 * v).asDiagonal());
+  };
+  Vec<double, 2> x(1.4, 1.42);
+  const SolveReport r = simplified_newton_solve<2>(x, f, jac, NewtonOptions{});
+  CHECK(r.converged);
+  CHECK(std::abs(x(0) - std::sqrt(2.0)) <= 2 * kEps);
+  CHECK(std::abs(x(1) - std::sqrt(2.0)) <= 2 * kEps);
+  CHECK(jacobians == 1);
+  // From far away the contraction of a frozen Jacobian is slow: it is refreshed.
+  jacobians = 0;
+  Vec<double, 2> y(10.0, 0.3);
+  CHECK(simplified_newton_solve<2>(y, f, jac, NewtonOptions{}).converged);
+  CHECK(std::abs(y(0) - std::sqrt(2.0)) <= 2 * kEps);
+  CHECK(jacobians > 1);
+  // No root: a typed error within max_iterations, naming the solve.
+  Vec<double, 1> z(0.5);
+  NewtonOptions opt;
+  opt.max_iterations = 30;
+  try {
+    simplified_newton_solve<1>(
+        z, [](const Vec<double, 1>& v) { return Vec<double, 1>(v(0) * v(0) + 1.0); },
+        [](const Vec<double, 1>& v) { return Mat<double, 1>(2.0 * v(0)); }, opt, "test solve");
+    FAIL("expected SolveError");
+  } catch (const SolveError& e) {
+    CHECK_FALSE(e.report().converged);
+    CHECK(e.report().iterations <= 30);
+    CHECK(std::string(e.what()).find("test solve") != std::string::npos);
+  }
+  // Singular Jacobian.
+  Vec<double, 1> w(0.0);
+  CHECK_THROWS_AS(
+      simplified_newton_solve<1>(
+          w, [](const Vec<double, 1>& v) { return Vec<double, 1>(v(0) * v(0) + 1.0); },
+          [](const Vec<double, 1>& v) { return Mat<double, 1>(2.0 * v(0)); }, NewtonOptions{}),
+      SolveError);
+}
+
 TEST_CASE("TrajectoryRecorder: header, every K-th row, first and last always") {
   std::ostringstream out;
   TrajectoryRecorder rec(out, {"step", "x"}, 3);
