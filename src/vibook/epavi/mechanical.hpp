@@ -155,7 +155,9 @@ class MechanicalEpAVI {
       const T dg = -tau * constant<T>(0.25) * (v.dot(AHv) + G.dot(AG));
       const T next = tau - T(gW) / dg;
       if (!is_finite(next) || !(next > center / T(2) && next < center * T(2))) break;
-      x = k.q + (x - k.q) * T(next / tau);
+      // Newton's start for (15) at the new step: q_{k+1} moved along dq_{k+1}/dτ = A⁻¹(p_k − τG).
+      const VecN dx_dtau = Ainv * VecN(k.p - G * tau);
+      x += dx_dtau * T(next - tau);
       tau = next;
     }
     if (!converged) return fall_back(s, rep);
