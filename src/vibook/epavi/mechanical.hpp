@@ -96,6 +96,7 @@ class MechanicalEpAVI {
   State start(const T& t0, const VecN& q0, const T& h0, const VecN& q1) {
     const VecN dq = q1 - q0;
     const VecN G = P_.gradient(VecN((q0 + q1) * constant<T>(0.5)));
+    G_last_ = G;
     State s;
     s.t = t0 + h0;
     s.q = q1;
@@ -121,7 +122,9 @@ class MechanicalEpAVI {
     if (prev_dt_ > T(0)) center = last_dt_ * std::clamp(T(last_dt_ / prev_dt_), T(0.5), T(2));
 
     T tau = center;
-    VecN x = k.q + increment_ * T(tau / last_dt_);
+    // Newton's start for (15): (15) itself with ∇V at the previous step's midpoint, off by
+    // O(τ³) (scaling the previous increment instead is off by O(τ²)).
+    VecN x = k.q + k.p * tau - G_last_ * T(tau * tau * constant<T>(0.5));
     VecN G;
     // The Newton matrix of (15) starts from the Hessian of the previous step: A changes by
     // O(τ³) from step to step, which only slows the contraction of (15) negligibly.
@@ -157,8 +160,21 @@ class MechanicalEpAVI {
       if (!is_finite(next) || !(next > center / T(2) && next < center * T(2))) break;
       // Newton's start for (15) at the new step: q_{k+1} moved along dq_{k+1}/dτ = A⁻¹(p_k − τG).
       const VecN dx_dtau = Ainv * VecN(k.p - G * tau);
-      x += dx_dtau * T(next - tau);
+      const T dtau = next - tau;
+      x += dx_dtau * dtau;
       tau = next;
+      // The linear move is exact to ½|d²q_{k+1}/dτ²|·δτ² ≈ ½|G|·δτ²: below the rounding of
+      // q_{k+1} when δτ is small enough, and then (15) needs no new solve. (16) is checked at
+      // the moved point; if it does not hold to the tooth height, the loop solves as usual.
+      if (dtau * dtau * G.template lpNorm<Eigen::Infinity>() <=
+          u_ * x.template lpNorm<Eigen::Infinity>()) {
+        gW = energy(k.q, x, tau) - targetW;
+        ++rep.root_iterations;
+        if (is_finite(gW) && abs(gW) <= floor(k, x, tau, G, target)) {
+          converged = true;
+          break;
+        }
+      }
     }
     if (!converged) return fall_back(s, rep);
     // Phase 2: q_{k+1} stays the representable point found; τ alone moves, by Newton with
@@ -196,6 +212,7 @@ class MechanicalEpAVI {
     s.t = t1;
     s.q = x;
     s.p = dq / tau - G * T(tau * constant<T>(0.5));
+    G_last_ = G;
     s.E = T(targetW + gW);
     return rep;
     // [epavi-closed-form-step]
@@ -294,6 +311,7 @@ class MechanicalEpAVI {
     last_dt_ = h.last_dt;
     t_compensation_ = h.t_compensation;
     increment_ = h.increment;
+    G_last_ = P_.gradient(VecN(s.q - increment_ * constant<T>(0.5)));
     r.root_iterations += rep.root_iterations;
     r.newton_iterations += rep.newton_iterations;
     return r;
@@ -304,7 +322,8 @@ class MechanicalEpAVI {
   Options options_;
   T u_;
   long long fallbacks_ = 0;
-  MatN H_ = MatN::Zero();  ///< ∇²V at the last midpoint where dg/dτ was needed
+  MatN H_ = MatN::Zero();       ///< ∇²V at the last midpoint where dg/dτ was needed
+  VecN G_last_ = VecN::Zero();  ///< ∇V at the last step's midpoint
   bool have_hessian_ = false;
   T E_start_ = T(0), last_dt_ = T(0), prev_dt_ = T(0), t_compensation_ = T(0);
   VecN increment_ = VecN::Zero();
