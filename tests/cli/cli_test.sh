@@ -148,6 +148,10 @@ expect 3 "partial" -- run --problem kepler --method del-generic --q0 1,0 --p0 0,
 [ ! -e "$tmp/d.csv" ] && [ -e "$tmp/d.csv.partial" ] && ok || bad "failed run leaves only FILE.partial"
 
 # --- the modified-equation engine (Vermeeren 2017, Shen & Sun 2025 §4) --------------------------
+# A rational --alpha stays exact through the Kepler potential (it printed 18014398509481983/
+# 18014398509481984 for 1 and warned about binary64 literals before constant<ex> was exact).
+expect 0 "" -- modified --method vi1 --potential kepler --dim 2 --alpha 3/10 --order 1
+grep -q "^h^1: -9/10\*r^(-5)\*v2\*x1\*x2" "$tmp/out" && [ ! -s "$tmp/err" ] && ok || bad "modified --alpha 3/10 not exact: $(head -5 "$tmp/out")"
 expect 0 "" -- modified --help
 expect 2 "--method" -- modified --method rk4 --order 2
 expect 2 "--potential" -- modified --method sv --potential morse --order 2

@@ -79,6 +79,13 @@ TEST_CASE(
   // Built-in discrete Lagrangians write only binary fractions.
   for (auto m : {Method::sv, Method::midpoint, Method::vi2})
     CHECK(make_discrete_lagrangian(m, Potential::kepler, 2).inexact_literals.empty());
+  // A rational split weight stays rational: constant<ex>(1) in the Kepler potential is the
+  // integer 1, not the floating-point 1.0 that turned 3/10 into binary64's 0.3.
+  for (auto m : {Method::vi1, Method::vi2})
+    CHECK(make_discrete_lagrangian(m, Potential::kepler, 2, GiNaC::numeric(3, 10))
+              .inexact_literals.empty());
+  CHECK(vibook::constant<GiNaC::ex>(0.1) == GiNaC::numeric(3602879701896397L, 36028797018963968L));
+  CHECK(vibook::constant<GiNaC::ex>(-1.5) == GiNaC::numeric(-3, 2));
 }
 
 TEST_CASE("engine: Störmer–Verlet on the oscillator, exact modified frequency to h^8") {
