@@ -4,7 +4,9 @@ chromium-driver, driven by python3-selenium) and fail on:
   - TeX left unrendered (raw \\( \\[ \\f$ in the text, or a MathJax error),
   - a broken image (not loaded, or zero width),
   - a broken local link (a file that does not exist),
-  - any console error (including failed resource loads).
+  - any console error (including failed resource loads),
+  - on the reproduction report: a claim row without its anchor (#claim-ID), or a status filter
+    that does not hide exactly the rows of the status unticked.
 The book's own pages (chapters, report, index, anything with TeX), and the first page of each
 kind of Doxygen API page, are opened in the browser. The other API pages (about 300, with no
 TeX: the API documentation writes its formulas in Unicode) are checked without a browser for
@@ -66,6 +68,27 @@ document.querySelectorAll('img').forEach(i => {
 });
 document.querySelectorAll('object[data]').forEach(o => out.links.push(o.getAttribute('data')));
 document.querySelectorAll('a[href]').forEach(a => out.links.push(a.href));
+return out;
+"""
+
+FILTER = """
+const out = [];
+const rows = Array.from(document.querySelectorAll('table.vibook-claims tr')).slice(1);
+rows.forEach(r => {
+  const id = r.cells[0] ? r.cells[0].textContent.trim() : '';
+  if (r.id !== 'claim-' + id) out.push('claim row without its anchor: ' + id);
+  if (!r.getAttribute('data-status')) out.push('claim row without data-status: ' + id);
+});
+const box = document.querySelector('p.vibook-filter input[value="reproduced"]');
+if (!box) { out.push('status filter without a "reproduced" box'); return out; }
+box.click();
+rows.forEach(r => {
+  const hidden = r.style.display === 'none';
+  const want = r.getAttribute('data-status') === 'reproduced';
+  if (hidden !== want) out.push('filter: row ' + r.id + (hidden ? ' hidden' : ' shown'));
+});
+box.click();
+if (rows.some(r => r.style.display === 'none')) out.push('filter: rows stay hidden after re-ticking');
 return out;
 """
 
@@ -146,6 +169,9 @@ for page in browser_pages:
             target = unquote(u.path) if u.scheme == "file" else os.path.join(html_dir, unquote(u.path))
             if target and not os.path.exists(target):
                 problems.append(f"{page}: broken link {href}")
+    if driver.execute_script("return document.querySelector('p.vibook-filter') !== null"):
+        for e in driver.execute_script(FILTER):
+            problems.append(f"{page}: {e}")
     for entry in driver.get_log("browser"):
         if entry["level"] in ("SEVERE", "ERROR"):
             problems.append(f"{page}: console {entry['level']}: {entry['message'][:200]}")

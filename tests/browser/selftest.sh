@@ -27,6 +27,15 @@ cat >"$tmp/classB.html" <<'HTML'
 <!DOCTYPE html><html><head><title>B</title></head><body>
 <a href="classNowhere.html#x">dead API link</a><img src="gone.png" alt="gone"></body></html>
 HTML
+# A report whose row has no anchor and whose status filter hides nothing (no script).
+cat >"$tmp/reportbad.html" <<'HTML'
+<!DOCTYPE html><html><head><title>report</title></head><body>
+<p class="vibook-filter">Show: <label><input type="checkbox" value="reproduced" checked> reproduced</label></p>
+<table class="vibook-claims"><tr><th>ID</th></tr>
+<tr class="status-reproduced" data-status="reproduced"><td>X-1</td></tr>
+<tr class="status-reproduced" id="claim-X-2" data-status="reproduced"><td>X-2</td></tr></table>
+</body></html>
+HTML
 "/usr/bin/python3" "$here/check_book.py" "$tmp" >"$tmp/bad.log" 2>&1
 rc=$?
 fail=0
@@ -34,6 +43,8 @@ fail=0
 for what in "unrendered TeX" "broken image" "broken link" "deliberate console error"; do
   grep -q "bad.html: .*$what" "$tmp/bad.log" || { echo "FAIL: not reported: $what"; fail=1; }
 done
+grep -q "reportbad.html: claim row without its anchor: X-1" "$tmp/bad.log" || { echo "FAIL: row without anchor not reported"; fail=1; }
+grep -q "reportbad.html: filter: row claim-X-2 shown" "$tmp/bad.log" || { echo "FAIL: broken filter not reported"; fail=1; }
 grep -q "classB.html: broken link classNowhere.html#x" "$tmp/bad.log" || { echo "FAIL: static broken link not reported"; fail=1; }
 grep -q "classB.html: broken image gone.png" "$tmp/bad.log" || { echo "FAIL: static broken image not reported"; fail=1; }
 grep -q "index.html\|classA.html" "$tmp/bad.log" && { echo "FAIL: a clean page was reported"; fail=1; }

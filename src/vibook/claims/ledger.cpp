@@ -199,7 +199,22 @@ std::string escape(std::string_view s) {
 
 std::string Ledger::to_html(std::string_view paper_filter,
                             const std::vector<std::string>& ids) const {
-  std::string out =
+  // The whole ledger (the reproduction report) gives every row an anchor, #claim-ID, and a
+  // filter by status; the excerpts in the chapters link to those anchors (an ID may appear in
+  // two excerpts of one chapter, so they carry no id of their own).
+  const bool whole = paper_filter.empty() && ids.empty();
+  std::string out;
+  if (whole) {
+    out += "<p class=\"vibook-filter\">Show:";
+    for (Status st : {Status::reproduced, Status::reproduced_with_caveat, Status::not_reproduced,
+                      Status::erratum, Status::pending})
+      out += fmt::format(
+          " <label class=\"status-{0}\"><input type=\"checkbox\" value=\"{0}\" checked> "
+          "{0}</label>",
+          to_string(st));
+    out += "</p>\n";
+  }
+  out +=
       "<table class=\"vibook-claims\">\n<tr><th>ID</th><th>Where</th><th>Claim</th>"
       "<th>Status</th><th>Measured</th><th>Note</th></tr>\n";
   for (const auto& row : rows_) {
@@ -210,13 +225,36 @@ std::string Ledger::to_html(std::string_view paper_filter,
       values += fmt::format("{}&nbsp;=&nbsp;{:.4g}<br/>", escape(k), v);
     }
     const std::string status{to_string(row.result.status)};
+    const std::string id = escape(row.info.id);
+    const std::string anchor =
+        whole ? fmt::format(" id=\"claim-{}\" data-status=\"{}\"", id, status) : std::string();
+    const std::string id_cell = whole
+                                    ? fmt::format("<a href=\"#claim-{0}\">{0}</a>", id)
+                                    : fmt::format("<a href=\"report.html#claim-{0}\">{0}</a>", id);
     out += fmt::format(
-        "<tr class=\"status-{}\"><td>{}</td><td>{}</td><td>{}</td><td><b>{}</b></td>"
+        "<tr class=\"status-{}\"{}><td>{}</td><td>{}</td><td>{}</td><td><b>{}</b></td>"
         "<td>{}</td><td>{}</td></tr>\n",
-        status, escape(row.info.id), escape(row.info.where), escape(row.info.title), status, values,
+        status, anchor, id_cell, escape(row.info.where), escape(row.info.title), status, values,
         escape(row.result.note));
   }
   out += "</table>\n";
+  if (whole)
+    out +=
+        "<script>\n"
+        "(function () {  // vibook: show only the rows of the statuses ticked (offline, no "
+        "library)\n"
+        "  var boxes = document.querySelectorAll('p.vibook-filter input');\n"
+        "  function apply() {\n"
+        "    var show = {};\n"
+        "    boxes.forEach(function (b) { show[b.value] = b.checked; });\n"
+        "    document.querySelectorAll('table.vibook-claims tr[data-status]').forEach(function (r) "
+        "{\n"
+        "      r.style.display = show[r.getAttribute('data-status')] ? '' : 'none';\n"
+        "    });\n"
+        "  }\n"
+        "  boxes.forEach(function (b) { b.addEventListener('change', apply); });\n"
+        "})();\n"
+        "</script>\n";
   return out;
 }
 
