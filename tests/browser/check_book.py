@@ -2,6 +2,7 @@
 """Open every page of the built book in headless Chromium (Debian's chromium and
 chromium-driver, driven by python3-selenium) and fail on:
   - TeX left unrendered (raw \\( \\[ \\f$ in the text, or a MathJax error),
+  - Doxygen markup shown as text (\\form#N placeholders, literal <strong>, **bold**),
   - a broken image (not loaded, or zero width),
   - a broken local link (a file that does not exist),
   - any console error (including failed resource loads),
@@ -62,6 +63,10 @@ while (walker.nextNode()) {
   if (!p || p.closest('script, pre, code, .fragment, .line, style')) continue;
   const t = n.textContent;
   if (/\\\\\\(|\\\\\\[|\\\\f\\$|\\\\f\\[|Math Processing Error/.test(t)) out.errors.push('unrendered TeX: ' + t.trim().slice(0, 80));
+  // Doxygen's own markup shown as text: a formula placeholder (\\form#N) or HTML/Markdown
+  // left literal, as after a \\ref whose quoted text was broken across two lines.
+  const raw = t.match(/\\\\_?form#\\d+|<\\/?(strong|em|a|code|tt|b)\\b[^>]*>|\\*\\*[A-Za-z]/);
+  if (raw) out.errors.push('raw markup ' + raw[0] + ': ' + t.trim().slice(0, 80));
 }
 document.querySelectorAll('img').forEach(i => {
   if (!i.complete || i.naturalWidth === 0) out.images.push(i.getAttribute('src'));

@@ -15,6 +15,7 @@ cat >"$tmp/bad.html" <<'HTML'
 <p>Energy \f$H = T + U\f$ left as TeX.</p>
 <img src="missing.svg" alt="missing">
 <a href="nowhere.html">dead link</a>
+<p>A leaked placeholder \form#12 and &lt;strong&gt;markup&lt;/strong&gt; shown as text.</p>
 <script>console.error("deliberate console error");</script>
 </body></html>
 HTML
@@ -40,7 +41,7 @@ HTML
 rc=$?
 fail=0
 [ $rc -ne 0 ] || { echo "FAIL: checker passed a broken page"; fail=1; }
-for what in "unrendered TeX" "broken image" "broken link" "deliberate console error"; do
+for what in "unrendered TeX" "broken image" "broken link" "deliberate console error" "raw markup"; do
   grep -q "bad.html: .*$what" "$tmp/bad.log" || { echo "FAIL: not reported: $what"; fail=1; }
 done
 grep -q "reportbad.html: claim row without its anchor: X-1" "$tmp/bad.log" || { echo "FAIL: row without anchor not reported"; fail=1; }
