@@ -31,10 +31,21 @@ cmake --build "$tmp/build" >"$tmp/build.log" || { cat "$tmp/build.log"; exit 1; 
 
 # 2. pkg-config: the header-only core needs no library at all.
 cat >"$tmp/core_only.cpp" <<'CPP'
+#include <cmath>
+
+#include "vibook/epavi/mechanical.hpp"
 #include "vibook/integrators/kernels.hpp"
+#include "vibook/kepler/kepler.hpp"
 #include "vibook/problems/problems.hpp"
 #include "vibook/verify/verify.hpp"
 int main() {
+  // The closed-form EpAVI, header-only: 1000 steps on Kepler e = 0.5 keep the discrete energy.
+  const auto orbit = vibook::KeplerOrbit::perihelion(0.5);
+  vibook::MechanicalEpAVI<vibook::Kepler> ep{vibook::Kepler{}};
+  auto st = ep.start(0.0, orbit.at(0.0).q, 1e-3, orbit.at(1e-3).q);
+  const double E1 = st.E;
+  for (int k = 0; k < 1000; ++k) ep.step(st);
+  if (!(std::abs(st.E - E1) <= 1e-13)) return 2;
   vibook::StormerVerlet<vibook::Pendulum> sv;
   const vibook::verify::Step step = [&](Eigen::VectorXd& z, double h) {
     vibook::verify::step_qp<1>(sv, z, h);
