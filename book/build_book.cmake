@@ -125,6 +125,12 @@ file(COPY ${MATHJAX_SRC}/ DESTINATION ${OUT}/html/mathjax
      PATTERN "test" EXCLUDE
      REGEX "mathjax/fonts(/.*)?$" EXCLUDE)  # HTML-CSS web fonts: not used by SVG output
 file(COPY ${FIGS} DESTINATION ${OUT}/html)  # CSV and PNG beside the book, for download
+# Every chapter figure numbered, a link to its full-size picture, its caption listing its CSVs.
+execute_process(COMMAND ${PYTHON3} ${SOURCE_DIR}/book/figure_links.py ${OUT}/html
+                RESULT_VARIABLE rc)
+if(NOT rc EQUAL 0)
+  message(FATAL_ERROR "figure_links.py failed (exit ${rc})")
+endif()
 if(EXISTS ${OUT}/doxygen-warnings.log)
   file(READ ${OUT}/doxygen-warnings.log warnings)
   if(NOT warnings STREQUAL "")
