@@ -31,6 +31,37 @@ struct NewtonOptions {
   int max_iterations = 50;
 };
 
+namespace newton_detail {
+// The stopping rule of NewtonOptions, for an update dx just applied to x (dx scaled by
+// `factor` >= 1 when the iteration converges only linearly).
+template <int N, class T>
+bool update_is_small(const Vec<T, N>& x, const Vec<T, N>& dx, const Vec<T, N>& ref,
+                     const T& step_rel, const T& step_abs, const T& factor = T(1)) {
+  const T displacement = (x - ref).template lpNorm<Eigen::Infinity>();
+  for (int i = 0; i < N; ++i) {
+    using std::abs;
+    const T size = std::max({T(abs(x(i))), T(abs(ref(i))), displacement});
+    if (!(factor * abs(dx(i)) <= step_rel * size + step_abs)) return false;
+  }
+  return true;
+}
+
+inline SolveError singular_jacobian(const char* what, const SolveReport& rep) {
+  return SolveError(std::string(what) + ": singular Jacobian (residual " +
+                        text::e(rep.residual, 3) + " after " + std::to_string(rep.iterations) +
+                        " iterations)",
+                    rep);
+}
+
+inline SolveError no_convergence(const char* what, SolveReport rep, int max_iterations) {
+  if (rep.iterations > max_iterations) rep.iterations = max_iterations;
+  return SolveError(std::string(what) + ": no convergence (residual " + text::e(rep.residual, 3) +
+                        " after " + std::to_string(rep.iterations) + " iterations" +
+                        (std::isfinite(rep.residual) ? "" : ", non-finite") + ")",
+                    rep);
+}
+}  // namespace newton_detail
+
 /// Solve F(x) = 0 for x in R^N, starting from x. `fj(x, F, J)` fills the residual F and its
 /// Jacobian J at x. Returns the report; x holds the solution. Throws SolveError (with the
 /// report) when the iteration does not converge within max_iterations, when the Jacobian is
@@ -53,21 +84,10 @@ SolveReport newton_solve(Vec<T, N>& x, FJ&& fj, const NewtonOptions& opt,
     }
     const auto lu = J.partialPivLu();
     const Vec<T, N> dx = lu.solve(F);
-    if (!std::isfinite(to_double(T(dx.template lpNorm<Eigen::Infinity>())))) {
-      throw SolveError(std::string(what) + ": singular Jacobian (residual " +
-                           text::e(rep.residual, 3) + " after " + std::to_string(rep.iterations) +
-                           " iterations)",
-                       rep);
-    }
+    if (!std::isfinite(to_double(T(dx.template lpNorm<Eigen::Infinity>()))))
+      throw newton_detail::singular_jacobian(what, rep);
     x -= dx;
-    const T displacement = (x - ref).template lpNorm<Eigen::Infinity>();
-    bool small = true;
-    for (int i = 0; i < N; ++i) {
-      using std::abs;
-      const T size = std::max({T(abs(x(i))), T(abs(ref(i))), displacement});
-      small = small && abs(dx(i)) <= step_rel * size + step_abs;
-    }
-    if (small) {
+    if (newton_detail::update_is_small<N>(x, dx, ref, step_rel, step_abs)) {
       fj(x, F, J);  // report the residual at the returned point
       rep.residual = to_double(T(F.template lpNorm<Eigen::Infinity>()));
       rep.converged = std::isfinite(rep.residual);
@@ -75,11 +95,7 @@ SolveReport newton_solve(Vec<T, N>& x, FJ&& fj, const NewtonOptions& opt,
       break;
     }
   }
-  if (rep.iterations > opt.max_iterations) rep.iterations = opt.max_iterations;
-  throw SolveError(std::string(what) + ": no convergence (residual " + text::e(rep.residual, 3) +
-                       " after " + std::to_string(rep.iterations) + " iterations" +
-                       (std::isfinite(rep.residual) ? "" : ", non-finite") + ")",
-                   rep);
+  throw newton_detail::no_convergence(what, rep, opt.max_iterations);
 }
 
 /// Simplified Newton for small systems: the Jacobian `jac(x)` is evaluated at the start and
@@ -109,11 +125,7 @@ SolveReport simplified_newton_solve(Vec<T, N>& x, Fn&& f, Jac&& jac, const Newto
     }
     Vec<T, N> dx = Jinv * F;
     const T size_dx = dx.template lpNorm<Eigen::Infinity>();
-    if (!std::isfinite(to_double(size_dx)))
-      throw SolveError(std::string(what) + ": singular Jacobian (residual " +
-                           text::e(rep.residual, 3) + " after " + std::to_string(rep.iterations) +
-                           " iterations)",
-                       rep);
+    if (!std::isfinite(to_double(size_dx))) throw newton_detail::singular_jacobian(what, rep);
     // The error left after a linearly converging update is about ρ/(1 − ρ) times the update,
     // ρ the contraction seen: the stopping rule is applied to that.
     T factor(1);
@@ -126,23 +138,12 @@ SolveReport simplified_newton_solve(Vec<T, N>& x, Fn&& f, Jac&& jac, const Newto
     }
     last = dx.template lpNorm<Eigen::Infinity>();
     x -= dx;
-    const T displacement = (x - ref).template lpNorm<Eigen::Infinity>();
-    bool small = true;
-    for (int i = 0; i < N; ++i) {
-      using std::abs;
-      const T size = std::max({T(abs(x(i))), T(abs(ref(i))), displacement});
-      small = small && factor * abs(dx(i)) <= step_rel * size + step_abs;
-    }
-    if (small) {
+    if (newton_detail::update_is_small<N>(x, dx, ref, step_rel, step_abs, factor)) {
       rep.converged = true;
       return rep;
     }
   }
-  if (rep.iterations > opt.max_iterations) rep.iterations = opt.max_iterations;
-  throw SolveError(std::string(what) + ": no convergence (residual " + text::e(rep.residual, 3) +
-                       " after " + std::to_string(rep.iterations) + " iterations" +
-                       (std::isfinite(rep.residual) ? "" : ", non-finite") + ")",
-                   rep);
+  throw newton_detail::no_convergence(what, rep, opt.max_iterations);
 }
 
 }  // namespace vibook

@@ -89,7 +89,7 @@ class MechanicalEpAVI {
   /// The generic path, with what each step remembers of the earlier ones (to take the same
   /// step both ways from one state: `generic().set_history(history())`).
   using History = typename Reference::Integrator::History;
-  History history() const { return {last_dt_, prev_dt_, t_compensation_, E_start_, increment_}; }
+  History history() const { return h_; }
   typename Reference::Integrator& generic() { return reference_.integrator(); }
 
   /// Start from (t0, q0) with the first step to (t0 + h0, q1): p1 by (17), E1 by (18).
@@ -102,12 +102,11 @@ class MechanicalEpAVI {
     s.q = q1;
     s.p = dq / h0 - G * T(h0 * constant<T>(0.5));
     s.E = T(energy(q0, q1, h0));
-    E_start_ = s.E;
+    h_ = History{};
+    h_.E_start = s.E;
+    h_.last_dt = h0;
+    h_.increment = dq;
     have_hessian_ = false;
-    prev_dt_ = T(0);
-    last_dt_ = h0;
-    increment_ = dq;
-    t_compensation_ = T(0);
     return s;
   }
 
@@ -115,11 +114,10 @@ class MechanicalEpAVI {
   ExtendedStepReport step(State& s) {
     ExtendedStepReport rep;
     const State k = s;
-    const T target = options_.energy_target == EnergyTarget::previous ? k.E : E_start_;
+    const T target = options_.energy_target == EnergyTarget::previous ? k.E : h_.E_start;
     const W targetW = W(target);
     // The predicted step, as in the generic path: Δt_{k−1}²/Δt_{k−2}, ratio clamped to [½, 2].
-    T center = last_dt_;
-    if (prev_dt_ > T(0)) center = last_dt_ * std::clamp(T(last_dt_ / prev_dt_), T(0.5), T(2));
+    const T center = h_.predicted_step();
 
     T tau = center;
     // Newton's start for (15): (15) itself with ∇V at the previous step's midpoint, off by
@@ -132,7 +130,7 @@ class MechanicalEpAVI {
     MatN Ainv = inverse_newton_matrix(H_, tau);
     W gW(0);
     auto evaluate = [&]() {
-      rep.momentum_residual = solve_momentum(k, tau, Ainv, x, G, rep.newton_iterations);
+      solve_momentum(k, tau, Ainv, x, G, rep.newton_iterations);
       ++rep.root_iterations;
       gW = energy(k.q, x, tau) - targetW;
     };
@@ -203,13 +201,10 @@ class MechanicalEpAVI {
     rep.momentum_residual = to_double(T(
         (dq + G * T(tau * tau * constant<T>(0.5)) - k.p * tau).template lpNorm<Eigen::Infinity>() /
         tau));
-    prev_dt_ = last_dt_;
-    last_dt_ = tau;
-    increment_ = dq;
-    const T y = tau - t_compensation_;  // Kahan: t_{k+1} = t_k + τ, compensated
-    const T t1 = k.t + y;
-    t_compensation_ = (t1 - k.t) - y;
-    s.t = t1;
+    h_.prev_dt = h_.last_dt;
+    h_.last_dt = tau;
+    h_.increment = dq;
+    s.t = h_.advance(k.t, tau);
     s.q = x;
     s.p = dq / tau - G * T(tau * constant<T>(0.5));
     G_last_ = G;
@@ -257,9 +252,10 @@ class MechanicalEpAVI {
 
   /// (15) for q_{k+1} = x at step τ: Newton with the Jacobian A held fixed (A differs from the
   /// exact Jacobian by O(τ²) changes of ∇²V, so the iteration contracts by far more than a
-  /// Newton step needs). Returns |p_k + D2 L_d|_inf; G is ∇V at the last midpoint used.
-  double solve_momentum(const State& k, const T& tau, const MatN& Ainv, VecN& x, VecN& G,
-                        int& iterations) const {
+  /// Newton step needs). G is ∇V at the last midpoint used; the residual of (15) is measured at
+  /// the point the step returns.
+  void solve_momentum(const State& k, const T& tau, const MatN& Ainv, VecN& x, VecN& G,
+                      int& iterations) const {
     const T half_tau2 = tau * tau * constant<T>(0.5);
     for (int it = 1; it <= options_.max_newton_iterations; ++it) {
       G = P_.gradient(VecN((k.q + x) * constant<T>(0.5)));
@@ -279,7 +275,7 @@ class MechanicalEpAVI {
               SolveReport{to_double(T(F.template lpNorm<Eigen::Infinity>())), iterations, false});
         if (abs(dx(i)) > T(2) * u_ * std::max({abs(x(i)), abs(k.q(i)), scale})) small = false;
       }
-      if (small) return to_double(T(F.template lpNorm<Eigen::Infinity>() / tau));
+      if (small) return;
     }
     throw SolveError("EpAVI step at t = " + text::g(to_double(k.t), 17) +
                          ": the momentum equation (15) did not converge in " +
@@ -304,14 +300,10 @@ class MechanicalEpAVI {
   ExtendedStepReport fall_back(State& s, ExtendedStepReport rep) {
     ++fallbacks_;
     auto& gen = reference_.integrator();
-    gen.set_history(history());
+    gen.set_history(h_);
     ExtendedStepReport r = reference_.step(s);
-    const auto h = gen.history();
-    prev_dt_ = h.prev_dt;
-    last_dt_ = h.last_dt;
-    t_compensation_ = h.t_compensation;
-    increment_ = h.increment;
-    G_last_ = P_.gradient(VecN(s.q - increment_ * constant<T>(0.5)));
+    h_ = gen.history();
+    G_last_ = P_.gradient(VecN(s.q - h_.increment * constant<T>(0.5)));
     r.root_iterations += rep.root_iterations;
     r.newton_iterations += rep.newton_iterations;
     return r;
@@ -325,8 +317,7 @@ class MechanicalEpAVI {
   MatN H_ = MatN::Zero();       ///< ∇²V at the last midpoint where dg/dτ was needed
   VecN G_last_ = VecN::Zero();  ///< ∇V at the last step's midpoint
   bool have_hessian_ = false;
-  T E_start_ = T(0), last_dt_ = T(0), prev_dt_ = T(0), t_compensation_ = T(0);
-  VecN increment_ = VecN::Zero();
+  History h_;  ///< the last steps, the last increment, the compensation of t, E_1
 };
 
 }  // namespace vibook

@@ -208,11 +208,7 @@ class ExtendedDelIntegrator {
       return r.x;
     };
     // The predicted step: geometric extrapolation of the last two, the ratio clamped to [1/2, 2].
-    T center = last_dt_;
-    if (prev_dt_ > T(0)) {
-      const T ratio = std::clamp(T(last_dt_ / prev_dt_), T(0.5), T(2));
-      center = last_dt_ * ratio;
-    }
+    const T center = history().predicted_step();
     auto log_ratio = [&](const T& x) {
       using std::log;
       using std::abs;
@@ -301,10 +297,9 @@ class ExtendedDelIntegrator {
     last_dt_ = dt;
     increment_ = q1 - k.q;
     if (options_.time_translation_invariant) {  // Kahan: t_{k+1} = t_k + Δt, compensated
-      const T y = dt - t_compensation_;
-      const T t1 = k.t + y;
-      t_compensation_ = (t1 - k.t) - y;
-      s.t = t1;
+      History h = history();
+      s.t = h.advance(k.t, dt);
+      t_compensation_ = h.t_compensation;
     } else {
       s.t = k.t + dt;
     }
@@ -337,6 +332,19 @@ class ExtendedDelIntegrator {
   struct History {
     T last_dt = T(0), prev_dt = T(0), t_compensation = T(0), E_start = T(0);
     VecN increment = VecN::Zero();
+    /// The step predicted from the last two: Δt_{k−1}²/Δt_{k−2}, the ratio clamped to
+    /// [1/2, 2] (the ratio of successive steps changes slowly); Δt_{k−1} until two are known.
+    T predicted_step() const {
+      if (!(prev_dt > T(0))) return last_dt;
+      return last_dt * std::clamp(T(last_dt / prev_dt), T(0.5), T(2));
+    }
+    /// t + Δt by Kahan's compensated summation, the compensation carried from step to step.
+    T advance(const T& t, const T& dt) {
+      const T y = dt - t_compensation;
+      const T t1 = t + y;
+      t_compensation = (t1 - t) - y;
+      return t1;
+    }
   };
   History history() const { return {last_dt_, prev_dt_, t_compensation_, E_start_, increment_}; }
   void set_history(const History& h) {

@@ -2,6 +2,8 @@
 // (13) of Vermeeren 2017 and every later step of the modified-equation engine.
 #include "vibook/modified/series.hpp"
 
+#include "vibook/modified/ginac_eigen.hpp"
+
 #include <algorithm>
 #include <charconv>
 #include <cmath>
@@ -219,12 +221,8 @@ ex exact_rationals(const ex& e, std::vector<std::string>* inexact) {
       if (GiNaC::is_a<numeric>(x)) {
         const numeric& n = GiNaC::ex_to<numeric>(x);
         if (n.is_rational() || !n.is_real()) return x;
-        int e2 = 0;
         const double d = n.to_double();
-        const double m = std::frexp(d, &e2);
-        const auto mant = static_cast<std::int64_t>(std::ldexp(m, 53));
-        const numeric exact =
-            numeric(static_cast<long>(mant)) * GiNaC::pow(numeric(2), numeric(e2 - 53));
+        const numeric exact = GiNaC::ex_to<numeric>(vibook::constant<ex>(d));
         if (inexact && exact.denom() > numeric(4294967296L)) {
           std::ostringstream text;
           char buf[32];
