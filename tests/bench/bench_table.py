@@ -78,9 +78,10 @@ if sv and ep:
           f"{a1 / sv:.1f}, {a2 / sv:.1f}); double-double EpAVI within 15&times; double EpAVI "
           f"&mdash; {verdict(dd / ep <= 15)} (ratio {dd / ep:.1f}). The closed form is "
           f"{gen / ep:.0f}&times; faster than the generic path in double. EpAVI's iterations are "
-          "evaluations of the energy equation (16), each with a Newton solve of the momentum "
-          "equations (15): by nested AutoDiff on the generic path, with the derivatives of (25) "
-          "written out from the potential's gradient and Hessian on the closed form. AVI's and "
+          "evaluations of the energy equation (16). On the generic path each comes with a Newton "
+          "solve of the momentum equations (15) by nested AutoDiff; on the closed form, with "
+          "the derivatives of (25) written out from the potential's gradient and Hessian, "
+          "usually only the first does (later ones extrapolate the position along the step). AVI's and "
           "the midpoint rule's are Newton iterations. mpfr18: one repetition of 300 steps (MPFR "
           "at 18 digits, the paper's VPA).</p>")
 
