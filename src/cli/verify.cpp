@@ -333,7 +333,7 @@ int run_verify(const VerifyOptions& o, const verify::TypedDiscreteLagrangian& dl
                          const std::string& criterion, bool passed) {
       html << "<tr class=\"status-" << (passed ? "reproduced" : "not-reproduced") << "\"><td>"
            << what << "</td><td>" << html_escape(measured) << "</td><td>" << html_escape(criterion)
-           << "</td><td>" << (passed ? "yes" : "no") << "</td></tr>\n";
+           << "</td><td class=\"holds\">" << (passed ? "yes" : "no") << "</td></tr>\n";
     };
     // The book's own stylesheet (book/vibook.css, compiled in), so that the report's table
     // reads like the reproduction report: same borders, same status colours.

@@ -197,11 +197,34 @@ std::string escape(std::string_view s) {
 }
 }  // namespace
 
+namespace {
+
+// A long value name (kepler_two_step_residual_rel_max) may break after an underscore, not
+// inside a word, when its column is narrow.
+std::string break_at_underscores(const std::string& s) {
+  std::string out;
+  for (char c : s) {
+    out += c;
+    if (c == '_') out += "<wbr>";
+  }
+  return out;
+}
+
+// The three papers, in the book's order: key and short citation.
+constexpr std::pair<const char*, const char*> kPapers[] = {
+    {"S", "Sharma et al. 2022"}, {"V", "Vermeeren 2017"}, {"SS", "Shen &amp; Sun 2025"}};
+
+}  // namespace
+
 std::string Ledger::to_html(std::string_view paper_filter,
                             const std::vector<std::string>& ids) const {
-  // The whole ledger (the reproduction report) gives every row an anchor, #claim-ID, and a
-  // filter by status; the excerpts in the chapters link to those anchors (an ID may appear in
-  // two excerpts of one chapter, so they carry no id of their own).
+  // One row per claim, the paper's side beside ours: the claim (ID, where, title), what the
+  // paper states with its numbers, and what we measured (status, values, note). The whole
+  // ledger (the reproduction report) is grouped by paper, gives every row an anchor,
+  // #claim-ID, a filter by status and an empty evidence cell that the book build fills with
+  // links to the chapter, figure, CSV data and check source (book/report_evidence.py). The
+  // excerpts in the chapters link to the report's rows (an ID may appear in two excerpts of
+  // one chapter, so they carry no id of their own).
   const bool whole = paper_filter.empty() && ids.empty();
   std::string out;
   if (whole) {
@@ -214,16 +237,11 @@ std::string Ledger::to_html(std::string_view paper_filter,
           to_string(st));
     out += "</p>\n";
   }
-  out +=
-      "<table class=\"vibook-claims\">\n<tr><th>ID</th><th>Where</th><th>Claim</th>"
-      "<th>Status</th><th>Measured</th><th>Note</th></tr>\n";
-  for (const auto& row : rows_) {
-    if (!paper_filter.empty() && row.info.paper != paper_filter) continue;
-    if (!ids.empty() && std::find(ids.begin(), ids.end(), row.info.id) == ids.end()) continue;
+  const auto row_html = [&](const Row& row) {
     std::string values;
-    for (const auto& [k, v] : row.result.values) {
-      values += fmt::format("{}&nbsp;=&nbsp;{:.4g}<br/>", escape(k), v);
-    }
+    for (const auto& [k, v] : row.result.values)
+      values += fmt::format("<span class=\"value\">{}&nbsp;=&nbsp;{:.4g}</span><br/>",
+                            break_at_underscores(escape(k)), v);
     const std::string status{to_string(row.result.status)};
     const std::string id = escape(row.info.id);
     const std::string anchor =
@@ -231,38 +249,61 @@ std::string Ledger::to_html(std::string_view paper_filter,
     const std::string id_cell = whole
                                     ? fmt::format("<a href=\"#claim-{0}\">{0}</a>", id)
                                     : fmt::format("<a href=\"report.html#claim-{0}\">{0}</a>", id);
-    out += fmt::format(
-        "<tr class=\"status-{}\"{}><td>{}</td><td>{}</td><td>{}</td><td><b>{}</b></td>"
-        "<td>{}</td><td>{}</td></tr>\n",
-        status, anchor, id_cell, escape(row.info.where), escape(row.info.title), status, values,
+    const std::string_view statement = paper_statement(row.info.id);
+    std::string r = fmt::format(
+        "<tr class=\"status-{}\"{}><td class=\"claim-id\">{}<br/><span class=\"where\">{}</span>"
+        "</td><td class=\"claim-paper\"><b>{}</b>{}</td><td class=\"claim-ours\"><b "
+        "class=\"status\">{}</b><br/>{}<span class=\"note\">{}</span></td>",
+        status, anchor, id_cell, escape(row.info.where), escape(row.info.title),
+        statement.empty() ? std::string() : "<br/>" + escape(statement), status, values,
         escape(row.result.note));
+    if (whole)
+      r += fmt::format("<td class=\"claim-evidence\" data-source=\"{}\"></td>",
+                       escape(row.result.source));
+    return r + "</tr>\n";
+  };
+  const std::string header = fmt::format(
+      "<table class=\"vibook-claims\">\n<tr><th>ID, where</th><th>The paper's claim (and what "
+      "we check)</th><th>What we measured</th>{}</tr>\n",
+      whole ? "<th>Evidence</th>" : "");
+  if (!whole) {
+    out += header;
+    for (const auto& row : rows_) {
+      if (!paper_filter.empty() && row.info.paper != paper_filter) continue;
+      if (!ids.empty() && std::find(ids.begin(), ids.end(), row.info.id) == ids.end()) continue;
+      out += row_html(row);
+    }
+    return out + "</table>\n";
   }
-  out += "</table>\n";
-  if (whole)
-    out +=
-        "<script>\n"
-        "(function () {  // vibook: show only the rows of the statuses ticked (offline, no "
-        "library)\n"
-        "  var boxes = document.querySelectorAll('p.vibook-filter input');\n"
-        "  function apply() {\n"
-        "    var show = {};\n"
-        "    boxes.forEach(function (b) { show[b.value] = b.checked; });\n"
-        "    document.querySelectorAll('table.vibook-claims tr[data-status]').forEach(function (r) "
-        "{\n"
-        "      r.style.display = show[r.getAttribute('data-status')] ? '' : 'none';\n"
-        "    });\n"
-        "  }\n"
-        "  boxes.forEach(function (b) { b.addEventListener('change', apply); });\n"
-        "})();\n"
-        "</script>\n";
+  for (const auto& [key, name] : kPapers) {
+    out += fmt::format("<h2 class=\"vibook-paper\" id=\"paper-{}\">{}</h2>\n", key, name);
+    out += header;
+    for (const auto& row : rows_)
+      if (row.info.paper == key) out += row_html(row);
+    out += "</table>\n";
+  }
+  out +=
+      "<script>\n"
+      "(function () {  // vibook: show only the rows of the statuses ticked (offline, no "
+      "library)\n"
+      "  var boxes = document.querySelectorAll('p.vibook-filter input');\n"
+      "  function apply() {\n"
+      "    var show = {};\n"
+      "    boxes.forEach(function (b) { show[b.value] = b.checked; });\n"
+      "    document.querySelectorAll('table.vibook-claims tr[data-status]').forEach(function (r) "
+      "{\n"
+      "      r.style.display = show[r.getAttribute('data-status')] ? '' : 'none';\n"
+      "    });\n"
+      "  }\n"
+      "  boxes.forEach(function (b) { b.addEventListener('change', apply); });\n"
+      "})();\n"
+      "</script>\n";
   return out;
 }
 
 std::string Ledger::to_summary_html() const {
   const Status order[] = {Status::reproduced, Status::reproduced_with_caveat,
                           Status::not_reproduced, Status::erratum, Status::pending};
-  const std::pair<const char*, const char*> papers[] = {
-      {"S", "Sharma et al. 2022"}, {"V", "Vermeeren 2017"}, {"SS", "Shen &amp; Sun 2025"}};
   std::string out = "<table class=\"vibook-summary\">\n<tr><th>paper</th>";
   for (Status st : order) out += fmt::format("<th>{}</th>", to_string(st));
   out += "<th>all</th></tr>\n";
@@ -271,7 +312,7 @@ std::string Ledger::to_summary_html() const {
       return (paper.empty() || r.info.paper == paper) && r.result.status == st;
     });
   };
-  for (const auto& [key, name] : papers) {
+  for (const auto& [key, name] : kPapers) {
     out += fmt::format("<tr><td>{}</td>", name);
     long all = 0;
     for (Status st : order) {

@@ -51,6 +51,10 @@ ClaimResult erratum(ClaimInfo info, std::string source,
 /// Every catalogued claim, in the order of CLAIMS.md.
 const std::vector<ClaimInfo>& catalogue();
 
+/// The full statement of a catalogued claim, with the paper's own numbers (CLAIMS.md), for the
+/// report's "the paper says" column; empty for an erratum ID (its title and note say it).
+std::string_view paper_statement(std::string_view id);
+
 /// The ledger: the catalogue, each claim pending until a result is recorded.
 class Ledger {
  public:

@@ -1,0 +1,62 @@
+// Doctests of the ledger's HTML: the reproduction report and the chapter excerpts.
+#include <doctest/doctest.h>
+
+#include <string>
+
+#include "vibook/claims/ledger.hpp"
+
+using namespace vibook::claims;
+
+namespace {
+
+std::size_t count(const std::string& text, const std::string& what) {
+  std::size_t n = 0;
+  for (auto pos = text.find(what); pos != std::string::npos; pos = text.find(what, pos + 1)) ++n;
+  return n;
+}
+
+}  // namespace
+
+TEST_CASE("every catalogued claim has the paper's statement to print beside our measurement") {
+  for (const auto& c : catalogue()) {
+    INFO(c.id);
+    CHECK(!paper_statement(c.id).empty());
+  }
+  // The paper's own numbers are in it (S-F2: AVI about 1e-4, EpAVI about 1e-13).
+  CHECK(std::string(paper_statement("S-F2")).find("1e-13") != std::string::npos);
+  CHECK(paper_statement("S-ERR-14").empty());
+}
+
+TEST_CASE("the reproduction report: grouped by paper, one anchored row per claim, side by side") {
+  Ledger ledger;
+  ClaimResult r;
+  r.id = "S-F2";
+  r.status = Status::not_reproduced;
+  r.values = {{"avi_energy_err", 2.5e-5}};
+  r.note = "a <note>";
+  r.source = "sharma-fig2";
+  ledger.record(r);
+  const std::string html = ledger.to_html();
+  // One heading and one table per paper, in the book's order.
+  CHECK(count(html, "<h2 class=\"vibook-paper\"") == 3);
+  CHECK(count(html, "<table class=\"vibook-claims\">") == 3);
+  CHECK(html.find("id=\"paper-S\"") < html.find("id=\"paper-V\""));
+  CHECK(html.find("id=\"paper-V\"") < html.find("id=\"paper-SS\""));
+  // Every claim once, with its anchor and an evidence cell naming what measured it.
+  CHECK(count(html, " id=\"claim-") == catalogue().size());
+  const auto row = html.substr(html.find("id=\"claim-S-F2\""));
+  const auto end = row.find("</tr>");
+  const std::string tr = row.substr(0, end);
+  CHECK(tr.find("data-status=\"not-reproduced\"") != std::string::npos);
+  CHECK(tr.find("about 1e-13") != std::string::npos);  // the paper's side
+  CHECK(tr.find("avi_<wbr>energy_<wbr>err&nbsp;=&nbsp;2.5e-05") != std::string::npos);  // ours
+  CHECK(tr.find("a &lt;note&gt;") != std::string::npos);                                // escaped
+  CHECK(tr.find("data-source=\"sharma-fig2\"") != std::string::npos);
+  // A chapter's excerpt: the same columns without anchors or evidence, its IDs linking to
+  // the report.
+  const std::string excerpt = ledger.to_html({}, {"S-F2"});
+  CHECK(count(excerpt, "<tr class=") == 1);
+  CHECK(excerpt.find(" id=\"claim-") == std::string::npos);
+  CHECK(excerpt.find("report.html#claim-S-F2") != std::string::npos);
+  CHECK(excerpt.find("claim-evidence") == std::string::npos);
+}
