@@ -131,6 +131,18 @@ execute_process(COMMAND ${PYTHON3} ${SOURCE_DIR}/book/figure_links.py ${OUT}/htm
 if(NOT rc EQUAL 0)
   message(FATAL_ERROR "figure_links.py failed (exit ${rc})")
 endif()
+# Previous/next links in the order of the table of contents.
+execute_process(COMMAND ${PYTHON3} ${SOURCE_DIR}/book/chapter_nav.py ${OUT}/html ${SOURCE_DIR}
+                RESULT_VARIABLE rc)
+if(NOT rc EQUAL 0)
+  message(FATAL_ERROR "chapter_nav.py failed (exit ${rc})")
+endif()
+# The report's evidence: chapter and figure, CSV data and the check's source for every claim.
+execute_process(COMMAND ${PYTHON3} ${SOURCE_DIR}/book/report_evidence.py ${OUT}/html ${SOURCE_DIR}
+                RESULT_VARIABLE rc)
+if(NOT rc EQUAL 0)
+  message(FATAL_ERROR "report_evidence.py failed (exit ${rc})")
+endif()
 if(EXISTS ${OUT}/doxygen-warnings.log)
   file(READ ${OUT}/doxygen-warnings.log warnings)
   if(NOT warnings STREQUAL "")

@@ -8,11 +8,11 @@ e2 = data_dir . "/h0_0.01_epavi.csv"
 a1 = data_dir . "/h0_0.001_avi2.csv"
 a2 = data_dir . "/h0_0.01_avi2.csv"
 do for [fmt in "svg png"] {
-  if (fmt eq "svg") { set terminal svg size 1200,500 dynamic enhanced font "DejaVu Sans,11"; set output out_base . ".svg" }
+  if (fmt eq "svg") { set terminal svg size 1000,560 dynamic enhanced font "DejaVu Sans,17"; set output out_base . ".svg" }
   if (fmt eq "png") { set terminal pngcairo size 1200,500 enhanced font "DejaVu Sans,10"; set output out_base . ".png" }
   set multiplot layout 1,2 title "Effect of h_0, Kepler e = 0.7"
   set xlabel "t"
-  set key top right font ",9"
+  set key below horizontal
   set title "(a) energy error"
   set logscale y
   set format y "10^{%T}"

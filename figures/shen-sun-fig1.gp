@@ -5,12 +5,12 @@ data_dir = ARG1
 out_base = ARG2
 load ARG0[1:strstrt(ARG0, "shen-sun-fig1.gp") - 1] . "style.gp"
 do for [fmt in "svg png"] {
-  if (fmt eq "svg") { set terminal svg size 820,620 dynamic enhanced font "DejaVu Sans,11"; set output out_base . ".svg" }
+  if (fmt eq "svg") { set terminal svg size 820,700 dynamic enhanced font "DejaVu Sans,14"; set output out_base . ".svg" }
   if (fmt eq "png") { set terminal pngcairo size 820,620 enhanced font "DejaVu Sans,10"; set output out_base . ".png" }
   set title "Pendulum φ = cos x, symplectic Euler h = 0.25"
   set xlabel "x"
   set ylabel "p"
-  set key top right font ",9"
+  set key below horizontal
   plot data_dir . "/level_H.csv" using 1:2 with points pt 7 ps 0.3 lc rgb "#7f8c8d" title "H = H(x_0, p_0)", \
        data_dir . "/level_Hmod1.csv" using 1:2 with points pt 7 ps 0.3 lc rgb "#c0392b" title "H_{mod,1} level set", \
        data_dir . "/level_Hmod2.csv" using 1:2 with points pt 7 ps 0.15 lc rgb "#27ae60" title "H_{mod,2} level set", \

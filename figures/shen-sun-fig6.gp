@@ -8,14 +8,14 @@ ictitles = "'e = 0.6 from perihelion' '(x_0, p_0) = (-3, 0, 0, 0.45)'"
 titles = "'symplectic Euler' 'Störmer–Verlet' 'VI-1' 'VI-2'"
 colors = "#e67e22 #c0392b #1b6ca8 #27ae60"
 do for [fmt in "svg png"] {
-  if (fmt eq "svg") { set terminal svg size 1200,900 dynamic enhanced font "DejaVu Sans,11"; set output out_base . ".svg" }
+  if (fmt eq "svg") { set terminal svg size 1000,940 dynamic enhanced font "DejaVu Sans,17"; set output out_base . ".svg" }
   if (fmt eq "png") { set terminal pngcairo size 1200,900 enhanced font "DejaVu Sans,10"; set output out_base . ".png" }
   set multiplot layout 2,2 title "LRL vector after one period (period closed exactly)"
   set logscale xy
   set format x "10^{%T}"
   set format y "10^{%T}"
   set xlabel "h"
-  set key bottom right font ",8"
+  set key below horizontal
   do for [j=1:2] {
     f = data_dir . "/" . word(ics, j) . ".csv"
     set title "(a) eccentricity error, " . word(ictitles, j)

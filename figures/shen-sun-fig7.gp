@@ -8,13 +8,13 @@ vi = data_dir . "/vi.csv"
 vi2 = data_dir . "/vi2.csv"
 ex = data_dir . "/exact.csv"
 do for [fmt in "svg png"] {
-  if (fmt eq "svg") { set terminal svg size 1000,500 dynamic enhanced font "DejaVu Sans,12"; set output out_base . ".svg" }
+  if (fmt eq "svg") { set terminal svg size 1000,580 dynamic enhanced font "DejaVu Sans,17"; set output out_base . ".svg" }
   if (fmt eq "png") { set terminal pngcairo size 1000,500 enhanced font "DejaVu Sans,10"; set output out_base . ".png" }
   set multiplot layout 1,2
   set size ratio -1
   set xlabel "x_1"
   set ylabel "x_2"
-  set key top right font ",9"
+  set key below horizontal
   set title "variational integrator (3.20), first order"
   plot vi using 4:5 with lines ls 1 title "numerical", ex using 3:4 with points pt 7 ps 0.35 lc rgb "#111111" title "exact"
   set title "variational integrator (3.8), second order"

@@ -5,7 +5,7 @@ out_base = ARG2
 load ARG0[1:strstrt(ARG0, "shen-sun-work-precision.gp") - 1] . "style.gp"
 f = data_dir . "/work_precision.csv"
 do for [fmt in "svg png"] {
-  if (fmt eq "svg") { set terminal svg size 900,600 dynamic enhanced font "DejaVu Sans,11"; set output out_base . ".svg" }
+  if (fmt eq "svg") { set terminal svg size 900,680 dynamic enhanced font "DejaVu Sans,15"; set output out_base . ".svg" }
   if (fmt eq "png") { set terminal pngcairo size 900,600 enhanced font "DejaVu Sans,10"; set output out_base . ".png" }
   set title "Kepler e = 0.6, 10 periods: LRL-angle error against force evaluations"
   set logscale xy
@@ -13,7 +13,7 @@ do for [fmt in "svg png"] {
   set format y "10^{%T}"
   set xlabel "force evaluations"
   set ylabel "|Δω| after 10 periods (rad)"
-  set key bottom left font ",9"
+  set key below horizontal
   plot f using (strcol(1) eq "se" ? $3 : 1/0):4 with linespoints pt 7 lc rgb "#e67e22" title "symplectic Euler (1 per step)", \
        f using (strcol(1) eq "sv" ? $3 : 1/0):4 with linespoints pt 5 lc rgb "#c0392b" title "Störmer–Verlet (1)", \
        f using (strcol(1) eq "vi1" ? $3 : 1/0):4 with linespoints pt 9 lc rgb "#1b6ca8" title "VI-1 (2)", \

@@ -9,13 +9,13 @@ svg_out = out_base . ".svg"
 png_out = out_base . ".png"
 
 do for [fmt in "svg png"] {
-  if (fmt eq "svg") { set terminal svg size 1100,420 dynamic enhanced font "DejaVu Sans,12"; set output svg_out }
+  if (fmt eq "svg") { set terminal svg size 1000,500 dynamic enhanced font "DejaVu Sans,17"; set output svg_out }
   if (fmt eq "png") { set terminal pngcairo size 1100,420 enhanced font "DejaVu Sans,10"; set output png_out }
   set multiplot layout 1,2
   set xlabel "t"
   set ylabel "x"
   set yrange [-1.25:1.6]
-  set key top center horizontal font ",9"
+  set key below horizontal
   set title "t in [0, 100]"
   plot curves using 1:2 with lines ls 2 title "exact x = cos t", \
        curves using 1:3 with lines ls 1 title "modified, order 2", \

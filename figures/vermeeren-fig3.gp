@@ -5,13 +5,13 @@ data_dir = ARG1
 out_base = ARG2
 load ARG0[1:strstrt(ARG0, "vermeeren-fig3.gp") - 1] . "style.gp"
 do for [fmt in "svg png"] {
-  if (fmt eq "svg") { set terminal svg size 1100,560 dynamic enhanced font "DejaVu Sans,11"; set output out_base . ".svg" }
+  if (fmt eq "svg") { set terminal svg size 1000,640 dynamic enhanced font "DejaVu Sans,17"; set output out_base . ".svg" }
   if (fmt eq "png") { set terminal pngcairo size 1100,560 enhanced font "DejaVu Sans,10"; set output out_base . ".png" }
   set multiplot layout 1,2 title "Kepler, Störmer–Verlet h = 0.5, t ∈ [0, 100] (the precession is measured over [0, 700])"
   set size ratio -1
   set xlabel "x_1"
   set ylabel "x_2"
-  set key bottom left font ",9"
+  set key below horizontal
   set title "discrete solution"
   plot data_dir . "/discrete.csv" using ($1 <= 100 ? $2 : 1/0):3 with points pt 7 ps 0.25 lc rgb "#1b6ca8" title "x_j", \
        data_dir . "/exact.csv" using 2:3 with lines lw 2 dt 2 lc rgb "#c0392b" title "exact"

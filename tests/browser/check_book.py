@@ -3,11 +3,19 @@
 chromium-driver, driven by python3-selenium) and fail on:
   - TeX left unrendered (raw \\( \\[ \\f$ in the text, or a MathJax error),
   - Doxygen markup shown as text (\\form#N placeholders, literal <strong>, **bold**),
-  - a broken image (not loaded, or zero width),
+  - a broken image (not loaded, or drawn 0 px wide or high: an <img>, or a figure's SVG
+    <object>, which a shrink-to-fit wrapper once drew at 0 x 0 px on every chapter),
   - a broken local link (a file that does not exist),
   - any console error (including failed resource loads),
   - on the reproduction report: a claim row without its anchor (#claim-ID), or a status filter
-    that does not hide exactly the rows of the status unticked.
+    that does not hide exactly the rows of the status unticked, or a row without links to
+    its evidence,
+  - a page that scrolls sideways at 1024 px (the window is 1024 px wide; an element meant to
+    scroll, such as a long derived formula, sits in its own overflow box and is allowed),
+  - a formula cut off (it overflows a box that hides the overflow, or the page),
+  - a figure whose text is displayed smaller than 12 px (the base size of each text element:
+    a gnuplot sub- or superscript is smaller by design and is not counted),
+  - a chapter, the report or the benchmarks page without its previous/next links.
 The book's own pages (chapters, report, index, anything with TeX), and the first page of each
 kind of Doxygen API page, are opened in the browser. The other API pages (about 300, with no
 TeX: the API documentation writes its formulas in Unicode) are checked without a browser for
@@ -31,7 +39,7 @@ opts = webdriver.ChromeOptions()
 opts.binary_location = "/usr/bin/chromium"
 for flag in ("--headless", "--no-sandbox", "--disable-gpu", "--disable-quic", "--no-first-run",
              "--disable-background-networking", "--disable-component-update", "--disable-sync",
-             "--window-size=1280,1024"):
+             "--window-size=1024,900", "--allow-file-access-from-files"):
     opts.add_argument(flag)
 opts.set_capability("goog:loggingPrefs", {"browser": "ALL"})
 driver = webdriver.Chrome(service=Service("/usr/bin/chromedriver"), options=opts)
@@ -71,18 +79,25 @@ while (walker.nextNode()) {
 document.querySelectorAll('img').forEach(i => {
   if (!i.complete || i.naturalWidth === 0) out.images.push(i.getAttribute('src'));
 });
-document.querySelectorAll('object[data]').forEach(o => out.links.push(o.getAttribute('data')));
+document.querySelectorAll('object[data]').forEach(o => {
+  out.links.push(o.getAttribute('data'));
+  const r = o.getBoundingClientRect();
+  if (r.width < 1 || r.height < 1) out.images.push(o.getAttribute('data') + ' (drawn ' + r.width + ' x ' + r.height + ' px)');
+});
 document.querySelectorAll('a[href]').forEach(a => out.links.push(a.href));
 return out;
 """
 
 FILTER = """
 const out = [];
-const rows = Array.from(document.querySelectorAll('table.vibook-claims tr')).slice(1);
+const rows = Array.from(document.querySelectorAll('table.vibook-claims tr')).filter(r => !r.querySelector('th'));
 rows.forEach(r => {
-  const id = r.cells[0] ? r.cells[0].textContent.trim() : '';
-  if (r.id !== 'claim-' + id) out.push('claim row without its anchor: ' + id);
+  const a = r.cells[0] ? r.cells[0].querySelector('a') : null;
+  const id = (a || r.cells[0] || r).textContent.trim();
+  if (!id || r.id !== 'claim-' + id) out.push('claim row without its anchor: ' + id);
   if (!r.getAttribute('data-status')) out.push('claim row without data-status: ' + id);
+  const ev = r.querySelector('td.claim-evidence');
+  if (!ev || !ev.querySelector('a')) out.push('claim row without evidence links: ' + id);
 });
 const box = document.querySelector('p.vibook-filter input[value="reproduced"]');
 if (!box) { out.push('status filter without a "reproduced" box'); return out; }
@@ -97,6 +112,51 @@ if (rows.some(r => r.style.display === 'none')) out.push('filter: rows stay hidd
 return out;
 """
 
+# Layout at 1024 px: sideways scrolling of the page, formulas cut off, figure text < 12 px.
+LAYOUT = """
+const out = [];
+const content = document.querySelector('#doc-content') || document.scrollingElement;
+if (content.scrollWidth > content.clientWidth + 1)
+  out.push('page scrolls sideways at ' + window.innerWidth + ' px: content ' + content.scrollWidth +
+           ' px wide in ' + content.clientWidth + ' px');
+const right = content.getBoundingClientRect().left + content.clientWidth;
+function box(el) {  // the nearest ancestor that clips or scrolls sideways, below the page
+  for (let a = el.parentElement; a && a !== content; a = a.parentElement) {
+    const ox = getComputedStyle(a).overflowX;
+    if (ox !== 'visible') return a;
+  }
+  return null;
+}
+document.querySelectorAll('.MathJax_SVG svg, .MathJax_SVG_Display svg').forEach(m => {
+  const r = m.getBoundingClientRect();
+  if (r.width === 0) return;
+  const b = box(m);
+  const tex = (m.closest('.MathJax_SVG_Display') || m.closest('.MathJax_SVG') || m).nextElementSibling;
+  const what = tex && tex.tagName === 'SCRIPT' ? tex.textContent.trim().slice(0, 60) : '';
+  if (b && getComputedStyle(b).overflowX === 'hidden') {
+    if (r.right > b.getBoundingClientRect().right + 1) out.push('formula cut off: ' + what);
+  } else if (!b && r.right > right + 1) {
+    out.push('formula wider than the page: ' + what);
+  }
+});
+document.querySelectorAll('div.image object[data$=".svg"]').forEach(o => {
+  const doc = o.contentDocument;
+  if (!doc) { out.push('figure not readable: ' + o.getAttribute('data')); return; }
+  let smallest = Infinity, sample = '';
+  doc.querySelectorAll('text').forEach(t => {
+    if (!t.textContent.trim()) return;
+    const ctm = t.getScreenCTM();
+    if (!ctm) return;
+    const px = parseFloat(doc.defaultView.getComputedStyle(t).fontSize) * Math.hypot(ctm.a, ctm.b);
+    if (px < smallest) { smallest = px; sample = t.textContent.trim().slice(0, 30); }
+  });
+  if (smallest < 11.95)
+    out.push('figure ' + o.getAttribute('data') + ': text displayed at ' + smallest.toFixed(1) +
+             ' px ("' + sample + '"), below 12 px');
+});
+return out;
+"""
+
 TEX = re.compile(r"\\\(|\\\[|\\f\$|\\f\[|\$\$")
 
 
@@ -106,7 +166,8 @@ def api_kind(page):
         return "source"
     if re.search(r"_8(hpp|cpp|md)\.html$", page):
         return "file"
-    for kind in ("class", "struct", "namespace", "dir_", "functions", "globals"):
+    for kind in ("class", "struct", "namespace", "dir_", "functions", "globals", "hierarchy",
+                 "annotated", "files", "pages", "union"):
         if page.startswith(kind):
             return kind
     return None
@@ -157,7 +218,10 @@ for page in pages:
         checked += 1
 print(f"book_in_browser: {len(browser_pages)} pages in Chromium, {checked} checked statically")
 
+# The chapters, the report and the benchmarks page carry previous/next links (chapter_nav.py).
+book_pages = {p for p in pages if p.startswith("chapter-") or p in ("report.html", "benchmarks.html")}
 for page in browser_pages:
+    kind = api_kind(page)
     path = os.path.join(html_dir, page)
     driver.get("file://" + path)
     state = driver.execute_async_script(WAIT_MATHJAX)
@@ -174,6 +238,12 @@ for page in browser_pages:
             target = unquote(u.path) if u.scheme == "file" else os.path.join(html_dir, unquote(u.path))
             if target and not os.path.exists(target):
                 problems.append(f"{page}: broken link {href}")
+    if kind is None:  # the book's own pages: layout at 1024 px, previous/next links
+        for e in driver.execute_script(LAYOUT):
+            problems.append(f"{page}: {e}")
+        if page in book_pages and not driver.execute_script(
+                "return document.querySelectorAll('div.vibook-pagenav').length === 2"):
+            problems.append(f"{page}: no previous/next links (book/chapter_nav.py)")
     if driver.execute_script("return document.querySelector('p.vibook-filter') !== null"):
         for e in driver.execute_script(FILTER):
             problems.append(f"{page}: {e}")

@@ -1,6 +1,8 @@
 #!/usr/bin/env bash
-# The book checker must be able to fail: a page with unrendered TeX, a broken image, a broken
-# link and a console error must be reported, each of them, and a clean page must pass.
+# The book checker must be able to fail: each defect it looks for (unrendered TeX, a broken
+# image, a broken link, a console error, leaked markup, a report row without anchor or
+# evidence, a broken filter, sideways scrolling, a formula cut off, figure text under 12 px, a
+# chapter without previous/next links) must be reported, and a clean page must pass.
 set -u
 here=$(cd "$(dirname "$0")" && pwd)
 tmp=$(mktemp -d)
@@ -37,6 +39,19 @@ cat >"$tmp/reportbad.html" <<'HTML'
 <tr class="status-reproduced" id="claim-X-2" data-status="reproduced"><td>X-2</td></tr></table>
 </body></html>
 HTML
+# A chapter without previous/next links, that scrolls sideways at 1024 px, with a formula cut
+# off by its box, a figure whose text is 8 px and a figure drawn 0 px wide.
+cat >"$tmp/small.svg" <<'SVG'
+<svg xmlns="http://www.w3.org/2000/svg" viewBox="0 0 400 200"><text x="10" y="50" font-size="8">tiny label</text></svg>
+SVG
+cat >"$tmp/chapter-bad.html" <<'HTML'
+<!DOCTYPE html><html><head><title>chapter</title></head><body>
+<div style="width:1500px">a block wider than the window</div>
+<div style="overflow:hidden;width:200px"><div class="MathJax_SVG_Display"><span class="MathJax_SVG"><svg xmlns="http://www.w3.org/2000/svg" width="600" height="20"></svg></span></div><script type="math/tex; mode=display">x = y + long</script></div>
+<div class="image" style="width:400px"><object type="image/svg+xml" data="small.svg" style="width:400px"></object></div>
+<div class="image"><span style="display:inline-block"><object type="image/svg+xml" data="small.svg"></object></span></div>
+</body></html>
+HTML
 "/usr/bin/python3" "$here/check_book.py" "$tmp" >"$tmp/bad.log" 2>&1
 rc=$?
 fail=0
@@ -46,6 +61,11 @@ for what in "unrendered TeX" "broken image" "broken link" "deliberate console er
 done
 grep -q "reportbad.html: claim row without its anchor: X-1" "$tmp/bad.log" || { echo "FAIL: row without anchor not reported"; fail=1; }
 grep -q "reportbad.html: filter: row claim-X-2 shown" "$tmp/bad.log" || { echo "FAIL: broken filter not reported"; fail=1; }
+for what in "no previous/next links" "page scrolls sideways at 1024 px" "formula cut off: x = y + long" \
+    "figure small.svg: text displayed at 8.0 px" "broken image small.svg (drawn 0 x"; do
+  grep -q "chapter-bad.html: $what" "$tmp/bad.log" || { echo "FAIL: not reported: $what"; fail=1; }
+done
+grep -q "reportbad.html: claim row without evidence links: X-2" "$tmp/bad.log" || { echo "FAIL: row without evidence not reported"; fail=1; }
 grep -q "classB.html: broken link classNowhere.html#x" "$tmp/bad.log" || { echo "FAIL: static broken link not reported"; fail=1; }
 grep -q "classB.html: broken image gone.png" "$tmp/bad.log" || { echo "FAIL: static broken image not reported"; fail=1; }
 grep -q "index.html\|classA.html" "$tmp/bad.log" && { echo "FAIL: a clean page was reported"; fail=1; }
