@@ -15,7 +15,8 @@ chromium-driver, driven by python3-selenium) and fail on:
   - a formula cut off (it overflows a box that hides the overflow, or the page),
   - a figure whose text is displayed smaller than 12 px (the base size of each text element:
     a gnuplot sub- or superscript is smaller by design and is not counted),
-  - a chapter, the report or the benchmarks page without its previous/next links.
+  - a chapter, the report or the benchmarks page without its previous/next links,
+  - a search box that finds nothing (the class MechanicalEpAVI, typed on the first page).
 The book's own pages (chapters, report, index, anything with TeX), and the first page of each
 kind of Doxygen API page, are opened in the browser. The other API pages (about 300, with no
 TeX: the API documentation writes its formulas in Unicode) are checked without a browser for
@@ -251,6 +252,29 @@ for page in browser_pages:
         if entry["level"] in ("SEVERE", "ERROR"):
             problems.append(f"{page}: console {entry['level']}: {entry['message'][:200]}")
     checked += 1
+# Doxygen's offline search: typing a class name on the first page lists it (a Doxygen book
+# only: the selftest's pages have no search box).
+if os.path.exists(os.path.join(html_dir, "navtreedata.js")):
+    from selenium.webdriver.common.by import By
+    driver.get("file://" + os.path.join(html_dir, "index.html"))
+    field = driver.find_elements(By.ID, "MSearchField")
+    if not field:
+        problems.append("index.html: no search box (Doxyfile SEARCHENGINE)")
+    else:
+        field[0].click()
+        field[0].send_keys("MechanicalEpAVI")
+        found = ""
+        for _ in range(50):  # up to 5 s for the results frame
+            frames = driver.find_elements(By.ID, "MSearchResults")
+            if frames:
+                driver.switch_to.frame(frames[0])
+                found = driver.execute_script("return document.body ? document.body.innerText : ''")
+                driver.switch_to.default_content()
+                if "MechanicalEpAVI" in found:
+                    break
+            driver.execute_script("return new Promise(r => setTimeout(r, 100))")
+        if "MechanicalEpAVI" not in found:
+            problems.append(f"index.html: the search for MechanicalEpAVI found nothing ({found[:60]!r})")
 driver.quit()
 
 for p in problems:
