@@ -146,6 +146,8 @@ endif()
 if(EXISTS ${OUT}/doxygen-warnings.log)
   file(READ ${OUT}/doxygen-warnings.log warnings)
   if(NOT warnings STREQUAL "")
-    message(WARNING "Doxygen warnings (${OUT}/doxygen-warnings.log):\n${warnings}")
+    # A warning is a broken \ref, a \snippet whose marker is gone, a formula Doxygen could not
+    # parse: the book would show it broken, so the build fails.
+    message(FATAL_ERROR "Doxygen warnings (${OUT}/doxygen-warnings.log):\n${warnings}")
   endif()
 endif()

@@ -3,6 +3,8 @@
 /// compared in Sharma et al. 2022 §3.1, (19)–(23), (26)–(27): the implicit midpoint rule with
 /// a fixed step Δa on the Poincaré-transformed Hamiltonian ḡ(q)(H(q, p) + p^t), for a
 /// mechanical H = ½|p|² + V(q).
+///
+/// Chapter: \ref chapter-avi.
 #pragma once
 
 #include <cmath>

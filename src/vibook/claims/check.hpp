@@ -6,6 +6,8 @@
 /// (`figures/registry.hpp`) is only an index of them. A *figure* is a check that also writes
 /// CSV data and has a gnuplot script `figures/ID.gp`; its doctest and `vibook figure ID` call
 /// the same `run` function.
+///
+/// Chapter: \ref report.
 #pragma once
 
 #include <filesystem>

@@ -2,6 +2,8 @@
 /// \brief The claims ledger: every claim of the three papers with a stable ID, the paper's
 /// statement, what vibook measured and the resulting status. Statuses are set only by check
 /// functions that measure; an unmeasured claim stays `pending`.
+///
+/// Chapter: \ref report.
 #pragma once
 
 #include <optional>

@@ -3,6 +3,8 @@
 /// (39)–(41), Lemma 1, and the long study of (29).
 /// The registry (`figures/registry.hpp`) lists these in a fixed order; `vibook figure ID`
 /// and the doctests beside them call the same functions.
+///
+/// Chapter: \ref chapter-epavi.
 #pragma once
 
 #include "vibook/claims/check.hpp"

@@ -4,6 +4,8 @@
 /// Lagrangian (25) for a mechanical Lagrangian, started as in the paper: a first step of
 /// length h0 taken from an accurate solution fixes the discrete energy; after that the step
 /// follows from the dynamics.
+///
+/// Chapter: \ref chapter-epavi.
 #pragma once
 
 #include "vibook/avi/avi.hpp"

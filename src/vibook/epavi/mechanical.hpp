@@ -35,6 +35,8 @@
 /// Options::tol is honoured as in the generic path: phase 1 stops as soon as |g| <= tol·|E_k|;
 /// with a tol looser than the default (4 units of round-off) that ends the step, so a loose tol
 /// leaves residuals up to tol·|E_k| (Sharma's Fig. 5); at the default, phase 2 always runs.
+///
+/// Chapter: \ref chapter-epavi.
 #pragma once
 
 #include <algorithm>

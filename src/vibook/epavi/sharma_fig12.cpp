@@ -244,12 +244,12 @@ std::vector<claims::ClaimResult> run_fig1(const Context& ctx) {
     if (!(s->max_energy_err >= 1e-8 && s->max_energy_err <= 1e-6)) {
       ok = false, why += fmt::format("AVI energy error {:.2g} not about 1e-7; ", s->max_energy_err);
     }
-    // [sharma-fig1-criterion]
   }
   if (!(r.epavi.max_energy_err <= 1e-12))
     ok = false, why += "EpAVI discrete energy error above 1e-12; ";
   ok = trajectories_ok(r, why) && ok;
   c.status = ok ? claims::Status::reproduced_with_caveat : claims::Status::not_reproduced;
+  // [sharma-fig1-criterion]
   const claims::ClaimResult f3 = mean_steps(0.1, r, 1.17, 1.23);
   c.note = fmt::format(
       "e = 0.1, h0 = 0.001, 10 periods (the span is our reading), exact Kepler reference. "
@@ -267,6 +267,7 @@ std::vector<claims::ClaimResult> run_fig2(const Context& ctx) {
   const Fig12 r = compute(0.7, ctx);
   claims::ClaimResult c = series_claim("S-F2", "sharma-fig2", r);
   std::string why;
+  // [s-f2-criterion]
   // AVI steps significantly larger than EpAVI's (mean ratio ≥ 1.1); steps grow 12–15× h0 (max
   // step of each method in [12, 15]); AVI energy errors about 1e-4 ([1e-5, 1e-3]); EpAVI about
   // 1e-13 (≤ 1e-11); trajectories as in Fig. 1.
@@ -286,6 +287,7 @@ std::vector<claims::ClaimResult> run_fig2(const Context& ctx) {
     ok = false, why += "EpAVI discrete energy error above 1e-11; ";
   ok = trajectories_ok(r, why) && ok;
   c.status = ok ? claims::Status::reproduced_with_caveat : claims::Status::not_reproduced;
+  // [s-f2-criterion]
   const claims::ClaimResult f3 = mean_steps(0.7, r, 6.22, 7.93);
   c.note = fmt::format(
       "e = 0.7, h0 = 0.001, 10 periods (our reading of the span), exact Kepler reference. Mean "

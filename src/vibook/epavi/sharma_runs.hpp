@@ -2,6 +2,8 @@
 /// \brief Runs of EpAVI (any precision) and AVI1/AVI2 on Kepler from perihelion, as used by the
 /// Sharma et al. 2022 studies (Figs. 3–5, (29), the existence map): statistics of one run and
 /// an optional decimated CSV stream. Memory is constant in the number of steps.
+///
+/// Chapter: \ref chapter-epavi.
 #pragma once
 
 #include <cmath>

@@ -68,11 +68,13 @@ std::vector<claims::ClaimResult> run_fig3(const Context& ctx) {
     c.values.push_back({tag + "_epavi_min_step_over_h0", ep.min_step});
     c.values.push_back({tag + "_avi2_min_step_over_h0", a2.min_step});
     const double pe = e < 0.5 ? 1.17 : 6.22, pa = e < 0.5 ? 1.23 : 7.93;
+    // [s-f3-criterion]
     // Criterion (fixed with S-F3 of Figs. 1–2): the printed means within 0.01 h0, and
     // 0 < t'(a) bounded (every step positive, the largest finite).
     const bool here = std::abs(ep.mean_step - pe) <= 0.01 && std::abs(a2.mean_step - pa) <= 0.01 &&
                       ep.min_step > 0 && a2.min_step > 0 && std::isfinite(ep.max_step) &&
                       !ep.failure && !a2.failure;
+    // [s-f3-criterion]
     ok = ok && here;
     txt += fmt::format(
         "e = {}: one cycle, mean steps EpAVI {:.3f} h0 (printed {}), AVI1 {:.3f}, AVI2 {:.3f} h0 "
@@ -103,6 +105,7 @@ std::vector<claims::ClaimResult> run_fig4(const Context& ctx) {
     push_run(c, tag + "_epavi", ep[i]);
     push_run(c, tag + "_avi2", a2[i]);
   }
+  // [s-f4-criterion]
   // Criterion, fixed before measuring: AVI2's energy error grows with h0 (ratio > 10, about
   // h0² = 100 for a second-order method); EpAVI's changes "little" (ratio within [0.1, 10]);
   // h_k/h0 nearly independent of h0 (mean and max step within 5%). The text says EpAVI's
@@ -118,6 +121,7 @@ std::vector<claims::ClaimResult> run_fig4(const Context& ctx) {
   c.values.push_back({"avi2_mean_step_ratio", am});
   const bool ok = ra > 10 && re >= 0.1 && re <= 10 && std::abs(rm - 1) <= 0.05 &&
                   std::abs(rx - 1) <= 0.05 && std::abs(am - 1) <= 0.05;
+  // [s-f4-criterion]
   c.status = ok ? claims::Status::reproduced_with_caveat : claims::Status::not_reproduced;
   c.note = fmt::format(
       "e = 0.7, 10 periods. AVI2 energy error {:.2g} (h0 = 0.001) → {:.2g} (h0 = 0.01), ratio "
@@ -165,12 +169,14 @@ std::vector<claims::ClaimResult> run_fig5(const Context& ctx) {
     profile = std::max(profile, std::abs(r[i].mean_step / r[n - 1].mean_step - 1));
   c.values.push_back({"mpfr18_unit_roundoff", u});
   c.values.push_back({"max_rel_change_of_mean_step", profile});
+  // [s-f5-criterion]
   // Criterion, fixed before this run (after a first reading of the tolerance as a bound on
   // the step Δt had shown no effect at all, see the chapter): the drift falls monotonically as
   // the tolerance falls; at 1e-17 every step's energy residual is at round-off (≤ 10 u|E|);
   // the step profile changes by less than 1e-4 (mean step).
   const bool roundoff = r[n - 1].max_residual <= 10 * u * E;
   const bool ok = monotone && roundoff && profile <= 1e-4;
+  // [s-f5-criterion]
   for (const auto& x : r)
     if (x.failure) c.note += "Run failed: " + *x.failure + ". ";
   c.status = ok ? claims::Status::reproduced_with_caveat : claims::Status::not_reproduced;
@@ -221,6 +227,7 @@ std::vector<claims::ClaimResult> run_eq29(const Context& ctx) {
   c.source = "check-s-eq29";
   const AdaptiveRun& p = out[0].run;
   const AdaptiveRun& q = out[1].run;
+  // [s-eq29-criterion]
   const double bound_k = double(p.steps) * p.max_jump;
   c.values = {{"steps", double(p.steps)},
               {"final_abs_dE_d", std::abs(p.final_dEd)},
@@ -232,6 +239,7 @@ std::vector<claims::ClaimResult> run_eq29(const Context& ctx) {
               {"initial_target_steps", double(q.steps)}};
   const bool ok = p.steps >= N && p.max_dEd <= p.sum_abs_jump && p.sum_abs_jump <= bound_k &&
                   !p.failure && !q.failure;
+  // [s-eq29-criterion]
   c.status = ok ? claims::Status::reproduced : claims::Status::not_reproduced;
   c.note = fmt::format(
       "EpAVI in double, e = 0.7, h0 = 0.01, {} steps (t = {:.4g}). |E_N − E_1| = {:.3g}, max_k "
@@ -272,6 +280,7 @@ std::vector<claims::ClaimResult> run_eq39(const Context&) {
     dev_printed_E = std::max(dev_printed_E,
                              std::abs(printed_E - E_derived) / std::max(std::abs(E_derived), 1.0));
   }
+  // [s-eq39-criterion]
   // Round-off bound for agreement, fixed beforehand: 1e3·ε relative (1000 random points,
   // |q| ≤ 2, Δt ≥ 1e-3: cancellation in v and the force term stays below ~100 ulp).
   const double tol = 1e3 * kEps;
@@ -283,6 +292,7 @@ std::vector<claims::ClaimResult> run_eq39(const Context&) {
               {"max_rel_dev_printed_41", dev_printed_E}};
   const bool e41 = dev_printed_E <= tol, e39 = dev_printed_p <= tol;
   c.status = (e41 && e39) ? claims::Status::reproduced : claims::Status::not_reproduced;
+  // [s-eq39-criterion]
   c.note = fmt::format(
       "1000 random points (t_k, q_k, t_k+1, q_k+1), |q| ≤ 1.5, Δt ∈ [1e-3, 0.1]. (41) agrees "
       "with D1 L_d to {:.2g} (relative; bound 1e3ε). (39)–(40) as printed differ from −D2 L_d "
@@ -354,6 +364,7 @@ std::vector<claims::ClaimResult> run_l1(const Context&) {
       worst = std::max(worst, r.lpNorm<Eigen::Infinity>() / scale);
     }
   }
+  // [s-l1-criterion]
   // Bound fixed beforehand: the EpAVI steps were solved to 4ε relative; the residual of the
   // same equations in a different (algebraically equal) form: ≤ 1e3·ε relative.
   claims::ClaimResult c;
@@ -363,6 +374,7 @@ std::vector<claims::ClaimResult> run_l1(const Context&) {
               {"max_rel_residual_36_37", worst},
               {"epavi_max_energy_residual", max_rel_ep}};
   c.status = worst <= 1e3 * kEps ? claims::Status::reproduced : claims::Status::not_reproduced;
+  // [s-l1-criterion]
   c.note = fmt::format(
       "The discrete Euler–Lagrange equations (36)–(37) of L̄_d (35) for L̄ (31), with Δa = 1e-3, "
       "0.01 and 1, evaluated by AutoDiff along an EpAVI trajectory (e = 0.7, h0 = 0.01, {} "
@@ -489,10 +501,12 @@ std::vector<claims::ClaimResult> run_existence(const Context& ctx) {
       "over Δt ∈ [1e-6, 10] (701 log-spaced points), stays positive: minimum {:.3g} at Δt = "
       "{:.3g}, {} sign changes. No admissible root exists there (a fold, not a missed root). ",
       g_min, g_at_min_dt, sign_changes);
+  // [s-x-exist-criterion]
   // The claim (Shibberu; the issue): for some states no admissible root exists. Reproduced if
   // some run stops with the typed failure; every failure must be the typed SolveError.
   c.status = failures > 0 && sign_changes == 0 && g_min > 0 ? claims::Status::reproduced
                                                             : claims::Status::not_reproduced;
+  // [s-x-exist-criterion]
   c.note = txt +
            "Each run starts at perihelion and lasts one period (a quarter for h0 = 1e-4); a "
            "failure is the typed SolveError 'no admissible time step' (the energy equation has "

@@ -192,11 +192,13 @@ std::vector<claims::ClaimResult> run_p1(const Context&) {
   r.id = "V-P1";
   r.source = "check-v-ex1";
   bool ok = true;
+  // [v-p1-criterion]
   for (const auto& o : del_consistency_orders()) {
     r.values.push_back({"consistency_order/" + o.method, o.slope});
     ok = ok && o.points >= 5 && o.slope > 0.9;  // consistency: at least O(h)
   }
   r.status = ok ? claims::Status::reproduced : claims::Status::not_reproduced;
+  // [v-p1-criterion]
   r.note = ok ? "Evaluated on the exact Kepler solution (e = 0.5), the discrete Euler–Lagrange "
                 "expression divided by h vanishes like h^p with fitted p ≈ 2 for all four "
                 "discrete Lagrangians of Example 1 (Prop. 1 asserts p ≥ 1; the extra order "
@@ -211,6 +213,7 @@ std::vector<claims::ClaimResult> run(const Context&) {
   r.source = "check-v-ex1";
   bool ok = true;
   double worst = 0.0;
+  // [v-ex1-criterion]
   for (const auto& [name, a] : v_ex1_agreements()) {
     r.values.push_back({name + "/one_step_rel_diff", a.one_step});
     r.values.push_back({name + "/trajectory_rel_diff_400_steps", a.trajectory});
@@ -222,6 +225,7 @@ std::vector<claims::ClaimResult> run(const Context&) {
     r.values.push_back({"order/" + o.method, o.slope});
     ok = ok && o.points >= 5 && std::abs(o.slope - o.expected) < kOrderTolerance;
   }
+  // [v-ex1-criterion]
   const double factor = v_ex1_literal_scaling_factor();
   r.values.push_back({"literal_eq5_momentum_over_p_at_h0.05", factor});
   if (ok) {

@@ -1,5 +1,7 @@
 /// \file check_v_ex1.hpp
 /// \brief Claim V-EX1 measurements, shared by the ledger check and its doctest.
+///
+/// Chapter: \ref chapter-vi.
 #pragma once
 
 #include <string>

@@ -3,6 +3,8 @@
 /// Proposition 1): claims V-EX1, V-P1.
 /// The registry (`figures/registry.hpp`) lists these in a fixed order; `vibook figure ID`
 /// and the doctests beside them call the same functions.
+///
+/// Chapter: \ref chapter-vi.
 #pragma once
 
 #include "vibook/claims/check.hpp"

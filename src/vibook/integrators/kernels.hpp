@@ -6,6 +6,8 @@
 ///
 /// Interface (shared with DelIntegrator): `SolveReport step(q, p, h)` advances (q, p) in
 /// place. Explicit kernels report zero residual and zero iterations.
+///
+/// Chapter: \ref chapter-vi.
 #pragma once
 
 #include "vibook/core/autodiff.hpp"

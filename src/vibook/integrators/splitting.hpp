@@ -11,6 +11,8 @@
 ///
 /// Methods (command line names): vi1 = Φ_h (3.3); vi1-adjoint = Φ*_h; vi2 = Φ_{h/2} ∘ Φ*_{h/2}
 /// (3.8), the paper's VI-2 (3.15); vi2-adjoint = Φ*_{h/2} ∘ Φ_{h/2} (3.7).
+///
+/// Chapter: \ref chapter-kepler-lrl.
 #pragma once
 
 #include <string_view>

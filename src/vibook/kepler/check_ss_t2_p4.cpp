@@ -101,6 +101,7 @@ std::vector<claims::ClaimResult> run_t2(const Context&) {
   cases.push_back({"lorentz_div_B_2_control", false,
                    helmholtz_check<3>(unit_mass<3>(), lorentz_force(false), opt)});
   claims::ClaimResult c;
+  // [ss-t2-criterion]
   c.id = "SS-T2";
   c.source = "check-ss-t2";
   bool ok = true;
@@ -116,6 +117,7 @@ std::vector<claims::ClaimResult> run_t2(const Context&) {
                        k.r.residual_b, k.r.residual_c);
   }
   c.status = ok ? claims::Status::reproduced : claims::Status::not_reproduced;
+  // [ss-t2-criterion]
   c.note = fmt::format(
       "(2.2a)–(2.2c) at {} random (t, x, ẋ, ẍ) per system, x ∈ (3, 0[, 0]) + [−1, 1]^n, ẋ, ẍ ∈ "
       "[−1, 1]^n, c = 3; verdict: every residual ≤ 1e3ε relative to its terms. {}{}",
@@ -190,6 +192,7 @@ std::vector<claims::ClaimResult> run_p4(const Context&) {
       }
     }
   }
+  // [ss-p4-criterion]
   const double tol = 1e3 * kEps;
   claims::ClaimResult c;
   c.id = "SS-P4";
@@ -200,6 +203,7 @@ std::vector<claims::ClaimResult> run_p4(const Context&) {
     ok = ok && worst[k] <= tol;
   }
   c.status = ok ? claims::Status::reproduced : claims::Status::not_reproduced;
+  // [ss-p4-criterion]
   c.note = fmt::format(
       "dP/dt = N[x]·Q with N[x] = ẍ + x/|x|³, checked at 500 random (x, ẋ, ẍ), x ∈ (2, 0) + "
       "[−1, 1]², identically in ẍ: largest relative residuals H {:.1e}, m {:.1e}, A1 {:.1e}, "

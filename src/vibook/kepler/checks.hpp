@@ -3,6 +3,8 @@
 /// §2–5): Helmholtz conditions, Noether characteristics, splitting VIs, Figs. 2–6.
 /// The registry (`figures/registry.hpp`) lists these in a fixed order; `vibook figure ID`
 /// and the doctests beside them call the same functions.
+///
+/// Chapter: \ref chapter-kepler-lrl.
 #pragma once
 
 #include "vibook/claims/check.hpp"

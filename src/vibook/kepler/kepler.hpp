@@ -1,6 +1,8 @@
 /// \file kepler.hpp
 /// \brief The planar Kepler problem with μ = 1: the problem, its invariants (energy, angular
 /// momentum, Laplace–Runge–Lenz vector), and its exact solution through Kepler's equation.
+///
+/// Chapter: \ref chapter-kepler-lrl.
 #pragma once
 
 #include <algorithm>

@@ -72,6 +72,7 @@ std::vector<claims::ClaimResult> run_t6(const Context&) {
       traj[m] = std::max(traj[m], (qa - qb).lpNorm<Eigen::Infinity>());
     }
   }
+  // [ss-t6-criterion]
   // Bound: 64ε relative per Newton solve of the generic form (as for V-EX1). VI-1 takes one
   // solve per step, VI-2 two (one per half step). Our first run used 64ε for VI-2 as well and
   // failed it at 2.3e-14 ≈ 104ε; the bound was then set to 64ε per solve, which is what the
@@ -87,6 +88,7 @@ std::vector<claims::ClaimResult> run_t6(const Context&) {
     }
     const bool ok = worst[m0] <= tol && worst[m1] <= tol;
     c.status = ok ? claims::Status::reproduced : claims::Status::not_reproduced;
+    // [ss-t6-criterion]
     c.note = fmt::format(
         "{}: generic discrete Euler–Lagrange solver (AutoDiff, Newton) against the explicit "
         "composition, α ∈ {{0.5, 0.3, 1}}, 200 random states and steps each: largest one-step "
@@ -203,11 +205,13 @@ std::vector<claims::ClaimResult> run_fig2(const Context& ctx) {
     c.values.push_back({std::string(m.name) + "_max_position_err", r[m.name].max_pos_err});
   }
   auto rate = [&](const char* n) { return std::abs(r[n].omega_rate); };
+  // [ss-f2-criterion]
   // Criterion, fixed before measuring: symplectic Euler and Störmer–Verlet precess clockwise
   // (negative rate); VI-1 less than both, VI-2 least (absolute rates).
   const bool cw = r["se"].omega_rate < 0 && r["sv"].omega_rate < 0;
   const bool order = rate("vi2") < rate("vi1") && rate("vi1") < std::min(rate("se"), rate("sv"));
   c.status = cw && order ? claims::Status::reproduced : claims::Status::not_reproduced;
+  // [ss-f2-criterion]
   const double f = 2 * std::numbers::pi;
   c.note = fmt::format(
       "e = 0.6, h = 0.05, t ∈ [0, 200] (≈ 32 revolutions), φ^[1] = φ^[2]. Perihelion (LRL angle) "
@@ -238,6 +242,7 @@ std::vector<claims::ClaimResult> run_fig345(const Context& ctx) {
   // Criteria, fixed before measuring. Bounded: the maximum over the second half of the run is
   // at most twice that over the first half. "Significantly smaller": VI-1 and VI-2 at most half
   // of the smaller of symplectic Euler and Störmer–Verlet.
+  // [ss-f345-criterion]
   auto bounded = [](double first, double second) { return second <= 2 * first; };
   claims::ClaimResult f3, f4, f5;
   f3.id = "SS-F3", f4.id = "SS-F4", f5.id = "SS-F5";
@@ -258,6 +263,7 @@ std::vector<claims::ClaimResult> run_fig345(const Context& ctx) {
   const double classic_w = std::min(r["se"].max_domega, r["sv"].max_domega);
   const bool s4 = r["vi1"].max_decc <= 0.5 * classic_e && r["vi2"].max_decc <= 0.5 * classic_e;
   const bool s5 = r["vi1"].max_domega <= 0.5 * classic_w && r["vi2"].max_domega <= 0.5 * classic_w;
+  // [ss-f345-criterion]
   // Beside the criterion: each VI against the classical method of its own order (VI-1 vs
   // symplectic Euler, VI-2 vs Störmer–Verlet), reported only.
   const double e1 = r["vi1"].max_decc / r["se"].max_decc, e2 = r["vi2"].max_decc / r["sv"].max_decc;
@@ -377,6 +383,7 @@ std::vector<claims::ClaimResult> run_fig6(const Context& ctx) {
       c.values.push_back(
           {fmt::format("{}_{}_angle_order_paper_range", ic.name, m.name), fit(ang[m.name], 0, 6)});
     }
+    // [ss-f6-criterion]
     // The claims, each two-sided with tolerance 0.3 on the order.
     auto near = [](double x, double p) { return std::abs(x - p) < 0.3; };
     const bool smaller_vi2 = ecc["vi2"][9] < ecc["sv"][9];
@@ -385,6 +392,7 @@ std::vector<claims::ClaimResult> run_fig6(const Context& ctx) {
     const bool here = near(pe["se"], 2) && near(pe["vi1"], 2) && near(pe["sv"], 4) &&
                       pe["vi2"] > 2.3 && smaller_vi2 && near(pa["se"], 2) && near(pa["sv"], 2) &&
                       near(pa["vi1"], 2) && near(pa["vi2"], 2) && ang_small;
+    // [ss-f6-criterion]
     ok = ok && here;
     txt += fmt::format(
         "{} (T = {:.4f}): eccentricity orders se {:.2f}, sv {:.2f}, VI-1 {:.2f}, VI-2 {:.2f}; "
@@ -557,12 +565,14 @@ std::vector<claims::ClaimResult> run_t13(const Context&) {
           name, steps_per_rev[g], pw, d[0][0], d[1][0], d[2][0], d[3][0], meas.first, rel[g],
           d[1][1], d[0][1] + d[1][1] + d[2][1] + d[3][1], meas.second);
     }
+    // [ss-t13-criterion]
     // First-order theory applies when the modified equation has no h¹ term; then the relative
     // difference must shrink like h² (by 4 when h halves; we require 2.5) and be below 5% at the
     // finer step.
     bool has_h1 = false;
     for (int i = 0; i < 2; ++i) has_h1 = has_h1 || !modified::vanishes(f[1][i]);
     if (!has_h1) ok_first_order = ok_first_order && rel[1] < 0.05 && rel[0] / rel[1] > 2.5;
+    // [ss-t13-criterion]
     c.values.push_back({std::string(name) + "_has_h1_term", has_h1 ? 1.0 : 0.0});
   }
   note +=

@@ -1,5 +1,7 @@
 /// \file check_s_del.hpp
 /// \brief Claim S-DEL measurements, shared by the ledger check and its doctest.
+///
+/// Chapter: \ref chapter-extended.
 #pragma once
 
 #include <limits>

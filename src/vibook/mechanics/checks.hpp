@@ -2,6 +2,8 @@
 /// \brief The checks of extended discrete mechanics (Sharma et al. 2022 §2.2): claim S-DEL.
 /// The registry (`figures/registry.hpp`) lists these in a fixed order; `vibook figure ID`
 /// and the doctests beside them call the same functions.
+///
+/// Chapter: \ref chapter-extended.
 #pragma once
 
 #include "vibook/claims/check.hpp"

@@ -2,6 +2,8 @@
 /// \brief The generic variational integrator: any discrete Lagrangian in, a symplectic
 /// one-step map (q_k, p_k) -> (q_{k+1}, p_{k+1}) out. Vermeeren 2017 §2, (4)–(5), in the
 /// scaling L_d ≈ h·L (see discrete_lagrangian.hpp).
+///
+/// Chapter: \ref chapter-vi.
 #pragma once
 
 #include "vibook/core/autodiff.hpp"

@@ -17,6 +17,8 @@
 /// check this at compile time. Mixed second derivatives use nested AutoDiff, on which
 /// Eigen's sqrt, sin, cos, exp and log work but `pow` does not: write integer powers as
 /// products (q*q*q*q).
+///
+/// Chapter: \ref chapter-vi.
 #pragma once
 
 #include <type_traits>

@@ -8,6 +8,8 @@
 /// **Sign of the discrete energy.** vibook uses E_k = −D3 L_d(t_{k−1}, q_{k−1}, t_k, q_k),
 /// as in (18); this is what (12) and (16) need, and it equals the energy H for
 /// L_d = (t1 − t0) L. The paper's (14) prints it without the minus (erratum S-ERR-14).
+///
+/// Chapter: \ref chapter-extended.
 #pragma once
 
 #include <algorithm>

@@ -9,6 +9,8 @@
 /// helmholtz_check evaluates the three residuals at random points (t, x, ẋ, ẍ), every first
 /// and second derivative of M and f from one nested-AutoDiff evaluation, and calls the system
 /// variational when every residual is at round-off relative to the size of its terms.
+///
+/// Chapter: \ref chapter-kepler-lrl.
 #pragma once
 
 #include <algorithm>

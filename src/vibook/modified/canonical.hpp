@@ -12,6 +12,8 @@
 /// the printed monomial (without its numerical coefficient), then the coefficient. The same
 /// expression prints the same way in every run, and `canonical_operands` gives the
 /// evaluation order for compiled.hpp.
+///
+/// Chapter: \ref chapter-modified.
 #pragma once
 
 #include <string>

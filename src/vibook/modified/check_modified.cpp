@@ -26,6 +26,7 @@ using modified::Method;
 using modified::Potential;
 
 // Term-by-term comparison of the engine's result with the print.
+// [modified-print-criterion]
 struct Tally {
   int compared = 0;
   std::vector<std::string> mismatches;
@@ -48,6 +49,7 @@ struct Tally {
     r.values.push_back({"terms_differing", static_cast<double>(mismatches.size())});
   }
 };
+// [modified-print-criterion]
 
 claims::ClaimResult result(const std::string& id, const Tally& t, const std::string& what) {
   claims::ClaimResult r;

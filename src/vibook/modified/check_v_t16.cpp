@@ -257,6 +257,7 @@ std::string describe(const Study& s) {
   return fmt::format("{}: slope {:.2f}, expected {} [{}]", s.label, s.slope, s.expected, pts);
 }
 
+// [v-t16-criterion]
 // One claim from a list of order studies: reproduced when every fitted order is within
 // tolerance of its expected order; each slope a value, each study in the note.
 claims::ClaimResult summarize(const std::string& id, const std::vector<Study>& studies,
@@ -274,6 +275,7 @@ claims::ClaimResult summarize(const std::string& id, const std::vector<Study>& s
   r.status = all ? claims::Status::reproduced : claims::Status::not_reproduced;
   return r;
 }
+// [v-t16-criterion]
 
 std::vector<claims::ClaimResult> run(const Context&) {
   const std::lock_guard<std::mutex> lock(modified::ginac_mutex());  // GiNaC: one thread

@@ -3,6 +3,8 @@
 /// (Vermeeren 2017 §3–5, Sharma et al. 2022 §4.4, Shen & Sun 2025 §4 and App. A).
 /// The registry (`figures/registry.hpp`) lists these in a fixed order; `vibook figure ID`
 /// and the doctests beside them call the same functions.
+///
+/// Chapter: \ref chapter-modified.
 #pragma once
 
 #include "vibook/claims/check.hpp"

@@ -2,6 +2,8 @@
 /// \brief A GiNaC expression turned into a numerical function of chosen symbols, evaluated in
 /// long double: the engine's modified equations and Hamiltonians integrated and measured
 /// numerically (Vermeeren 2017, Theorem 16).
+///
+/// Chapter: \ref chapter-modified.
 #pragma once
 
 #include <functional>

@@ -15,6 +15,8 @@
 ///   Engine E(make_discrete_lagrangian(Method::sv, Potential::generic, 1), 4);
 ///   auto f = E.modified_equation();  // f[0][0] = -U_1, f[2][0] = (U_111 v1^2 - U_11 U_1)/12
 /// \endcode
+///
+/// Chapter: \ref chapter-modified.
 #pragma once
 
 #include <algorithm>

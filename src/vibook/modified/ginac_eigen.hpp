@@ -2,6 +2,8 @@
 /// \brief GiNaC expressions as an Eigen scalar, so that the discrete Lagrangians written for
 /// the integrators (templates over the scalar type) can be evaluated symbolically. Only the
 /// arithmetic the discrete Lagrangians use is needed: +, −, ×, / and scalar × vector.
+///
+/// Chapter: \ref chapter-modified.
 #pragma once
 
 #include <cmath>

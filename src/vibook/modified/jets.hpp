@@ -3,6 +3,8 @@
 /// x, ẋ, ẍ, … of a curve as independent GiNaC symbols, abstract functions whose partial
 /// derivatives at x are symbols, and the operators ∂/∂x^{(ℓ)} and the total time derivative
 /// D = Σ x^{(ℓ+1)} ∂/∂x^{(ℓ)}.
+///
+/// Chapter: \ref chapter-modified.
 #pragma once
 
 #include <map>

@@ -3,6 +3,8 @@
 /// evaluation of an arbitrary expression on series arguments. This is how the engine expands
 /// a discrete Lagrangian along a smooth curve (Vermeeren 2017, (13)) without ever forming a
 /// term beyond the requested order.
+///
+/// Chapter: \ref chapter-modified.
 #pragma once
 
 #include <limits>

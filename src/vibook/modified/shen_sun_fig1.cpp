@@ -128,8 +128,10 @@ std::vector<claims::ClaimResult> run(const Context& ctx) {
               {"spread_Hmod2", spread[2]},
               {"ratio_Hmod1_over_H", spread[1] / spread[0]},
               {"eq420_matches_engine_to_O(h^2)", eq420 ? 1.0 : 0.0}};
+  // [ss-f1-criterion]
   const bool closer = spread[1] < 0.2 * spread[0];
   c.status = closer && eq420 ? claims::Status::reproduced : claims::Status::not_reproduced;
+  // [ss-f1-criterion]
   c.note = fmt::format(
       "Pendulum φ = cos x, symplectic Euler (4.16), (x0, p0, h) = (π/2, 0.5, 0.25), {} steps. "
       "Spread (max − min) along the discrete orbit: H {:.3e}, H_mod,1 {:.3e}, H_mod,2 {:.3e} "

@@ -1,5 +1,7 @@
 /// \file shen_sun_prints.hpp
 /// \brief Printed formulas of Shen & Sun 2025 used by more than one check, typed once.
+///
+/// Chapter: \ref chapter-modified.
 #pragma once
 
 #include <algorithm>

@@ -177,6 +177,7 @@ std::vector<claims::ClaimResult> run(const Context& ctx) {
     for (int i = 1; i <= 2 * k; ++i) c /= double(i);
     return c;
   };
+  // [v-ex3-series-criterion]
   const double c2_err = std::abs(coeff(2) - 1.0 / 12.0) * 12.0;
   const double c3_err = std::abs(coeff(3) - 1.0 / 90.0) * 90.0;
   double series = 0.0;
@@ -190,6 +191,7 @@ std::vector<claims::ClaimResult> run(const Context& ctx) {
   if (!(coeff(1) == 1.0 && c2_err <= 2 * kEps && c3_err <= 2 * kEps && series_rel <= 8 * kEps)) {
     failed.push_back("arcsin² series");
   }
+  // [v-ex3-series-criterion]
 
   if (failed.empty()) {
     r.status = claims::Status::reproduced;

@@ -139,12 +139,14 @@ std::vector<claims::ClaimResult> run(const Context& ctx) {
               {"modified2_over_discrete", pm2.per_revolution / pd.per_revolution},
               {"modified4_over_discrete", pm4.per_revolution / pd.per_revolution},
               {"x1_check_dev", max_dev_x1}};
+  // [v-ex4-criterion]
   const bool clockwise = pd.revolutions < 0 && pm2.revolutions < 0;
   const bool ccw_precession = pd.per_revolution > 0 && pm2.per_revolution > 0;
   const double ratio = pm2.per_revolution / pd.per_revolution;
   const bool marginally_slower = ratio < 1.0 && ratio > 0.8;
   c.status = clockwise && ccw_precession && marginally_slower ? claims::Status::reproduced
                                                               : claims::Status::not_reproduced;
+  // [v-ex4-criterion]
   c.note = fmt::format(
       "h = 0.5, {} revolutions (t ≤ {}). The body moves {} (signed revolutions {:.1f}); the LRL "
       "angle, fitted linearly in time, advances {:+.4f} rad per revolution for the discrete orbit "

@@ -3,6 +3,8 @@
 /// (3.16)–(3.22), §5): Theorem 8, Fig. 7, the precession sweep.
 /// The registry (`figures/registry.hpp`) lists these in a fixed order; `vibook figure ID`
 /// and the doctests beside them call the same functions.
+///
+/// Chapter: \ref chapter-relativistic.
 #pragma once
 
 #include "vibook/claims/check.hpp"

@@ -3,6 +3,8 @@
 /// precessing orbit 1/r = B(1 + e cos Γ(ψ − ψ_p)) and its parametrization by proper time,
 /// which reduces to Kepler's equation (derivation in the book's chapter "Relativistic
 /// Kepler").
+///
+/// Chapter: \ref chapter-relativistic.
 #pragma once
 
 #include <cmath>

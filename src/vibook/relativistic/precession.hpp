@@ -2,6 +2,8 @@
 /// \brief Measured perihelion advance of a planar orbit from its sampled positions,
 /// streaming (O(1) memory): perihelia are the local minima of r, located between samples by
 /// a parabola through three radii, their polar angle interpolated to the same point.
+///
+/// Chapter: \ref chapter-relativistic.
 #pragma once
 
 #include <cmath>

@@ -9,6 +9,8 @@
 /// coupling). With this φ the paper's (3.16), (3.17) and its Fig. 7 Lagrangian
 /// L = −½c²γ² + ½|u|² + γ/|x| all agree; its §3 text (φ = 1/|x|) and its (2.7) Lagrangian
 /// (L = −c²γ⁻¹ + φ) do not — see the errata SS-ERR-PHI and SS-ERR-2.7.
+///
+/// Chapter: \ref chapter-relativistic.
 #pragma once
 
 #include <cmath>

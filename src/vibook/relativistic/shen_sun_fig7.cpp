@@ -91,8 +91,10 @@ std::vector<claims::ClaimResult> run_ss_t8(const Context&) {
                {"generic_320_vs_composition_one_step_max", m.generic_vs_composition},
                {"round_off_bound", m.bound},
                {"generic_max_newton_iterations", double(m.max_newton_iterations)}};
+  // [ss-t8-criterion]
   const bool t8_ok = m.vi322_vs_composition <= m.bound && m.generic_vs_composition <= m.bound;
   t8.status = t8_ok ? claims::Status::reproduced_with_caveat : claims::Status::not_reproduced;
+  // [ss-t8-criterion]
   t8.note = fmt::format(
       "c = {}, h = {}, 800 steps from the Fig. 7 data. The generic discrete Euler–Lagrange solver "
       "on (3.20), the explicit form (3.22) and the composition φ_H2∘φ_H1∘φ_Ht take the same step "
@@ -264,11 +266,13 @@ std::vector<claims::ClaimResult> run_fig7(const Context& ctx) {
               {"vi2_L_drift", vi2.L_drift},
               {"vi_shell_drift", vi.shell_drift},
               {"vi2_shell_drift", vi2.shell_drift}};
+  // [ss-f7-criterion]
   // Criteria fixed before measuring: both numerical orbits within 5% (radially) of the exact
   // orbit over τ ∈ [0, 40] — what "agree with the exact orbit" means at the scale of the
   // paper's plot — and the second-order method closer than the first-order one.
   const bool ok = vi.orbit_err < 0.05 && vi2.orbit_err < 0.05 && vi2.orbit_err < vi.orbit_err;
   r.status = ok ? claims::Status::reproduced_with_caveat : claims::Status::not_reproduced;
+  // [ss-f7-criterion]
   r.note = fmt::format(
       "Readings: the paper gives no c; we take c = {} (exact precession {:.3f} rad per revolution, "
       "visible); t ∈ [0, 40] is read as proper time τ (the integrators step in τ; coordinate time "
@@ -338,7 +342,9 @@ std::vector<claims::ClaimResult> run_sweep(const Context& ctx) {
     const double exact = ex.precession_per_revolution();
     const double m2 = vi2.precession.value_or(NAN), m1 = vi.precession.value_or(NAN);
     worst_rel = std::max(worst_rel, std::abs(m2 - exact) / exact);
+    // [ss-f7-precession-criterion]
     ok = ok && std::abs(m2 - exact) <= 0.01 * exact + floor;
+    // [ss-f7-precession-criterion]
     r.values.push_back({fmt::format("c{}_exact", c), exact});
     r.values.push_back({fmt::format("c{}_vi2_measured", c), m2});
     if (rec) rec->offer(i++, std::array<double, 5>{c, exact, m2, m1, 0.0});

@@ -1,5 +1,7 @@
 /// \file shen_sun_fig7.hpp
 /// \brief Relativistic Kepler measurements shared by the ledger checks and their doctests.
+///
+/// Chapter: \ref chapter-relativistic.
 #pragma once
 
 #include <array>

@@ -32,6 +32,8 @@
 /// Every error in the text (syntax, an unknown symbol or function, a vector where a scalar is
 /// needed, a dimension that does not fit) is an ArgumentError naming `--ld`, `--potential` or
 /// `--dim`, with one line saying what is wrong.
+///
+/// Chapter: \ref chapter-verify.
 #pragma once
 
 #include <ginac/ginac.h>

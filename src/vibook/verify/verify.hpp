@@ -13,6 +13,8 @@
 /// \endcode
 /// Each result carries the numbers it was judged on and the criterion, so that a report can
 /// print both; none of these functions prints or throws on a failed criterion (`passed` says).
+///
+/// Chapter: \ref chapter-verify.
 #pragma once
 
 #include <algorithm>
