@@ -2,6 +2,7 @@
 #include <filesystem>
 #include <fstream>
 #include <iostream>
+#include <map>
 #include <string_view>
 #include <system_error>
 
@@ -124,8 +125,31 @@ int cmd_claims(bool json, const std::string& json_out, const std::string& html_d
     write("summary.html", ledger.to_summary_html());
     for (const char* paper : {"S", "V", "SS"})
       write(fmt::format("claims-{}.html", paper), ledger.to_html(paper));
+    // A chapter shows each claim once: a claim measured by several checks is shown with the
+    // most specific of them (the one measuring the fewest claims; the first of equals in the
+    // registry's order), and the others link to its row instead of repeating it.
+    std::map<std::string, const figures::Check*> owner;
+    for (const auto* list : {&figures::registry(), &figures::long_studies()})
+      for (const auto& c : *list)
+        for (const auto& id : c.claims) {
+          const auto it = owner.find(id);
+          if (it == owner.end() || c.claims.size() < it->second->claims.size()) owner[id] = &c;
+        }
     for (const auto* list : {&figures::registry(), &figures::long_studies()}) {
-      for (const auto& c : *list) write(c.id + ".html", ledger.to_html({}, c.claims));
+      for (const auto& c : *list) {
+        std::vector<std::string> own, elsewhere;
+        for (const auto& id : c.claims) (owner[id] == &c ? own : elsewhere).push_back(id);
+        std::string html = own.empty() ? std::string() : ledger.to_html({}, own);
+        if (!elsewhere.empty()) {
+          html +=
+              "<p class=\"vibook-claims-elsewhere\">Also measured here, and shown with its own "
+              "check:";
+          for (const auto& id : elsewhere)
+            html += fmt::format(" <a href=\"report.html#claim-{0}\">{0}</a>", id);
+          html += ".</p>\n";
+        }
+        write(c.id + ".html", html);
+      }
     }
   }
   if (json) {

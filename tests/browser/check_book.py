@@ -16,6 +16,7 @@ chromium-driver, driven by python3-selenium) and fail on:
   - a figure whose text is displayed smaller than 12 px (the base size of each text element:
     a gnuplot sub- or superscript is smaller by design and is not counted),
   - a chapter, the report or the benchmarks page without its previous/next links,
+  - a claim shown twice in the chapters,
   - a search box that finds nothing (the class MechanicalEpAVI, typed on the first page).
 The book's own pages (chapters, report, index, anything with TeX), and the first page of each
 kind of Doxygen API page, are opened in the browser. The other API pages (about 300, with no
@@ -252,6 +253,16 @@ for page in browser_pages:
         if entry["level"] in ("SEVERE", "ERROR"):
             problems.append(f"{page}: console {entry['level']}: {entry['message'][:200]}")
     checked += 1
+# Each claim is shown once in the chapters (other checks that measure it link to its row).
+shown = {}
+for page in sorted(p for p in pages if p.startswith("chapter-")):
+    with open(os.path.join(html_dir, page), encoding="utf-8") as f:
+        for cid in re.findall(r'class="claim-id"><a href="report\.html#claim-([\w.-]+)"', f.read()):
+            shown.setdefault(cid, []).append(page)
+for cid, where in sorted(shown.items()):
+    if len(where) > 1:
+        problems.append(f"{where[0]}: claim {cid} shown {len(where)} times ({', '.join(where)})")
+
 # Doxygen's offline search: typing a class name on the first page lists it (a Doxygen book
 # only: the selftest's pages have no search box).
 if os.path.exists(os.path.join(html_dir, "navtreedata.js")):

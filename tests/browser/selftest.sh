@@ -50,6 +50,8 @@ cat >"$tmp/chapter-bad.html" <<'HTML'
 <div style="overflow:hidden;width:200px"><div class="MathJax_SVG_Display"><span class="MathJax_SVG"><svg xmlns="http://www.w3.org/2000/svg" width="600" height="20"></svg></span></div><script type="math/tex; mode=display">x = y + long</script></div>
 <div class="image" style="width:400px"><object type="image/svg+xml" data="small.svg" style="width:400px"></object></div>
 <div class="image"><span style="display:inline-block"><object type="image/svg+xml" data="small.svg"></object></span></div>
+<table class="vibook-claims"><tr><td class="claim-id"><a href="report.html#claim-X-9">X-9</a></td></tr>
+<tr><td class="claim-id"><a href="report.html#claim-X-9">X-9</a></td></tr></table>
 </body></html>
 HTML
 "/usr/bin/python3" "$here/check_book.py" "$tmp" >"$tmp/bad.log" 2>&1
@@ -65,6 +67,7 @@ for what in "no previous/next links" "page scrolls sideways at 1024 px" "formula
     "figure small.svg: text displayed at 8.0 px" "broken image small.svg (drawn 0 x"; do
   grep -q "chapter-bad.html: $what" "$tmp/bad.log" || { echo "FAIL: not reported: $what"; fail=1; }
 done
+grep -q "chapter-bad.html: claim X-9 shown 2 times" "$tmp/bad.log" || { echo "FAIL: claim shown twice not reported"; fail=1; }
 grep -q "reportbad.html: claim row without evidence links: X-2" "$tmp/bad.log" || { echo "FAIL: row without evidence not reported"; fail=1; }
 grep -q "classB.html: broken link classNowhere.html#x" "$tmp/bad.log" || { echo "FAIL: static broken link not reported"; fail=1; }
 grep -q "classB.html: broken image gone.png" "$tmp/bad.log" || { echo "FAIL: static broken image not reported"; fail=1; }
