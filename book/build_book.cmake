@@ -48,8 +48,15 @@ if(NOT rc EQUAL 0)
   message(FATAL_ERROR "vibook claims failed (exit ${rc})")
 endif()
 
-# 2b. The modified-equations chapter's formulas, derived by the engine now.
 find_program(PYTHON3 python3 REQUIRED)
+# 2a. Every printed formula: one table per paper, each outcome read from this ledger.
+execute_process(COMMAND ${PYTHON3} ${SOURCE_DIR}/book/formulas.py ${OUT}/claims.json ${GEN}
+                RESULT_VARIABLE rc)
+if(NOT rc EQUAL 0)
+  message(FATAL_ERROR "formulas.py failed (exit ${rc})")
+endif()
+
+# 2b. The modified-equations chapter's formulas, derived by the engine now.
 execute_process(COMMAND ${PYTHON3} ${SOURCE_DIR}/book/engine_formulas.py ${VIBOOK} ${GEN}
                 RESULT_VARIABLE rc)
 if(NOT rc EQUAL 0)

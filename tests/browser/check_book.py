@@ -221,7 +221,8 @@ for page in pages:
 print(f"book_in_browser: {len(browser_pages)} pages in Chromium, {checked} checked statically")
 
 # The chapters, the report and the benchmarks page carry previous/next links (chapter_nav.py).
-book_pages = {p for p in pages if p.startswith("chapter-") or p in ("report.html", "benchmarks.html")}
+book_pages = {p for p in pages
+              if p.startswith("chapter-") or p in ("report.html", "formulas.html", "benchmarks.html")}
 for page in browser_pages:
     kind = api_kind(page)
     path = os.path.join(html_dir, page)
