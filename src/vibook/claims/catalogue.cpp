@@ -110,7 +110,8 @@ std::string_view paper_statement(std::string_view id) {
        "Lagrangian (64), its Euler–Lagrange equation (65)–(66). Derive each and compare with the "
        "print."},
       {"S-X-EXIST",
-       "Not a claim of the paper (issue #3): for which eccentricities e and initial steps h0 the "
+       "Not a claim of the paper but a question it leaves open (Shibberu): for which "
+       "eccentricities e and initial steps h0 the "
        "energy equation (16) has an admissible root, so that EpAVI can step at all."},
       {"V-EX1",
        "The discrete Lagrangians generate the implicit midpoint rule, Störmer–Verlet, and the two "

@@ -238,10 +238,29 @@ std::string Ledger::to_html(std::string_view paper_filter,
     out += "</p>\n";
   }
   const auto row_html = [&](const Row& row) {
+    // Long lists of values and long notes (a symbolic mismatch spelled out term by term)
+    // are folded: the first values and the note's opening sentences show, the rest opens on a
+    // click.
+    constexpr std::size_t kShownValues = 8, kNoteShown = 400;
     std::string values;
-    for (const auto& [k, v] : row.result.values)
+    for (std::size_t i = 0; i < row.result.values.size(); ++i) {
+      if (i == kShownValues && row.result.values.size() > kShownValues + 2)
+        values += fmt::format("<details><summary>{} more values</summary>",
+                              row.result.values.size() - kShownValues);
+      const auto& [k, v] = row.result.values[i];
       values += fmt::format("<span class=\"value\">{}&nbsp;=&nbsp;{:.4g}</span><br/>",
                             break_at_underscores(escape(k)), v);
+    }
+    if (row.result.values.size() > kShownValues + 2) values += "</details>";
+    std::string note = escape(row.result.note);
+    if (row.result.note.size() > kNoteShown + 200) {
+      // Cut after the first sentence that ends past kNoteShown characters of the raw note.
+      const std::size_t cut = row.result.note.find(". ", kNoteShown);
+      if (cut != std::string::npos && cut + 2 < row.result.note.size())
+        note = escape(row.result.note.substr(0, cut + 1)) +
+               "<details><summary>the rest of the note</summary>" +
+               escape(row.result.note.substr(cut + 2)) + "</details>";
+    }
     const std::string status{to_string(row.result.status)};
     const std::string id = escape(row.info.id);
     const std::string anchor =
@@ -253,10 +272,9 @@ std::string Ledger::to_html(std::string_view paper_filter,
     std::string r = fmt::format(
         "<tr class=\"status-{}\"{}><td class=\"claim-id\">{}<br/><span class=\"where\">{}</span>"
         "</td><td class=\"claim-paper\"><b>{}</b>{}</td><td class=\"claim-ours\"><b "
-        "class=\"status\">{}</b><br/>{}<span class=\"note\">{}</span></td>",
+        "class=\"status\">{}</b><br/>{}<div class=\"note\">{}</div></td>",
         status, anchor, id_cell, escape(row.info.where), escape(row.info.title),
-        statement.empty() ? std::string() : "<br/>" + escape(statement), status, values,
-        escape(row.result.note));
+        statement.empty() ? std::string() : "<br/>" + escape(statement), status, values, note);
     if (whole)
       r += fmt::format("<td class=\"claim-evidence\" data-source=\"{}\"></td>",
                        escape(row.result.source));

@@ -60,3 +60,22 @@ TEST_CASE("the reproduction report: grouped by paper, one anchored row per claim
   CHECK(excerpt.find("report.html#claim-S-F2") != std::string::npos);
   CHECK(excerpt.find("claim-evidence") == std::string::npos);
 }
+
+TEST_CASE("long notes and long lists of values are folded, nothing is lost") {
+  Ledger ledger;
+  ClaimResult r;
+  r.id = "SS-T12";
+  r.status = Status::not_reproduced;
+  for (int i = 0; i < 12; ++i) r.values.push_back({"v" + std::to_string(i), double(i)});
+  std::string note;
+  for (int i = 0; i < 40; ++i) note += "Sentence " + std::to_string(i) + " of the note. ";
+  r.note = note + "Last <term>.";
+  r.source = "check-modified";
+  ledger.record(r);
+  const std::string html = ledger.to_html({}, {"SS-T12"});
+  CHECK(count(html, "<details>") == 2);
+  CHECK(html.find("<summary>4 more values</summary>") != std::string::npos);
+  CHECK(html.find("v11&nbsp;=&nbsp;11") != std::string::npos);  // folded, not dropped
+  CHECK(html.find("Sentence 0 of the note.") < html.find("<summary>the rest of the note"));
+  CHECK(html.find("Last &lt;term&gt;.") != std::string::npos);
+}

@@ -502,7 +502,7 @@ std::vector<claims::ClaimResult> run_existence(const Context& ctx) {
       "{:.3g}, {} sign changes. No admissible root exists there (a fold, not a missed root). ",
       g_min, g_at_min_dt, sign_changes);
   // [s-x-exist-criterion]
-  // The claim (Shibberu; the issue): for some states no admissible root exists. Reproduced if
+  // The claim (Shibberu): for some states no admissible root exists. Reproduced if
   // some run stops with the typed failure; every failure must be the typed SolveError.
   c.status = failures > 0 && sign_changes == 0 && g_min > 0 ? claims::Status::reproduced
                                                             : claims::Status::not_reproduced;
