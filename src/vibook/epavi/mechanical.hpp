@@ -147,7 +147,8 @@ class MechanicalEpAVI {
         break;  // (15) not solved at this trial step: the generic path searches instead
       }
       if (!is_finite(gW)) break;
-      if (abs(gW) <= floor(k, x, tau, G, target)) {
+      const W floor_here = floor(k, x, tau, G, target);
+      if (abs(gW) <= floor_here) {
         converged = true;
         break;
       }
@@ -158,16 +159,30 @@ class MechanicalEpAVI {
       const T dg = -tau * constant<T>(0.25) * (v.dot(AHv) + G.dot(AG));
       const T next = tau - T(gW) / dg;
       if (!is_finite(next) || !(next > center / T(2) && next < center * T(2))) break;
-      // Newton's start for (15) at the new step: q_{k+1} moved along dq_{k+1}/dτ = A⁻¹(p_k − τG).
+      // Newton's start for (15) at the new step: q_{k+1} moved along its Taylor polynomial in
+      // τ. Differentiating (15), A x' = p_k − τG and A x'' = −G − τ H x' + O(τ²), with
+      // x = q_{k+1}(τ) and A = I + τ²H/4.
       const VecN dx_dtau = Ainv * VecN(k.p - G * tau);
+      const VecN H_dx = H_ * dx_dtau;
+      const VecN d2x_dtau2 = Ainv * VecN(-G - H_dx * tau);
       const T dtau = next - tau;
-      x += dx_dtau * dtau;
+      x += (dx_dtau + d2x_dtau2 * T(dtau * constant<T>(0.5))) * dtau;
       tau = next;
-      // The linear move is exact to ½|d²q_{k+1}/dτ²|·δτ² ≈ ½|G|·δτ²: below the rounding of
-      // q_{k+1} when δτ is small enough, and then (15) needs no new solve. (16) is checked at
-      // the moved point; if it does not hold to the tooth height, the loop solves as usual.
-      if (dtau * dtau * G.template lpNorm<Eigen::Infinity>() <=
-          u_ * x.template lpNorm<Eigen::Infinity>()) {
+      // The quadratic move is exact to |x‴|·|δτ|³/6, where x‴ = −(3/2)H x' + O(τ); the bound
+      // below, 3|H||x'| + |G|/τ, is twice that and more. Below the rounding of q_{k+1}, (15)
+      // needs no new solve. (16) is checked at the moved point; if it does not hold to the
+      // tooth height, the loop solves as usual. Either way the residual of (15) at the point
+      // returned is measured at the end of the step.
+      const T x3 = T(3) * H_.template lpNorm<Eigen::Infinity>() *
+                       dx_dtau.template lpNorm<Eigen::Infinity>() +
+                   G.template lpNorm<Eigen::Infinity>() / tau;
+      // Whether (16) can hold at the new step at all: Newton's next residual is about
+      // |g''|δτ²/2 = |dg/dτ|δτ²/(2τ) (g'' ≈ g'/τ, from the formula for dg/dτ above). In double
+      // precision one Newton step usually gets below the tooth height; in the wider types the
+      // first does not, and checking (16) there would cost an evaluation for nothing.
+      const bool newton_done = W(abs(dg) * dtau * dtau / (T(2) * tau)) <= floor_here;
+      if (newton_done &&
+          x3 * abs(dtau) * dtau * dtau <= T(6) * u_ * x.template lpNorm<Eigen::Infinity>()) {
         gW = energy(k.q, x, tau) - targetW;
         ++rep.root_iterations;
         if (is_finite(gW) && abs(gW) <= floor(k, x, tau, G, target)) {
@@ -184,6 +199,7 @@ class MechanicalEpAVI {
     // A tolerance looser than the default, once met, ends the step here. Otherwise phase 2
     // always runs: where phase 1 stops, Newton has approached the zero from one side, and a
     // residual left there would carry that side's sign into E_{k+1}.
+    const T tau1 = tau;  // where phase 1 stopped, with q_{k+1} solved from (15)
     const bool loose = options_.tol > 4 * to_double(u_) * (1 + 1e-9);
     if (!(loose && abs(gW) <= W(options_.tol) * abs(targetW))) {
       const VecW dq = widen(x) - widen(k.q);
@@ -199,10 +215,24 @@ class MechanicalEpAVI {
     // (17)–(18) at the chosen point.
     const VecN dq = x - k.q;
     G = P_.gradient(VecN((k.q + x) * constant<T>(0.5)));
+    // The momentum solve may stop on its contraction estimate, and phase 1 may move q_{k+1}
+    // along its Taylor polynomial without a new solve: both are checked here, by the Newton
+    // correction that (15) would still ask for at the (q_{k+1}, τ) where phase 1 stopped (∇V
+    // at its midpoint is the G just computed: phase 2 moves τ only). A correction above the
+    // solve's own bound sends the step to the generic path.
+    {
+      using std::abs;
+      const VecN F1 = dq + G * T(tau1 * tau1 * constant<T>(0.5)) - k.p * tau1;
+      // A⁻¹ of the last Newton update of τ: close enough to scale a correction this small.
+      const VecN correction = Ainv * F1;
+      const T scale = dq.template lpNorm<Eigen::Infinity>();
+      for (int i = 0; i < N; ++i)
+        if (!(abs(correction(i)) <= T(2) * u_ * std::max({abs(x(i)), abs(k.q(i)), scale})))
+          return fall_back(s, rep);
+    }
+    const VecN F = dq + G * T(tau * tau * constant<T>(0.5)) - k.p * tau;
     rep.energy_residual = std::abs(to_double(T(gW)));
-    rep.momentum_residual = to_double(T(
-        (dq + G * T(tau * tau * constant<T>(0.5)) - k.p * tau).template lpNorm<Eigen::Infinity>() /
-        tau));
+    rep.momentum_residual = to_double(T(F.template lpNorm<Eigen::Infinity>() / tau));
     h_.prev_dt = h_.last_dt;
     h_.last_dt = tau;
     h_.increment = dq;
@@ -234,8 +264,10 @@ class MechanicalEpAVI {
   }
   static bool is_finite(const W& w) { return ScalarTraits<W>::is_finite(w); }
 
-  /// ∇²V(x) by one level of forward AutoDiff on the problem's gradient.
+  /// ∇²V(x): the problem's own `hessian(q)` when it has one (Kepler writes it out), else one
+  /// level of forward AutoDiff on the problem's gradient.
   MatN hessian(const VecN& x) const {
+    if constexpr (requires(const Problem& p, const VecN& y) { p.hessian(y); }) return P_.hessian(x);
     using D = ad::Dual<N, T>;
     Vec<D, N> y;
     for (int i = 0; i < N; ++i) y(i) = D(x(i), N, i);
@@ -259,6 +291,7 @@ class MechanicalEpAVI {
   void solve_momentum(const State& k, const T& tau, const MatN& Ainv, VecN& x, VecN& G,
                       int& iterations) const {
     const T half_tau2 = tau * tau * constant<T>(0.5);
+    T previous(0);  // max |dx| of the last iteration
     for (int it = 1; it <= options_.max_newton_iterations; ++it) {
       G = P_.gradient(VecN((k.q + x) * constant<T>(0.5)));
       const VecN F = (x - k.q) + G * half_tau2 - k.p * tau;
@@ -267,7 +300,14 @@ class MechanicalEpAVI {
       ++iterations;
       using std::abs;
       const T scale = (x - k.q).template lpNorm<Eigen::Infinity>();
-      bool small = true;
+      const T size = dx.template lpNorm<Eigen::Infinity>();
+      // The contraction θ = |dx_k|/|dx_{k−1}| of this solve: the next correction would be
+      // about θ|dx_k|, so once θ/(1 − θ)·|dx_k| is below the bound the iterate is converged
+      // without another evaluation of ∇V (the stopping rule of simplified Newton methods).
+      const T theta = it >= 2 && previous > T(0) ? T(size / previous) : T(1);
+      const T ahead = theta < T(0.5) ? T(theta / (T(1) - theta)) : T(-1);
+      previous = size;
+      bool small = true, converged_ahead = ahead >= T(0);
       for (int i = 0; i < N; ++i) {
         if (!ScalarTraits<T>::is_finite(dx(i)) || !ScalarTraits<T>::is_finite(x(i)))
           throw SolveError(
@@ -275,9 +315,11 @@ class MechanicalEpAVI {
                   ": the momentum equation (15) gave a non-finite value at step " +
                   text::g(to_double(tau), 17),
               SolveReport{to_double(T(F.template lpNorm<Eigen::Infinity>())), iterations, false});
-        if (abs(dx(i)) > T(2) * u_ * std::max({abs(x(i)), abs(k.q(i)), scale})) small = false;
+        const T bound = T(2) * u_ * std::max({abs(x(i)), abs(k.q(i)), scale});
+        if (abs(dx(i)) > bound) small = false;
+        if (!(ahead * abs(dx(i)) <= bound)) converged_ahead = false;
       }
-      if (small) return;
+      if (small || converged_ahead) return;
     }
     throw SolveError("EpAVI step at t = " + text::g(to_double(k.t), 17) +
                          ": the momentum equation (15) did not converge in " +

@@ -34,6 +34,20 @@ struct Kepler {
     const S inv_r3 = 1.0 / (r2 * sqrt(r2));
     return (q * inv_r3).eval();
   }
+  /// ∇²V = I/r³ − 3 q qᵀ/r⁵, written out: the closed-form EpAVI (epavi/mechanical.hpp) uses a
+  /// problem's own Hessian when it has one, and AutoDiff of the gradient otherwise.
+  template <class S>
+  Eigen::Matrix<S, 2, 2> hessian(const Vec<S, 2>& q) const {
+    using std::sqrt;
+    const S r2 = q.squaredNorm();
+    const S inv_r3 = 1.0 / (r2 * sqrt(r2));
+    const S c = S(3) * inv_r3 / r2;
+    Eigen::Matrix<S, 2, 2> H;
+    H(0, 0) = inv_r3 - c * q(0) * q(0);
+    H(1, 1) = inv_r3 - c * q(1) * q(1);
+    H(0, 1) = H(1, 0) = -c * q(0) * q(1);
+    return H;
+  }
 };
 
 /// Invariants of the Kepler flow at one state.

@@ -105,3 +105,22 @@ TEST_CASE("problem gradients agree with AutoDiff of their potentials") {
       ad::gradient<1>([](const auto& y) { return HarmonicOscillator{}.potential(y); }, x);
   CHECK(std::abs(gh(0) - HarmonicOscillator{}.gradient(x)(0)) <= 2 * kEps);
 }
+
+TEST_CASE("Kepler's written-out Hessian agrees with AutoDiff of its gradient") {
+  // The closed-form EpAVI uses Kepler::hessian instead of AutoDiff when a problem has one.
+  std::mt19937_64 rng(7);
+  std::uniform_real_distribution<double> u(-2.0, 2.0);
+  for (int n = 0; n < 200; ++n) {
+    const Vec<double, 2> q(u(rng), u(rng));
+    if (q.norm() < 0.05) continue;
+    using D = ad::Dual<2, double>;
+    const Vec<D, 2> y(D(q(0), 2, 0), D(q(1), 2, 1));
+    const Vec<D, 2> g = Kepler{}.gradient(y);
+    Eigen::Matrix2d H;
+    for (int i = 0; i < 2; ++i) H.row(i) = g(i).derivatives().transpose();
+    const Eigen::Matrix2d Hk = Kepler{}.hessian(q);
+    INFO("q = (" << q(0) << ", " << q(1) << ")");
+    CHECK((H - Hk).lpNorm<Eigen::Infinity>() <= 16 * kEps * H.lpNorm<Eigen::Infinity>());
+    CHECK(Hk(0, 1) == Hk(1, 0));
+  }
+}
