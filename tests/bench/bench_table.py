@@ -81,7 +81,8 @@ if sv and ep:
           "evaluations of the energy equation (16). On the generic path each comes with a Newton "
           "solve of the momentum equations (15) by nested AutoDiff; on the closed form, with "
           "the derivatives of (25) written out from the potential's gradient and Hessian, "
-          "usually only the first does (later ones extrapolate the position along the step). AVI's and "
+          "in double usually only the first does (after the Newton update of the step the "
+          "position moves along its Taylor polynomial in the step). AVI's and "
           "the midpoint rule's are Newton iterations. mpfr18: one repetition of 300 steps (MPFR "
           "at 18 digits, the paper's VPA).</p>")
 
