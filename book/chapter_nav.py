@@ -6,29 +6,19 @@ book, in the order of the table of contents on the first page (book/index.md, it
 The bar goes at the top and the bottom of each page's contents:
     ← previous: TITLE    contents    next: TITLE →
 Usage: chapter_nav.py BOOK_HTML_DIR SOURCE_DIR"""
-import glob
 import html
 import os
 import re
 import sys
 
+import bookfiles
+
 html_dir, source_dir = sys.argv[1], sys.argv[2]
-
-
-def titles():
-    """page id -> title, from the first heading of each Markdown page."""
-    out = {}
-    for md in glob.glob(os.path.join(source_dir, "book", "*.md")):
-        with open(md, encoding="utf-8") as f:
-            m = re.match(r"#\s+(.*?)\s*\{#([\w-]+)\}", f.read())
-        if m:
-            out[m.group(2)] = m.group(1)
-    return out
 
 
 with open(os.path.join(source_dir, "book", "index.md"), encoding="utf-8") as f:
     order = re.findall(r"\\subpage\s+([\w-]+)", f.read())
-title = titles()
+title = {page: t for page, t, _ in bookfiles.pages(source_dir)}
 title["mainpage"] = "vibook"
 pages = ["mainpage"] + order
 files = {p: ("index.html" if p == "mainpage" else p + ".html") for p in pages}
@@ -61,9 +51,6 @@ for i, page in enumerate(pages):
         sys.exit(f"chapter_nav: no contents block in {files[page]}")
     start += len('<div class="contents">')
     text = text[:start] + "\n" + bar + text[start:end] + bar + "\n" + text[end:]
-    tmp = path + ".tmp"
-    with open(tmp, "w", encoding="utf-8") as f:
-        f.write(text)
-    os.replace(tmp, path)
+    bookfiles.write_text(path, text)
     changed += 1
 print(f"chapter_nav: previous/next links on {changed} pages")

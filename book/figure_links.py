@@ -11,6 +11,8 @@ import os
 import re
 import sys
 
+import bookfiles
+
 html_dir = sys.argv[1]
 figures = os.path.join(html_dir, "figures")
 FIGURE = re.compile(
@@ -47,9 +49,6 @@ for page in sorted(os.listdir(html_dir)):
 
     new = FIGURE.sub(number, text)
     if new != text:
-        tmp = path + ".tmp"
-        with open(tmp, "w", encoding="utf-8") as f:
-            f.write(new)
-        os.replace(tmp, path)
+        bookfiles.write_text(path, new)
         changed += 1
 print(f"figure_links: figures numbered and linked on {changed} pages")

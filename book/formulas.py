@@ -26,6 +26,8 @@ import json
 import os
 import sys
 
+import bookfiles
+
 EPS = 2.0 ** -52
 
 S = [
@@ -250,7 +252,7 @@ def main():
                        f'<td>{html.escape(where)}</td><td>{html.escape(what)}</td>'
                        f'<td>{text}</td></tr>\n')
         out.append("</table>\n")
-        write(os.path.join(gen, f"formulas-{key}.html"), "".join(out))
+        bookfiles.write_text(os.path.join(gen, f"formulas-{key}.html"), "".join(out))
     missing = sorted(i for i, c in claims.items() if "-ERR-" in i and i not in named)
     if missing:
         sys.exit(f"formulas.py: errata of the ledger in no formula table: {', '.join(missing)}")
@@ -263,15 +265,8 @@ def main():
         summary += [f'<td class="formula-{k}">{counts.get((key, k), 0)}</td>' for k, _ in kinds]
         summary.append("</tr>\n")
     summary.append("</table>\n")
-    write(os.path.join(gen, "formulas-summary.html"), "".join(summary))
+    bookfiles.write_text(os.path.join(gen, "formulas-summary.html"), "".join(summary))
     print(f"formulas: {sum(len(r) for _, _, r in PAPERS)} rows, outcomes from {claims_json}")
-
-
-def write(path, text):
-    tmp = path + ".tmp"
-    with open(tmp, "w", encoding="utf-8") as f:
-        f.write(text)
-    os.replace(tmp, path)
 
 
 if __name__ == "__main__":

@@ -19,19 +19,15 @@ import os
 import re
 import sys
 
+import bookfiles
+
 html_dir, source_dir = sys.argv[1], sys.argv[2]
 
 
 def chapters():
     """CHECK -> (page id, chapter title) from the book's Markdown sources."""
     out = {}
-    for md in sorted(glob.glob(os.path.join(source_dir, "book", "*.md"))):
-        with open(md, encoding="utf-8") as f:
-            text = f.read()
-        head = re.match(r"#\s+(.*?)\s*\{#([\w-]+)\}", text)
-        if not head:
-            continue
-        title, page = head.group(1), head.group(2)
+    for page, title, text in bookfiles.pages(source_dir):
         for check in re.findall(r"\\htmlinclude\s+([\w-]+)\.html|\\image\s+html\s+([\w-]+)\.svg",
                                 text):
             out.setdefault(check[0] or check[1], (page, title))
@@ -126,8 +122,5 @@ if problems:
     for p in problems:
         print("report_evidence:", p, file=sys.stderr)
     sys.exit(1)
-tmp = report + ".tmp"
-with open(tmp, "w", encoding="utf-8") as f:
-    f.write(new)
-os.replace(tmp, report)
+bookfiles.write_text(report, new)
 print(f"report_evidence: evidence linked for {count} claims")

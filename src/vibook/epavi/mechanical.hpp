@@ -227,8 +227,7 @@ class MechanicalEpAVI {
       const VecN correction = Ainv * F1;
       const T scale = dq.template lpNorm<Eigen::Infinity>();
       for (int i = 0; i < N; ++i)
-        if (!(abs(correction(i)) <= T(2) * u_ * std::max({abs(x(i)), abs(k.q(i)), scale})))
-          return fall_back(s, rep);
+        if (!(abs(correction(i)) <= rounding_bound(x(i), k.q(i), scale))) return fall_back(s, rep);
     }
     const VecN F = dq + G * T(tau * tau * constant<T>(0.5)) - k.p * tau;
     rep.energy_residual = std::abs(to_double(T(gW)));
@@ -315,7 +314,7 @@ class MechanicalEpAVI {
                   ": the momentum equation (15) gave a non-finite value at step " +
                   text::g(to_double(tau), 17),
               SolveReport{to_double(T(F.template lpNorm<Eigen::Infinity>())), iterations, false});
-        const T bound = T(2) * u_ * std::max({abs(x(i)), abs(k.q(i)), scale});
+        const T bound = rounding_bound(x(i), k.q(i), scale);
         if (abs(dx(i)) > bound) small = false;
         if (!(ahead * abs(dx(i)) <= bound)) converged_ahead = false;
       }
@@ -326,6 +325,14 @@ class MechanicalEpAVI {
                          std::to_string(options_.max_newton_iterations) + " iterations at step " +
                          text::g(to_double(tau), 17),
                      SolveReport{0, iterations, false});
+  }
+
+  /// The size below which a Newton correction of component i of q_{k+1} is rounding: 2u times
+  /// the largest of |q_{k+1,i}|, |q_{k,i}| and the step |q_{k+1} − q_k|. The momentum solve
+  /// stops on it, and the step's final check of (15) holds the point returned to it.
+  T rounding_bound(const T& x_i, const T& q_i, const T& scale) const {
+    using std::abs;
+    return T(2) * u_ * std::max({abs(x_i), abs(q_i), scale});
   }
 
   /// Where phase 1 stops: the height of a tooth of g (what rounding q_{k+1} to T moves it by)
