@@ -7,6 +7,7 @@
 /// Chapter: \ref chapter-avi.
 #pragma once
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <utility>
@@ -15,6 +16,7 @@
 
 #include "vibook/core/autodiff.hpp"
 #include "vibook/core/errors.hpp"
+#include "vibook/core/extrapolate.hpp"
 #include "vibook/core/format.hpp"
 #include "vibook/core/newton.hpp"
 #include "vibook/core/types.hpp"
@@ -28,9 +30,21 @@ struct MonitorArclength {
   double H0 = 0;
   template <class Problem, class S>
   S operator()(const Problem& P, const Vec<S, Problem::N>& q) const {
+    return (*this)(P, q, Vec<S, Problem::N>(P.gradient(q)));
+  }
+  /// g1 at q given ∇V(q) (a step that has the gradient already passes it).
+  template <class Problem, class S>
+  S operator()(const Problem& P, const Vec<S, Problem::N>& q,
+               const Vec<S, Problem::N>& grad_V) const {
     using std::sqrt;
-    const Vec<S, Problem::N> g = P.gradient(q);
-    return S(1.0 / sqrt(2.0 * (H0 - P.potential(q)) + g.squaredNorm()));
+    return S(1.0 / sqrt(2.0 * (H0 - P.potential(q)) + grad_V.squaredNorm()));
+  }
+  /// ∇g1 = g1³ (∇V − ∇²V ∇V), written out (the Newton matrix of AdaptiveMidpoint::step).
+  template <class Problem>
+  Vec<double, Problem::N> gradient(const Problem& P, const Vec<double, Problem::N>& q) const {
+    const Vec<double, Problem::N> g = P.gradient(q);
+    const double m = (*this)(P, q, g);
+    return (g - ad::potential_hessian(P, q) * g) * (m * m * m);
   }
 };
 
@@ -40,6 +54,11 @@ struct MonitorQuadratic {
   template <class Problem, class S>
   S operator()(const Problem&, const Vec<S, Problem::N>& q) const {
     return S(q.squaredNorm());
+  }
+  /// ∇g2 = 2q.
+  template <class Problem>
+  Vec<double, Problem::N> gradient(const Problem&, const Vec<double, Problem::N>& q) const {
+    return q * 2.0;
   }
 };
 
@@ -51,15 +70,44 @@ struct TimedState {
   Vec<double, N> p = Vec<double, N>::Zero();
 };
 
+/// The monitor's gradient at q: the monitor's own `gradient(P, q)` when it has one, else one
+/// level of forward AutoDiff through its templated operator().
+template <class Problem, class Monitor, int N>
+Vec<double, N> monitor_gradient(const Monitor& g, const Problem& P, const Vec<double, N>& q) {
+  if constexpr (requires { g.gradient(P, q); })
+    return g.gradient(P, q);
+  else
+    return g(P, ad::variables<N>(q)).derivatives();
+}
+
 /// AVI: one step of (21)–(23) with step Δa in the fictitious time a,
 ///   q1 − q0 = Δa g(q̄) p̄,   p1 − p0 = −Δa g(q̄) ∇V(q̄),   t1 − t0 = Δa g(q̄),
-/// with q̄, p̄ the averages. (q1, p1) by simplified Newton (the Jacobian by AutoDiff, once per
-/// step); every step reports residual and iterations, a failure throws SolveError.
+/// with q̄, p̄ the averages. Every step reports residual and iterations; a failure throws
+/// SolveError.
+///
+/// **The step, reduced to the midpoint.** With c = Δa g(q̄), the second equation gives
+/// p̄ = p0 − (c/2)∇V(q̄) explicitly, and the first becomes N equations for q̄ alone,
+///   F(q̄) = 2(q̄ − q0) − c p0 + (c²/2) ∇V(q̄) = 0,
+/// after which q1 = 2q̄ − q0, p1 = p0 − c∇V(q̄), t1 = t0 + c: the same step as the 2N-system
+/// (`step_full_system`, the reference; a doctest compares the two), with F the residual of the
+/// first equation and the second satisfied to rounding by construction. Newton on F uses
+///   F'(q̄) = 2I − Δa (p0 − c∇V) ∇gᵀ + (c²/2) ∇²V,
+/// with the monitor's gradient and the problem's Hessian (the helpers above). The matrix is
+/// kept from step to step, and evaluated again after a step that needed more than one
+/// correction or when an update fails to shrink eightfold. The step starts from the polynomial
+/// through the last eight midpoints (core/extrapolate.hpp: Δa is fixed, so the midpoints are
+/// equally spaced in a and smooth) when the state passed in is the one the last step returned
+/// with the same Δa; otherwise, and again after a failure from that start, from the explicit
+/// Euler midpoint q0 + (Δa g(q0)/2) p0 with a fresh matrix. The point returned is
+/// the last one evaluated, accepted when the Newton correction it still asks for is below
+/// NewtonOptions' rule, so q1, p1, t1 and the residual reported all belong to one q̄.
 template <class Problem, class Monitor>
 class AdaptiveMidpoint {
  public:
   static constexpr int N = Problem::N;
   static constexpr int M = 2 * N;
+  using VecN = Vec<double, N>;
+  using MatN = Mat<double, N>;
 
   AdaptiveMidpoint(Problem P, Monitor g, NewtonOptions options = {})
       : P_(P), g_(g), options_(options) {}
@@ -99,12 +147,31 @@ class AdaptiveMidpoint {
     return 0.5 * (r.first + r.second);
   }
 
+  /// One step of (21)–(23) from s, solved for the midpoint q̄ (see the class).
   SolveReport step(TimedState<N>& s, double da) {
+    const bool continues = mid_.count() > 0 && da == last_da_ && s.q == last_q_ && s.p == last_p_;
+    if (!continues) mid_.clear(), have_jacobian_ = false;
+    const TimedState<N> start = s;
+    try {
+      return solve(s, da, continues ? extrapolated_midpoint(s.q) : cold_midpoint(s, da));
+    } catch (const SolveError&) {
+      if (!continues) throw;
+    }
+    // From the extrapolation and the kept Newton matrix the iteration failed: once more from
+    // the explicit Euler midpoint with a fresh matrix, as without a history.
+    s = start;
+    mid_.clear(), have_jacobian_ = false;
+    return solve(s, da, cold_midpoint(s, da));
+  }
+
+  /// The same step by simplified Newton on the full 2N-system (21)–(22) in z = (q1, p1) from
+  /// an explicit Euler guess, with the AutoDiff Jacobian: the reference `step` is checked
+  /// against. Does not touch the history `step` extrapolates from.
+  SolveReport step_full_system(TimedState<N>& s, double da) const {
     Vec<double, M> z0, z1;
     z0 << s.q, s.p;
     const double g0 = g_(P_, s.q);
     z1 << s.q + da * g0 * s.p, s.p - da * g0 * P_.gradient(s.q);  // explicit Euler guess
-    // [avi-step]
     auto residual = [&](const auto& z) {
       using S = typename std::remove_cvref_t<decltype(z)>::Scalar;
       const Vec<S, N> q1 = z.template head<N>(), p1 = z.template tail<N>();
@@ -116,8 +183,6 @@ class AdaptiveMidpoint {
       F.template tail<N>() = p1 - s.p.template cast<S>() + (da * g) * P_.gradient(qa);
       return F;
     };
-    // [avi-step]
-    // Simplified Newton: the AutoDiff Jacobian once per step (it changes by O(Δa) over it).
     const SolveReport rep = simplified_newton_solve<M>(
         z1, [&](const Vec<double, M>& z) { return Vec<double, M>(residual(z)); },
         [&](const Vec<double, M>& z) { return ad::jacobian<M>(residual, z); }, options_,
@@ -130,9 +195,104 @@ class AdaptiveMidpoint {
   }
 
  private:
+  /// Newton on F(q̄) = 0 from m, then (21)–(23) at the accepted midpoint.
+  SolveReport solve(TimedState<N>& s, double da, VecN m) {
+    SolveReport rep;
+    // [avi-step]
+    // Sharma et al. 2022, (21)–(22) with p̄ eliminated: F(q̄) = 2(q̄ − q0) − c p0 + (c²/2)∇V(q̄).
+    VecN G, F;
+    double c = 0;
+    auto evaluate = [&] {
+      G = P_.gradient(m);
+      c = da * monitor_at(m, G);
+      F = (m - s.q) * 2.0 - (s.p - G * (0.5 * c)) * c;
+    };
+    // [avi-step]
+    double last = 0;
+    bool fresh = false;  // whether Jinv_ was evaluated in this step
+    const int max_it = options_.max_iterations;
+    for (rep.iterations = 1; rep.iterations <= max_it; ++rep.iterations) {
+      evaluate();
+      rep.residual = F.template lpNorm<Eigen::Infinity>();
+      if (!std::isfinite(rep.residual) || !std::isfinite(c)) break;
+      if (!have_jacobian_) Jinv_ = inverse_jacobian(s, da, m, G, c), have_jacobian_ = fresh = true;
+      VecN dx = Jinv_ * F;
+      double size = dx.template lpNorm<Eigen::Infinity>();
+      if (!std::isfinite(size))
+        throw newton_detail::singular_jacobian("adaptive midpoint step (21)-(22)", rep);
+      if (rep.iterations > 1 && size > last * 0.125 && !fresh) {  // slow: a fresh matrix
+        Jinv_ = inverse_jacobian(s, da, m, G, c), fresh = true;
+        dx = Jinv_ * F;
+        size = dx.template lpNorm<Eigen::Infinity>();
+      }
+      if (rep.residual <= options_.residual_abs || correction_is_small(s.q, m, dx)) {
+        rep.converged = true;
+        break;
+      }
+      last = size;
+      m -= dx;
+    }
+    if (!rep.converged) {
+      have_jacobian_ = false;
+      throw newton_detail::no_convergence("adaptive midpoint step (21)-(22)", rep, max_it);
+    }
+    // A step that needed more than one correction asks for a fresh matrix in the next one.
+    if (rep.iterations > 2) have_jacobian_ = false;
+    mid_.push(m);
+    s.q = m * 2.0 - s.q;
+    s.p = s.p - G * c;
+    s.t += c;
+    last_q_ = s.q, last_p_ = s.p, last_da_ = da;
+    return rep;
+  }
+
+  /// The monitor at q with ∇V(q) = G: passed on when the monitor takes it (g1 needs ∇V).
+  double monitor_at(const VecN& q, const VecN& G) const {
+    if constexpr (requires { g_(P_, q, G); })
+      return g_(P_, q, G);
+    else
+      return g_(P_, q);
+  }
+
+  /// F'(q̄)⁻¹ (see the class), with ∇g from the monitor and ∇²V from the problem.
+  MatN inverse_jacobian(const TimedState<N>& s, double da, const VecN& m, const VecN& G,
+                        double c) const {
+    const VecN dg = monitor_gradient(g_, P_, m);
+    const MatN J = MatN::Identity() * 2.0 - (s.p - G * c) * (da * dg).transpose() +
+                   ad::potential_hessian(P_, m) * (0.5 * c * c);
+    return J.inverse();
+  }
+
+  /// The explicit Euler midpoint q0 + (Δa g(q0)/2) p0: the start without a history.
+  VecN cold_midpoint(const TimedState<N>& s, double da) const {
+    return s.q + s.p * (0.5 * da * g_(P_, s.q));
+  }
+
+  /// The next midpoint extrapolated from the last ones: with one, linearly through q0 (which
+  /// lies half a step after it); with n >= 2, the polynomial through the last n (up to 8).
+  VecN extrapolated_midpoint(const VecN& q0) const {
+    return mid_.count() == 1 ? VecN(q0 * 2.0 - mid_.newest()) : mid_.next();
+  }
+
+  /// NewtonOptions' rule for the correction dx of q̄ (twice it is the correction of q1).
+  bool correction_is_small(const VecN& q0, const VecN& m, const VecN& dx) const {
+    const VecN q1 = m * 2.0 - q0;
+    const double displacement = (q1 - q0).template lpNorm<Eigen::Infinity>();
+    for (int i = 0; i < N; ++i) {
+      const double size = std::max({std::abs(q1(i)), std::abs(q0(i)), displacement});
+      if (!(2.0 * std::abs(dx(i)) <= options_.step_rel * size + options_.step_abs)) return false;
+    }
+    return true;
+  }
+
   Problem P_;
   Monitor g_;
   NewtonOptions options_;
+  SampleHistory<VecN, double, 8> mid_;  ///< the last midpoints of the current trajectory
+  VecN last_q_ = VecN::Zero(), last_p_ = VecN::Zero();
+  double last_da_ = 0;
+  MatN Jinv_ = MatN::Identity();  ///< F'⁻¹, kept from step to step while it contracts
+  bool have_jacobian_ = false;
 };
 
 }  // namespace vibook

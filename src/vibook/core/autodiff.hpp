@@ -114,4 +114,21 @@ TwoPoint<N, T> two_point(F&& f, const Vec<T, N>& a, const Vec<T, N>& b, const T&
   return out;
 }
 
+/// ∇²V(x) of a mechanical problem: the problem's own `hessian(q)` when it has one (Kepler
+/// writes it out), else one level of forward AutoDiff on its `gradient(q)`. Used by the
+/// closed-form steppers (epavi/mechanical.hpp, avi/avi.hpp) for their Newton matrices.
+template <class Problem, class T, int N>
+Mat<T, N> potential_hessian(const Problem& P, const Vec<T, N>& x) {
+  if constexpr (requires { P.hessian(x); }) {
+    return P.hessian(x);
+  } else {
+    Vec<Dual<N, T>, N> y;
+    for (int i = 0; i < N; ++i) y(i) = Dual<N, T>(x(i), N, i);
+    const Vec<Dual<N, T>, N> g = P.gradient(y);
+    Mat<T, N> H;
+    for (int i = 0; i < N; ++i) H.row(i) = g(i).derivatives().transpose();
+    return H;
+  }
+}
+
 }  // namespace vibook::ad
