@@ -82,9 +82,10 @@ if sv and ep:
           "solve of the momentum equations (15) by nested AutoDiff; on the closed form, with "
           "the derivatives of (25) written out from the potential's gradient and Hessian, "
           "in double usually only the first does (after the Newton update of the step the "
-          "position moves along its Taylor polynomial in the step). AVI's and "
-          "the midpoint rule's are Newton iterations. mpfr18: one repetition of 300 steps (MPFR "
-          "at 18 digits, the paper's VPA).</p>")
+          "position moves along its Taylor polynomial in the step), and that solve usually "
+          "takes one force. AVI's are evaluations of the step's equation for the midpoint "
+          "(a force and the monitor each), the midpoint rule's Newton iterations. mpfr18: one "
+          "repetition of 300 steps (MPFR at 18 digits, the paper's VPA).</p>")
 
 # The modified-equation engine: derivation times (seconds, median).
 eng = {k: v for k, v in med.items() if k.startswith(("engine_", "ldisc_"))}

@@ -26,15 +26,22 @@
 /// about |u|/τ · ulp(q), far more than the explicit τ-dependence ∂g/∂τ = −|u|²/τ moves it per
 /// unit of τ. As a function of the rounded τ, g is a saw-tooth around its smooth mean, and the
 /// zero of the mean is known only to the height of a tooth. Newton with dg/dτ brings the mean
-/// to zero (phase 1). Then q_{k+1} stays the representable point found and τ alone moves, by
-/// Newton with ∂g/∂τ (phase 2), to the representable τ nearest the zero of (16): a move of
-/// the order of the rounding of q_{k+1}, so (15) still holds to that order (its residual is
-/// reported). g is evaluated in a wider type (long double for double), so the residual left is
-/// set by the spacing of representable τ and is as often positive as negative: the discrete
-/// energy E_k performs a random walk (Brouwer's law) instead of drifting.
+/// to zero (phase 1). Then q_{k+1} stays the representable point found and τ alone moves
+/// (phase 2) to the representable τ nearest the zero of (16), which for fixed q_{k+1} is
+/// τ* = |Δq|/√(2(E_k − V(q̄))): a move of the order of the rounding of q_{k+1}, so (15) still
+/// holds to that order (its residual is reported). g is evaluated in a wider type (long double for
+/// double), so the residual left is set by the spacing of representable τ and is as often positive
+/// as negative: the discrete energy E_k performs a random walk (Brouwer's law) instead of drifting.
 /// Options::tol is honoured as in the generic path: phase 1 stops as soon as |g| <= tol·|E_k|;
 /// with a tol looser than the default (4 units of round-off) that ends the step, so a loose tol
 /// leaves residuals up to tol·|E_k| (Sharma's Fig. 5); at the default, phase 2 always runs.
+///
+/// **Cost.** τ and q_{k+1} start from the polynomials through the last eight steps
+/// (core/extrapolate.hpp); the momentum solve stops on the contraction its corrections show
+/// (before the second, on the one seen in earlier steps); q_{k+1} follows a Newton update of τ
+/// along its Taylor polynomial; the first value of g, when clearly above the floor, is taken
+/// in T. Every shortcut is checked at the end of the step by the residual of (15) at the point
+/// returned.
 ///
 /// Chapter: \ref chapter-epavi.
 #pragma once
@@ -42,9 +49,12 @@
 #include <algorithm>
 #include <cmath>
 #include <string>
+#include <type_traits>
+#include <utility>
 
 #include "vibook/core/autodiff.hpp"
 #include "vibook/core/errors.hpp"
+#include "vibook/core/extrapolate.hpp"
 #include "vibook/core/format.hpp"
 #include "vibook/core/scalar.hpp"
 #include "vibook/core/types.hpp"
@@ -109,52 +119,84 @@ class MechanicalEpAVI {
     h_.last_dt = h0;
     h_.increment = dq;
     have_hessian_ = false;
+    theta_ = T(-1);
+    taus_.clear(), positions_.clear();
+    taus_.push(h0), positions_.push(q0), positions_.push(q1);
     return s;
   }
 
   /// One step of (15)–(18). Throws SolveError as EpAVI::step does.
-  ExtendedStepReport step(State& s) {
+  ExtendedStepReport step(State& s) { return take_step(s, true); }
+
+  /// (18) in the wide type: |Δq|²/(2τ²) + V(q̄), the discrete energy of the step q0 → q1.
+  W energy(const VecN& q0, const VecN& q1, const T& tau) const {
+    const VecW a = widen(q0), b = widen(q1);
+    const W tw = W(tau);
+    return (b - a).squaredNorm() / (W(2.0) * tw * tw) +
+           P_.potential(VecW((a + b) * constant<W>(0.5)));
+  }
+
+ private:
+  /// The step; `borrow` lets a momentum solve stop after its first correction on the
+  /// contraction earlier solves showed (see solve_momentum).
+  ExtendedStepReport take_step(State& s, bool borrow) {
     ExtendedStepReport rep;
+    early_stop_ = false;
+    borrow_ = borrow;
     const State k = s;
     const T target = options_.energy_target == EnergyTarget::previous ? k.E : h_.E_start;
     const W targetW = W(target);
     // The predicted step, as in the generic path: Δt_{k−1}²/Δt_{k−2}, ratio clamped to [½, 2].
     const T center = h_.predicted_step();
 
-    T tau = center;
-    // Newton's start for (15): (15) itself with ∇V at the previous step's midpoint, off by
-    // O(τ³) (scaling the previous increment instead is off by O(τ²)).
-    VecN x = k.q + k.p * tau - G_last_ * T(tau * tau * constant<T>(0.5));
+    // The start: once eight steps of this trajectory are known, τ and q_{k+1} extrapolated
+    // from them (core/extrapolate.hpp). The steps carry the noise (16) leaves (a tooth of g,
+    // about 1e-8 relative in double for Kepler at h0 = 1e-3), so one Newton update of τ is
+    // still needed, but q_{k+1} starts about 1e-11 away instead of 1e-9. Before, the predicted
+    // step and (15) itself with ∇V at the previous step's midpoint, off by O(τ³).
+    if (positions_.count() == 0 || !(positions_.newest() == k.q))
+      taus_.clear(), positions_.clear(), positions_.push(k.q);
+    const bool extrapolate = taus_.count() == kHistory && positions_.count() == kHistory;
+    T tau = extrapolate ? taus_.next() : center;
+    if (!(tau > center / T(2) && tau < center * T(2))) tau = center;
+    VecN x = extrapolate ? positions_.next()
+                         : VecN(k.q + k.p * tau - G_last_ * T(tau * tau * constant<T>(0.5)));
     VecN G;
     // The Newton matrix of (15) starts from the Hessian of the previous step: A changes by
     // O(τ³) from step to step, which only slows the contraction of (15) negligibly.
     if (!have_hessian_) H_ = hessian(VecN((k.q + x) * constant<T>(0.5))), have_hessian_ = true;
     MatN Ainv = inverse_newton_matrix(H_, tau);
     W gW(0);
-    auto evaluate = [&]() {
-      solve_momentum(k, tau, Ainv, x, G, rep.newton_iterations);
-      ++rep.root_iterations;
-      gW = energy(k.q, x, tau) - targetW;
-    };
     using std::abs;
     // [epavi-closed-form-step]
     // Phase 1: Newton on (16) with the total derivative dg/dτ.
     bool converged = false;
     for (int it = 0; it < kMaxPhase1; ++it) {
       try {
-        evaluate();
+        solve_momentum(k, tau, Ainv, x, G, rep.newton_iterations);
       } catch (const SolveError&) {
         break;  // (15) not solved at this trial step: the generic path searches instead
       }
-      if (!is_finite(gW)) break;
+      ++rep.root_iterations;
       const W floor_here = floor(k, x, tau, G, target);
+      // (16) in T first, when the wide type is wider: a value that is clearly above the floor
+      // only feeds the Newton update of τ, which T's accuracy serves. Whether (16) holds, and
+      // the value phase 2 starts from, always come from the wide type.
+      bool wide = true;
+      if constexpr (!std::is_same_v<W, T>) {
+        const auto [g, error] = energy_in_t(k.q, x, tau, target);
+        if (is_finite(W(g)) && W(abs(g)) > floor_here + W(error)) gW = W(g), wide = false;
+      }
+      if (wide) gW = wide_energy(k.q, x, tau, targetW);
+      if (!is_finite(gW)) break;
       if (abs(gW) <= floor_here) {
         converged = true;
         break;
       }
       H_ = hessian(VecN((k.q + x) * constant<T>(0.5)));
       Ainv = inverse_newton_matrix(H_, tau);
-      const VecN v = (x - k.q) / tau;
+      const T inv_tau = T(1) / tau;  // for the estimates below (not for the step itself)
+      const VecN v = (x - k.q) * inv_tau;
       const VecN AHv = Ainv * VecN(H_ * v), AG = Ainv * G;
       const T dg = -tau * constant<T>(0.25) * (v.dot(AHv) + G.dot(AG));
       const T next = tau - T(gW) / dg;
@@ -175,25 +217,29 @@ class MechanicalEpAVI {
       // returned is measured at the end of the step.
       const T x3 = T(3) * H_.template lpNorm<Eigen::Infinity>() *
                        dx_dtau.template lpNorm<Eigen::Infinity>() +
-                   G.template lpNorm<Eigen::Infinity>() / tau;
+                   G.template lpNorm<Eigen::Infinity>() * inv_tau;
       // Whether (16) can hold at the new step at all: Newton's next residual is about
       // |g''|δτ²/2 = |dg/dτ|δτ²/(2τ) (g'' ≈ g'/τ, from the formula for dg/dτ above). In double
       // precision one Newton step usually gets below the tooth height; in the wider types the
       // first does not, and checking (16) there would cost an evaluation for nothing.
-      const bool newton_done = W(abs(dg) * dtau * dtau / (T(2) * tau)) <= floor_here;
+      const bool newton_done = W(abs(dg) * dtau * dtau * inv_tau * T(0.5)) <= floor_here;
       if (newton_done &&
           x3 * abs(dtau) * dtau * dtau <= T(6) * u_ * x.template lpNorm<Eigen::Infinity>()) {
-        gW = energy(k.q, x, tau) - targetW;
+        gW = wide_energy(k.q, x, tau, targetW);
         ++rep.root_iterations;
-        if (is_finite(gW) && abs(gW) <= floor(k, x, tau, G, target)) {
+        // The floor moves with the point by O(δτ/τ) relative: the one just computed serves.
+        if (is_finite(gW) && abs(gW) <= floor_here) {
           converged = true;
           break;
         }
       }
     }
-    if (!converged) return fall_back(s, rep);
-    // Phase 2: q_{k+1} stays the representable point found; τ alone moves, by Newton with
-    // ∂g/∂τ = −|Δq|²/τ³, to the representable τ nearest the zero of (16). The move is of the
+    if (!converged) return remember(fall_back(s, rep), s);
+    // Phase 2: q_{k+1} stays the representable point found; τ alone moves, to the
+    // representable τ nearest the zero of (16). With q_{k+1} fixed, (16) is
+    // g(τ) = |Δq|²/(2τ²) + rest, rest = V(q̄) − E_k, whose zero is τ* = |Δq|/√(−2 rest):
+    // computed in the wide type and rounded to T, or (when the wide type is T itself) polished
+    // by Newton with ∂g/∂τ = −|Δq|²/τ³ until the update rounds to nothing. The move is of the
     // order of the rounding of q_{k+1} (|δτ| ≈ ulp(q)/|Δq/τ|), so (15) stays satisfied to the
     // same order; its residual is measured again below.
     // A tolerance looser than the default, once met, ends the step here. Otherwise phase 2
@@ -202,9 +248,15 @@ class MechanicalEpAVI {
     const T tau1 = tau;  // where phase 1 stopped, with q_{k+1} solved from (15)
     const bool loose = options_.tol > 4 * to_double(u_) * (1 + 1e-9);
     if (!(loose && abs(gW) <= W(options_.tol) * abs(targetW))) {
-      const VecW dq = widen(x) - widen(k.q);
-      const W kinetic2 = dq.squaredNorm(), rest = gW - kinetic2 / (W(2.0) * W(tau) * W(tau));
-      for (int it = 0; it < kMaxPhase2; ++it) {
+      // |Δq|² and V(q̄) − E_k of the last evaluation in the wide type, which was at this x.
+      const W kinetic2 = last_kinetic2_, rest = last_rest_;
+      using std::sqrt;
+      const T root = rest < W(0) ? T(sqrt(W(kinetic2 / (W(-2.0) * rest)))) : T(0);
+      if (is_finite(W(root)) && root > center / T(2) && root < center * T(2)) {
+        tau = root;
+        gW = kinetic2 / (W(2.0) * W(tau) * W(tau)) + rest;
+      }
+      for (int it = 0; std::is_same_v<W, T> && it < kMaxPhase2; ++it) {
         const W tw = W(tau);
         const T next = T(tw + gW * tw * tw * tw / kinetic2);
         if (next == tau || !is_finite(next)) break;
@@ -227,7 +279,18 @@ class MechanicalEpAVI {
       const VecN correction = Ainv * F1;
       const T scale = dq.template lpNorm<Eigen::Infinity>();
       for (int i = 0; i < N; ++i)
-        if (!(abs(correction(i)) <= rounding_bound(x(i), k.q(i), scale))) return fall_back(s, rep);
+        if (!(abs(correction(i)) <= rounding_bound(x(i), k.q(i), scale))) {
+          theta_ = T(-1);
+          // A solve stopped on the contraction of earlier ones: the step once more, every
+          // solve now showing its own (borrow = false cannot take this branch again).
+          if (early_stop_) {
+            ExtendedStepReport again = take_step(s, false);
+            again.root_iterations += rep.root_iterations;
+            again.newton_iterations += rep.newton_iterations;
+            return again;
+          }
+          return remember(fall_back(s, rep), s);
+        }
     }
     const VecN F = dq + G * T(tau * tau * constant<T>(0.5)) - k.p * tau;
     rep.energy_residual = std::abs(to_double(T(gW)));
@@ -240,19 +303,28 @@ class MechanicalEpAVI {
     s.p = dq / tau - G * T(tau * constant<T>(0.5));
     G_last_ = G;
     s.E = T(targetW + gW);
-    return rep;
+    return remember(rep, s);
     // [epavi-closed-form-step]
   }
 
-  /// (18) in the wide type: |Δq|²/(2τ²) + V(q̄), the discrete energy of the step q0 → q1.
-  W energy(const VecN& q0, const VecN& q1, const T& tau) const {
-    const VecW a = widen(q0), b = widen(q1);
-    const W tw = W(tau);
-    return (b - a).squaredNorm() / (W(2.0) * tw * tw) +
-           P_.potential(VecW((a + b) * constant<W>(0.5)));
+  /// (18) − E_k in T, and a bound on its rounding error (8u times the sizes of its terms).
+  std::pair<T, T> energy_in_t(const VecN& q0, const VecN& q1, const T& tau, const T& target) const {
+    using std::abs;
+    const T kinetic = (q1 - q0).squaredNorm() / (T(2) * tau * tau);
+    const T potential = P_.potential(VecN((q0 + q1) * constant<T>(0.5)));
+    return {kinetic + potential - target,
+            T(8) * u_ * (abs(kinetic) + abs(potential) + abs(target))};
   }
 
- private:
+  /// g = (18) − E_k in the wide type, keeping |Δq|² and V(q̄) − E_k for phase 2.
+  W wide_energy(const VecN& q0, const VecN& q1, const T& tau, const W& target) {
+    const VecW a = widen(q0), b = widen(q1);
+    const W tw = W(tau);
+    last_kinetic2_ = (b - a).squaredNorm();
+    last_rest_ = P_.potential(VecW((a + b) * constant<W>(0.5))) - target;
+    return last_kinetic2_ / (W(2.0) * tw * tw) + last_rest_;
+  }
+
   static constexpr int kMaxPhase1 = 30;
   static constexpr int kMaxPhase2 = 8;
 
@@ -263,18 +335,8 @@ class MechanicalEpAVI {
   }
   static bool is_finite(const W& w) { return ScalarTraits<W>::is_finite(w); }
 
-  /// ∇²V(x): the problem's own `hessian(q)` when it has one (Kepler writes it out), else one
-  /// level of forward AutoDiff on the problem's gradient.
-  MatN hessian(const VecN& x) const {
-    if constexpr (requires(const Problem& p, const VecN& y) { p.hessian(y); }) return P_.hessian(x);
-    using D = ad::Dual<N, T>;
-    Vec<D, N> y;
-    for (int i = 0; i < N; ++i) y(i) = D(x(i), N, i);
-    const Vec<D, N> g = P_.gradient(y);
-    MatN H;
-    for (int i = 0; i < N; ++i) H.row(i) = g(i).derivatives().transpose();
-    return H;
-  }
+  /// ∇²V(x), by the problem's own Hessian or AutoDiff (ad::potential_hessian).
+  MatN hessian(const VecN& x) const { return ad::potential_hessian(P_, x); }
 
   /// A⁻¹ for A = I + (τ²/4) H: A is I plus a small perturbation wherever (15) is solvable at
   /// all, so the explicit inverse (closed-form cofactors for N <= 4 in Eigen) is accurate and
@@ -288,9 +350,14 @@ class MechanicalEpAVI {
   /// Newton step needs). G is ∇V at the last midpoint used; the residual of (15) is measured at
   /// the point the step returns.
   void solve_momentum(const State& k, const T& tau, const MatN& Ainv, VecN& x, VecN& G,
-                      int& iterations) const {
+                      int& iterations) {
     const T half_tau2 = tau * tau * constant<T>(0.5);
     T previous(0);  // max |dx| of the last iteration
+    // Before a second iteration shows the contraction, the contraction seen in earlier steps
+    // (twice it) stands in: A changes by O(τ³) from step to step. The step's final check of
+    // (15) verifies the point returned either way, and a step that fails it is taken again
+    // without this shortcut.
+    const T theta_before = borrow_ && theta_ >= T(0) ? T(T(2) * theta_) : T(1);
     for (int it = 1; it <= options_.max_newton_iterations; ++it) {
       G = P_.gradient(VecN((k.q + x) * constant<T>(0.5)));
       const VecN F = (x - k.q) + G * half_tau2 - k.p * tau;
@@ -303,8 +370,11 @@ class MechanicalEpAVI {
       // The contraction θ = |dx_k|/|dx_{k−1}| of this solve: the next correction would be
       // about θ|dx_k|, so once θ/(1 − θ)·|dx_k| is below the bound the iterate is converged
       // without another evaluation of ∇V (the stopping rule of simplified Newton methods).
-      const T theta = it >= 2 && previous > T(0) ? T(size / previous) : T(1);
+      const T theta = it >= 2 && previous > T(0) ? T(size / previous) : theta_before;
       const T ahead = theta < T(0.5) ? T(theta / (T(1) - theta)) : T(-1);
+      // What the next steps assume: the contraction seen, but a smaller one only slowly (a
+      // correction that happens to come out small says little about the next solve).
+      if (it >= 2 && previous > T(0)) theta_ = std::max(theta, T(theta_ * T(0.25)));
       previous = size;
       bool small = true, converged_ahead = ahead >= T(0);
       for (int i = 0; i < N; ++i) {
@@ -318,7 +388,10 @@ class MechanicalEpAVI {
         if (abs(dx(i)) > bound) small = false;
         if (!(ahead * abs(dx(i)) <= bound)) converged_ahead = false;
       }
-      if (small || converged_ahead) return;
+      if (small || converged_ahead) {
+        if (it == 1 && !small) early_stop_ = true;
+        return;
+      }
     }
     throw SolveError("EpAVI step at t = " + text::g(to_double(k.t), 17) +
                          ": the momentum equation (15) did not converge in " +
@@ -340,12 +413,19 @@ class MechanicalEpAVI {
   W floor(const State& k, const VecN& x, const T& tau, const VecN& G, const T& target) const {
     using std::abs;
     T f(0);
+    const T inv_tau2 = T(1) / (tau * tau);
     for (int i = 0; i < N; ++i) {
-      const T dgdq = abs(T((x(i) - k.q(i)) / (tau * tau) + G(i) * constant<T>(0.5)));
+      const T dgdq = abs(T((x(i) - k.q(i)) * inv_tau2 + G(i) * constant<T>(0.5)));
       f += dgdq * u_ * std::max(abs(x(i)), abs(T(x(i) - k.q(i))));
     }
     f = std::max(T(T(2) * f + u_ * abs(target)), T(T(options_.tol) * abs(target)));
     return W(f);
+  }
+
+  /// The step just taken, for the extrapolation of the next start.
+  ExtendedStepReport remember(const ExtendedStepReport& rep, const State& s) {
+    taus_.push(h_.last_dt), positions_.push(s.q);
+    return rep;
   }
 
   ExtendedStepReport fall_back(State& s, ExtendedStepReport rep) {
@@ -368,7 +448,14 @@ class MechanicalEpAVI {
   MatN H_ = MatN::Zero();       ///< ∇²V at the last midpoint where dg/dτ was needed
   VecN G_last_ = VecN::Zero();  ///< ∇V at the last step's midpoint
   bool have_hessian_ = false;
+  T theta_ = T(-1);          ///< the contraction the solves of (15) showed (−1: none yet)
+  bool early_stop_ = false;  ///< whether a solve of this step stopped on theta_ alone
+  bool borrow_ = true;       ///< whether this step's solves may stop on theta_ alone
+  W last_kinetic2_ = W(0), last_rest_ = W(0);  ///< the parts of the last wide_energy
   History h_;  ///< the last steps, the last increment, the compensation of t, E_1
+  static constexpr int kHistory = 8;
+  SampleHistory<T, T, kHistory> taus_;          ///< the last steps τ of this trajectory
+  SampleHistory<VecN, T, kHistory> positions_;  ///< the last positions, q_k newest
 };
 
 }  // namespace vibook
