@@ -2,7 +2,8 @@
 # The book checker must be able to fail: each defect it looks for (unrendered TeX, a broken
 # image, a broken link, a console error, leaked markup, a report row without anchor or
 # evidence, a broken filter, sideways scrolling, a formula cut off, figure text under 12 px, a
-# chapter without previous/next links) must be reported, and a clean page must pass.
+# chapter without previous/next links, quoted code linking to a .cpp's file-local symbol) must
+# be reported, and a clean page must pass.
 set -u
 here=$(cd "$(dirname "$0")" && pwd)
 tmp=$(mktemp -d)
@@ -52,7 +53,11 @@ cat >"$tmp/chapter-bad.html" <<'HTML'
 <div class="image"><span style="display:inline-block"><object type="image/svg+xml" data="small.svg"></object></span></div>
 <table class="vibook-claims"><tr><td class="claim-id"><a href="report.html#claim-X-9">X-9</a></td></tr>
 <tr><td class="claim-id"><a href="report.html#claim-X-9">X-9</a></td></tr></table>
+<div class="fragment"><a class="code" href="helper_8cpp.html#a0123">k</a></div>
 </body></html>
+HTML
+cat >"$tmp/helper_8cpp.html" <<'HTML'
+<!DOCTYPE html><html><head><title>helper.cpp</title></head><body><a id="a0123">k</a></body></html>
 HTML
 "/usr/bin/python3" "$here/check_book.py" "$tmp" >"$tmp/bad.log" 2>&1
 rc=$?
@@ -68,6 +73,7 @@ for what in "no previous/next links" "page scrolls sideways at 1024 px" "formula
   grep -q "chapter-bad.html: $what" "$tmp/bad.log" || { echo "FAIL: not reported: $what"; fail=1; }
 done
 grep -q "chapter-bad.html: claim X-9 shown 2 times" "$tmp/bad.log" || { echo "FAIL: claim shown twice not reported"; fail=1; }
+grep -q "chapter-bad.html: quoted code links 'k' to a file-local symbol of helper_8cpp.html" "$tmp/bad.log" || { echo "FAIL: link to a .cpp-local symbol not reported"; fail=1; }
 grep -q "reportbad.html: claim row without evidence links: X-2" "$tmp/bad.log" || { echo "FAIL: row without evidence not reported"; fail=1; }
 grep -q "classB.html: broken link classNowhere.html#x" "$tmp/bad.log" || { echo "FAIL: static broken link not reported"; fail=1; }
 grep -q "classB.html: broken image gone.png" "$tmp/bad.log" || { echo "FAIL: static broken image not reported"; fail=1; }
