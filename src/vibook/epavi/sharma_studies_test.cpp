@@ -34,12 +34,16 @@ TEST_CASE("sharma-fig4: the h0 study at e = 0.7") {
   REQUIRE(r.size() == 1);
   INFO(r[0].note);
   CHECK(r[0].value("avi2_energy_err_ratio_h0_0.01_over_0.001") > 10);
-  CHECK(r[0].value("epavi_energy_err_ratio_h0_0.01_over_0.001") < 1);  // smaller at larger h0
-  // By about an order of magnitude: beyond the factor 10 of "changes little" (the measured
-  // ratio is a sum of round-off residuals and sits near that threshold; see the chapter).
-  CHECK(r[0].status == (r[0].value("epavi_energy_err_ratio_h0_0.01_over_0.001") >= 0.1
-                            ? claims::Status::reproduced_with_caveat
-                            : claims::Status::not_reproduced));
+  // EpAVI's discrete energy error is a random walk of round-off at both h0, without drift:
+  // at most 1e-13 over the 10 periods (about 1e4 and 1e3 steps). Which of the two maxima is
+  // larger is not a property of the method (ten times fewer steps make it √10 smaller in
+  // expectation, but one pair of walks can fall either way); the status follows the ratio
+  // under the criterion: within [0.1, 10] it "changes little".
+  CHECK(r[0].value("h0_0.001_epavi_max_dE_d") <= 1e-13);
+  CHECK(r[0].value("h0_0.01_epavi_max_dE_d") <= 1e-13);
+  const double ratio = r[0].value("epavi_energy_err_ratio_h0_0.01_over_0.001");
+  CHECK(r[0].status == (ratio >= 0.1 && ratio <= 10 ? claims::Status::reproduced_with_caveat
+                                                    : claims::Status::not_reproduced));
 }
 
 TEST_CASE("sharma-fig5: 18-digit MPFR, drift against the solver tolerance") {
