@@ -11,15 +11,29 @@
 
 using namespace vibook;
 
+namespace {
+// Kepler e = 0.7 from perihelion, the start of every AVI test here.
+const State<2> kPerihelion = kepler_perihelion_state(0.7);
+const double kH0 = energy(Kepler{}, kPerihelion.q, kPerihelion.p);
+
+// The state at perihelion, and an AVI with the given monitor whose first step from it has
+// physical length h0, with its Δa.
+TimedState<2> at_perihelion() { return {0.0, kPerihelion.q, kPerihelion.p}; }
+template <class Monitor>
+std::pair<AdaptiveMidpoint<Kepler, Monitor>, double> avi_with_first_step(Monitor monitor,
+                                                                         double h0) {
+  AdaptiveMidpoint<Kepler, Monitor> avi(Kepler{}, monitor);
+  const double da = avi.step_for_first_step(at_perihelion(), h0);
+  return {avi, da};
+}
+}  // namespace
+
 TEST_CASE(
     "AVI1 and AVI2 on Kepler: Δa gives a first step of h0, steps adapt, energy error bounded") {
-  const double e = 0.7, h0 = 0.001;
-  const State<2> s0 = kepler_perihelion_state(e);
-  const double H0 = energy(Kepler{}, s0.q, s0.p);
+  const double h0 = 0.001, H0 = kH0;
   auto run = [&](auto monitor) {
-    AdaptiveMidpoint<Kepler, decltype(monitor)> avi(Kepler{}, monitor);
-    TimedState<2> s{0.0, s0.q, s0.p};
-    const double da = avi.step_for_first_step(s, h0);
+    auto [avi, da] = avi_with_first_step(monitor, h0);
+    TimedState<2> s = at_perihelion();
     CHECK(std::abs(avi.physical_step(s, da) - h0) <= 4 * kEps * h0);
     double max_dt = 0, max_dH = 0;
     int max_it = 0;
@@ -46,13 +60,10 @@ TEST_CASE("AVI: the step solved for the midpoint is the step of the full 2N-syst
   // Jacobian). Both solve the same equations to NewtonOptions' rule (4 units of round-off), so
   // q1, p1 and t1 agree to a few units of round-off of their size; a wrong formula, a wrong
   // monitor gradient that stalled Newton, or a stale start accepted too early would not.
-  const double e = 0.7, h0 = 0.001, u = kEps / 2;
-  const State<2> s0 = kepler_perihelion_state(e);
-  const double H0 = energy(Kepler{}, s0.q, s0.p);
+  const double h0 = 0.001, u = kEps / 2, H0 = kH0;
   auto compare = [&](auto monitor) {
-    AdaptiveMidpoint<Kepler, decltype(monitor)> avi(Kepler{}, monitor);
-    TimedState<2> s{0.0, s0.q, s0.p};
-    const double da = avi.step_for_first_step(s, h0);
+    auto [avi, da] = avi_with_first_step(monitor, h0);
+    TimedState<2> s = at_perihelion();
     double worst = 0, iterations = 0, max_residual = 0;
     long steps = 0;
     while (s.t < 2 * std::numbers::pi) {
@@ -82,8 +93,7 @@ TEST_CASE("AVI: the step solved for the midpoint is the step of the full 2N-syst
 
 TEST_CASE("AVI: the written-out monitor gradients agree with AutoDiff") {
   const Kepler P;
-  const State<2> s0 = kepler_perihelion_state(0.7);
-  const MonitorArclength g1{energy(P, s0.q, s0.p)};
+  const MonitorArclength g1{kH0};
   const MonitorQuadratic g2;
   for (const Vec<double, 2>& q :
        {Vec<double, 2>(0.3, 0.0), Vec<double, 2>(-1.2, 0.8), Vec<double, 2>(0.05, -1.7)}) {
@@ -98,22 +108,19 @@ TEST_CASE("AVI: the written-out monitor gradients agree with AutoDiff") {
 }
 
 TEST_CASE("AVI: a step off the trajectory starts cold, and a step without solution throws") {
-  const double e = 0.7, h0 = 0.001;
-  const State<2> s0 = kepler_perihelion_state(e);
-  AdaptiveMidpoint<Kepler, MonitorQuadratic> avi(Kepler{}, MonitorQuadratic{});
-  TimedState<2> s{0.0, s0.q, s0.p};
-  const double da = avi.step_for_first_step(s, h0);
+  auto [avi, da] = avi_with_first_step(MonitorQuadratic{}, 0.001);
+  TimedState<2> s = at_perihelion();
   for (int k = 0; k < 20; ++k) avi.step(s, da);
   // Another state (here the start again): the history of the first trajectory must not be
   // used; the step equals the full system's.
-  TimedState<2> a{0.0, s0.q, s0.p}, b = a;
+  TimedState<2> a = at_perihelion(), b = a;
   const SolveReport r = avi.step(a, da);
   avi.step_full_system(b, da);
   CHECK(r.iterations >= 3);  // the cold start: no extrapolation from the other trajectory
   CHECK((a.q - b.q).lpNorm<Eigen::Infinity>() <= 32 * kEps);
   // A fictitious step a thousand times too long: no midpoint solves (21)–(22) near the start;
   // the step throws SolveError with its report instead of returning NaN.
-  TimedState<2> c{0.0, s0.q, s0.p};
+  TimedState<2> c = at_perihelion();
   CHECK_THROWS_AS(avi.step(c, 1e4 * da), SolveError);
 }
 

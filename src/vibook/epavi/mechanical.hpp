@@ -130,10 +130,9 @@ class MechanicalEpAVI {
 
   /// (18) in the wide type: |Δq|²/(2τ²) + V(q̄), the discrete energy of the step q0 → q1.
   W energy(const VecN& q0, const VecN& q1, const T& tau) const {
-    const VecW a = widen(q0), b = widen(q1);
+    const auto [kinetic2, potential] = wide_parts(q0, q1);
     const W tw = W(tau);
-    return (b - a).squaredNorm() / (W(2.0) * tw * tw) +
-           P_.potential(VecW((a + b) * constant<W>(0.5)));
+    return kinetic2 / (W(2.0) * tw * tw) + potential;
   }
 
  private:
@@ -325,11 +324,17 @@ class MechanicalEpAVI {
 
   /// g = (18) − E_k in the wide type, keeping |Δq|² and V(q̄) − E_k for phase 2.
   W wide_energy(const VecN& q0, const VecN& q1, const T& tau, const W& target) {
-    const VecW a = widen(q0), b = widen(q1);
+    const auto [kinetic2, potential] = wide_parts(q0, q1);
     const W tw = W(tau);
-    last_kinetic2_ = (b - a).squaredNorm();
-    last_rest_ = P_.potential(VecW((a + b) * constant<W>(0.5))) - target;
+    last_kinetic2_ = kinetic2;
+    last_rest_ = potential - target;
     return last_kinetic2_ / (W(2.0) * tw * tw) + last_rest_;
+  }
+
+  /// |q1 − q0|² and V((q0 + q1)/2) in the wide type: the two parts of (18).
+  std::pair<W, W> wide_parts(const VecN& q0, const VecN& q1) const {
+    const VecW a = widen(q0), b = widen(q1);
+    return {(b - a).squaredNorm(), P_.potential(VecW((a + b) * constant<W>(0.5)))};
   }
 
   static constexpr int kMaxPhase1 = 30;
