@@ -195,8 +195,9 @@ class AdaptiveMidpoint {
   }
 
  private:
-  /// Newton on F(q̄) = 0 from m, then (21)–(23) at the accepted midpoint.
-  SolveReport solve(TimedState<N>& s, double da, VecN m) {
+  /// Newton on F(q̄) = 0 from m, then (21)–(23) at the accepted midpoint. Everything it calls
+  /// is inlined into it (`flatten`, as for the closed-form EpAVI step: epavi/mechanical.hpp).
+  [[gnu::flatten]] SolveReport solve(TimedState<N>& s, double da, VecN m) {
     SolveReport rep;
     // [avi-step]
     // Sharma et al. 2022, (21)–(22) with p̄ eliminated: F(q̄) = 2(q̄ − q0) − c p0 + (c²/2)∇V(q̄).

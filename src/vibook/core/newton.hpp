@@ -46,14 +46,16 @@ bool update_is_small(const Vec<T, N>& x, const Vec<T, N>& dx, const Vec<T, N>& r
   return true;
 }
 
-inline SolveError singular_jacobian(const char* what, const SolveReport& rep) {
+[[gnu::noinline, gnu::cold]] inline SolveError singular_jacobian(const char* what,
+                                                                 const SolveReport& rep) {
   return SolveError(std::string(what) + ": singular Jacobian (residual " +
                         text::e(rep.residual, 3) + " after " + std::to_string(rep.iterations) +
                         " iterations)",
                     rep);
 }
 
-inline SolveError no_convergence(const char* what, SolveReport rep, int max_iterations) {
+[[gnu::noinline, gnu::cold]] inline SolveError no_convergence(const char* what, SolveReport rep,
+                                                              int max_iterations) {
   if (rep.iterations > max_iterations) rep.iterations = max_iterations;
   return SolveError(std::string(what) + ": no convergence (residual " + text::e(rep.residual, 3) +
                         " after " + std::to_string(rep.iterations) + " iterations" +
