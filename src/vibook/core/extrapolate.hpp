@@ -32,6 +32,10 @@ class SampleHistory {
   int count() const { return count_; }
   /// The newest value; requires count() >= 1.
   const V& newest() const { return x_[0]; }
+  /// The j-th newest value (0: the newest); requires j < count().
+  const V& value(int j) const { return x_[j]; }
+  /// The weight of value(j) in next(n); requires 0 <= j < n <= K.
+  static double weight(int n, int j) { return kWeights[n - 1][j]; }
 
   void push(const V& x) {
     for (int j = K - 1; j > 0; --j) x_[j] = x_[j - 1];

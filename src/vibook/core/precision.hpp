@@ -71,6 +71,8 @@ struct ScalarTraits<dd_real> {
   static double to_double(const dd_real& x) { return ::to_double(x); }
   static bool is_finite(const dd_real& x) { return std::isfinite(x.x[0]) && std::isfinite(x.x[1]); }
   static dd_real unit_roundoff() { return dd_real(dd_real::_eps); }
+  /// x/2, exactly and without a double-double product (optional member, see scalar.hpp).
+  static dd_real half(const dd_real& x) { return mul_pwr2(x, 0.5); }
 };
 
 /// Boost.Multiprecision numbers (quad, mpfr_real): the round-off at the current precision.

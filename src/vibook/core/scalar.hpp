@@ -14,6 +14,8 @@
 ///   };
 /// \endcode
 /// A specialisation is found wherever it is declared before use, whatever the include order.
+/// It may also give `static MyReal half(const MyReal& x)`, x/2 exactly, where that is cheaper
+/// than a product with 0.5 (libqd's dd_real does); half() below uses it when present.
 #pragma once
 
 #include <cmath>
@@ -44,6 +46,15 @@ double to_double(const T& x) {
 template <class T>
 bool is_finite(const T& x) {
   return ScalarTraits<T>::is_finite(x);
+}
+
+/// x/2: ScalarTraits<T>::half when the traits give one, else the product with 0.5.
+template <class T>
+T half(const T& x) {
+  if constexpr (requires { ScalarTraits<T>::half(x); })
+    return ScalarTraits<T>::half(x);
+  else
+    return x * T(0.5);
 }
 
 /// Unit round-off (2^{1−p}) of the type, at the current precision for run-time precisions.

@@ -30,8 +30,9 @@
 /// (phase 2) to the representable τ nearest the zero of (16), which for fixed q_{k+1} is
 /// τ* = |Δq|/√(2(E_k − V(q̄))): a move of the order of the rounding of q_{k+1}, so (15) still
 /// holds to that order (its residual is reported). g is evaluated in a wider type (long double for
-/// double), so the residual left is set by the spacing of representable τ and is as often positive
-/// as negative: the discrete energy E_k performs a random walk (Brouwer's law) instead of drifting.
+/// double; the wider types are their own, and there phase 2 is Newton on 2τ²g), so the residual
+/// left is set by the spacing of representable τ and is as often positive as negative: the
+/// discrete energy E_k performs a random walk (Brouwer's law) instead of drifting.
 /// Options::tol is honoured as in the generic path: phase 1 stops as soon as |g| <= tol·|E_k|;
 /// with a tol looser than the default (4 units of round-off) that ends the step, so a loose tol
 /// leaves residuals up to tol·|E_k| (Sharma's Fig. 5); at the default, phase 2 always runs.
@@ -41,7 +42,8 @@
 /// (before the second, on the one seen in earlier steps); q_{k+1} follows a Newton update of τ
 /// along its Taylor polynomial; the first value of g, when clearly above the floor, is taken
 /// in T. Every shortcut is checked at the end of the step by the residual of (15) at the point
-/// returned.
+/// returned. Newton matrices, derivatives and bounds are estimates and are computed in double
+/// in every precision; residuals, positions and steps stay in T, and (16) in W.
 ///
 /// Chapter: \ref chapter-epavi.
 #pragma once
@@ -88,10 +90,19 @@ class MechanicalEpAVI {
   using MatN = Mat<T, N>;
   using W = typename WiderScalar<T>::type;
   using VecW = Vec<W, N>;
+  /// The Newton matrices, derivatives and bounds of the step are estimates: they scale
+  /// corrections that are already small, and double serves them in every precision (for
+  /// double-double and quad that saves most of the arithmetic). Residuals, positions and steps
+  /// stay in T, and (16) in W.
+  using VecD = Vec<double, N>;
+  using MatD = Mat<double, N>;
+  /// How many earlier steps the start of a step is extrapolated from.
+  static constexpr int kHistory = 8;
 
   explicit MechanicalEpAVI(Problem P, Options options = {})
       : P_(P), reference_(P, options), options_(reference_.integrator().options()) {
     u_ = unit_roundoff<T>();
+    ud_ = to_double(u_);
   }
 
   const Options& options() const { return options_; }
@@ -107,19 +118,19 @@ class MechanicalEpAVI {
   /// Start from (t0, q0) with the first step to (t0 + h0, q1): p1 by (17), E1 by (18).
   State start(const T& t0, const VecN& q0, const T& h0, const VecN& q1) {
     const VecN dq = q1 - q0;
-    const VecN G = P_.gradient(VecN((q0 + q1) * constant<T>(0.5)));
+    const VecN G = P_.gradient(midpoint(q0, q1));
     G_last_ = G;
     State s;
     s.t = t0 + h0;
     s.q = q1;
-    s.p = dq / h0 - G * T(h0 * constant<T>(0.5));
+    s.p = dq / h0 - G * half(h0);
     s.E = T(energy(q0, q1, h0));
     h_ = History{};
     h_.E_start = s.E;
     h_.last_dt = h0;
     h_.increment = dq;
     have_hessian_ = false;
-    theta_ = T(-1);
+    theta_ = -1;
     taus_.clear(), positions_.clear();
     taus_.push(h0), positions_.push(q0), positions_.push(q1);
     return s;
@@ -163,15 +174,20 @@ class MechanicalEpAVI {
     if (positions_.count() == 0 || !(positions_.newest() == k.q))
       taus_.clear(), positions_.clear(), positions_.push(k.q);
     const bool extrapolate = taus_.count() == kHistory && positions_.count() == kHistory;
-    T tau = extrapolate ? taus_.next() : center;
-    if (!(tau > center / T(2) && tau < center * T(2))) tau = center;
-    VecN x = extrapolate ? positions_.next()
-                         : VecN(k.q + k.p * tau - G_last_ * T(tau * tau * constant<T>(0.5)));
+    T tau = extrapolate ? extrapolated(taus_) : center;
+    if (!near(tau, center)) tau = center;
+    VecN x = extrapolate ? extrapolated(positions_)
+                         : VecN(k.q + k.p * tau - G_last_ * half(T(tau * tau)));
     VecN G;
-    // The Newton matrix of (15) starts from the Hessian of the previous step: A changes by
-    // O(τ³) from step to step, which only slows the contraction of (15) negligibly.
-    if (!have_hessian_) H_ = hessian(VecN((k.q + x) * constant<T>(0.5))), have_hessian_ = true;
-    MatN Ainv = inverse_newton_matrix(H_, tau);
+    // The Newton matrix of (15). In double it starts from the Hessian of the previous step:
+    // A changes by O(τ³) from step to step, which slows the contraction of (15) to about 1e-7
+    // per iteration, and a double start needs one or two. In the wider types the start is
+    // 1e-14 from the solution and the solve must reach 1e-32: there the Hessian (in double, a
+    // fraction of one evaluation of ∇V in T) is taken at the start's midpoint, the iteration
+    // is Newton's, and one correction is usually enough.
+    if (!have_hessian_ || !std::is_same_v<T, double>)
+      H_ = hessian(midpoint(k.q, x)), have_hessian_ = true;
+    MatD Ainv = inverse_newton_matrix(H_, tau);
     W gW(0);
     using std::abs;
     // [epavi-closed-form-step]
@@ -199,38 +215,42 @@ class MechanicalEpAVI {
         converged = true;
         break;
       }
-      H_ = hessian(VecN((k.q + x) * constant<T>(0.5)));
+      H_ = hessian(midpoint(k.q, x));
       Ainv = inverse_newton_matrix(H_, tau);
-      const T inv_tau = T(1) / tau;  // for the estimates below (not for the step itself)
-      const VecN v = (x - k.q) * inv_tau;
-      const VecN AHv = Ainv * VecN(H_ * v), AG = Ainv * G;
-      const T dg = -tau * constant<T>(0.25) * (v.dot(AHv) + G.dot(AG));
-      const T next = tau - T(gW) / dg;
-      if (!is_finite(next) || !(next > center / T(2) && next < center * T(2))) break;
+      const double taud = to_double(tau);
+      const double inv_tau = 1.0 / taud;  // for the estimates below (not for the step itself)
+      const VecD v = lower(VecN(x - k.q)) * inv_tau, Gd = lower(G);
+      const VecD AHv = Ainv * VecD(H_ * v), AG = Ainv * Gd;
+      const double dg = -taud * 0.25 * (v.dot(AHv) + Gd.dot(AG));
+      const T next = tau - T(to_double(gW) / dg);
+      if (!is_finite(W(next)) || !near(next, center)) break;
       // Newton's start for (15) at the new step: q_{k+1} moved along its Taylor polynomial in
       // τ. Differentiating (15), A x' = p_k − τG and A x'' = −G − τ H x' + O(τ²), with
-      // x = q_{k+1}(τ) and A = I + τ²H/4.
-      const VecN dx_dtau = Ainv * VecN(k.p - G * tau);
-      const VecN H_dx = H_ * dx_dtau;
-      const VecN d2x_dtau2 = Ainv * VecN(-G - H_dx * tau);
+      // x = q_{k+1}(τ) and A = I + τ²H/4. x' is a full-size vector: it is computed in T.
+      const VecN dx_dtau = apply_inverse(Ainv, VecN(k.p - G * tau), taud);
+      const VecD dxd_dtau = lower(dx_dtau);
+      const VecD H_dx = H_ * dxd_dtau;
+      const VecD d2x_dtau2 = Ainv * VecD(-Gd - H_dx * taud);
       const T dtau = next - tau;
-      x += (dx_dtau + d2x_dtau2 * T(dtau * constant<T>(0.5))) * dtau;
+      const double dtd = to_double(dtau);
+      x += (dx_dtau + lift(VecD(d2x_dtau2 * (dtd * 0.5)))) * dtau;
       tau = next;
       // The quadratic move is exact to |x‴|·|δτ|³/6, where x‴ = −(3/2)H x' + O(τ); the bound
       // below, 3|H||x'| + |G|/τ, is twice that and more. Below the rounding of q_{k+1}, (15)
       // needs no new solve. (16) is checked at the moved point; if it does not hold to the
       // tooth height, the loop solves as usual. Either way the residual of (15) at the point
       // returned is measured at the end of the step.
-      const T x3 = T(3) * H_.template lpNorm<Eigen::Infinity>() *
-                       dx_dtau.template lpNorm<Eigen::Infinity>() +
-                   G.template lpNorm<Eigen::Infinity>() * inv_tau;
+      const double x3 = 3.0 * H_.template lpNorm<Eigen::Infinity>() *
+                            dxd_dtau.template lpNorm<Eigen::Infinity>() +
+                        Gd.template lpNorm<Eigen::Infinity>() * inv_tau;
       // Whether (16) can hold at the new step at all: Newton's next residual is about
       // |g''|δτ²/2 = |dg/dτ|δτ²/(2τ) (g'' ≈ g'/τ, from the formula for dg/dτ above). In double
       // precision one Newton step usually gets below the tooth height; in the wider types the
       // first does not, and checking (16) there would cost an evaluation for nothing.
-      const bool newton_done = W(abs(dg) * dtau * dtau * inv_tau * T(0.5)) <= floor_here;
+      const bool newton_done = W(std::abs(dg) * dtd * dtd * inv_tau * 0.5) <= floor_here;
       if (shortcuts_ && newton_done &&
-          x3 * abs(dtau) * dtau * dtau <= T(6) * u_ * x.template lpNorm<Eigen::Infinity>()) {
+          x3 * std::abs(dtd) * dtd * dtd <=
+              6.0 * ud_ * lower(x).template lpNorm<Eigen::Infinity>()) {
         gW = wide_energy(k.q, x, tau, targetW);
         ++rep.root_iterations;
         // The floor moves with the point by O(δτ/τ) relative: the one just computed serves.
@@ -245,38 +265,41 @@ class MechanicalEpAVI {
     // representable τ nearest the zero of (16). With q_{k+1} fixed, (16) is
     // g(τ) = |Δq|²/(2τ²) + rest, rest = V(q̄) − E_k, whose zero is τ* = |Δq|/√(−2 rest).
     // When the wide type is wider than T, τ* is computed in it and rounded to T. When it is T
-    // itself, Newton with ∂g/∂τ = −|Δq|²/τ³ runs from where phase 1 stopped until the update
-    // rounds to nothing: τ* computed in double-double (libqd's square root) and polished left
-    // residuals of one sign, and E_k drifted (z = 9 over 2e5 steps). The move is of the
-    // order of the rounding of q_{k+1} (|δτ| ≈ ulp(q)/|Δq/τ|), so (15) stays satisfied to the
-    // same order; its residual is measured again below.
+    // itself, Newton runs from where phase 1 stopped until the update rounds to nothing, on
+    // h(τ) = 2τ²g = |Δq|² + 2τ² rest (same sign and zero as g, no division), with h′ ≈ −2|Δq|²/τ
+    // near the zero, so δτ = hτ/(2|Δq|²), an update of a few units of τ's last place computed in
+    // double: τ* computed in double-double (libqd's square root) and polished left residuals of
+    // one sign, and E_k drifted (z = 9 over 2e5 steps). The move is of the order of the
+    // rounding of q_{k+1} (|δτ| ≈ ulp(q)/|Δq/τ|), so (15) stays satisfied to the same order;
+    // its residual is measured again below.
     // A tolerance looser than the default, once met, ends the step here. Otherwise phase 2
     // always runs: where phase 1 stops, Newton has approached the zero from one side, and a
     // residual left there would carry that side's sign into E_{k+1}.
     const T tau1 = tau;  // where phase 1 stopped, with q_{k+1} solved from (15)
-    const bool loose = options_.tol > 4 * to_double(u_) * (1 + 1e-9);
+    const bool loose = options_.tol > 4 * ud_ * (1 + 1e-9);
     if (!(loose && abs(gW) <= W(options_.tol) * abs(targetW))) {
       // |Δq|² and V(q̄) − E_k of the last evaluation in the wide type, which was at this x.
       const W kinetic2 = last_kinetic2_, rest = last_rest_;
       if constexpr (!std::is_same_v<W, T>) {
         using std::sqrt;
         const T root = rest < W(0) ? T(sqrt(W(kinetic2 / (W(-2.0) * rest)))) : T(0);
-        if (is_finite(W(root)) && root > center / T(2) && root < center * T(2)) {
+        if (is_finite(W(root)) && near(root, center)) {
           tau = root;
           gW = kinetic2 / (W(2.0) * W(tau) * W(tau)) + rest;
         }
-      }
-      for (int it = 0; std::is_same_v<W, T> && it < kMaxPhase2; ++it) {
-        const W tw = W(tau);
-        const T next = T(tw + gW * tw * tw * tw / kinetic2);
-        if (next == tau || !is_finite(next)) break;
-        tau = next;
-        gW = kinetic2 / (W(2.0) * W(tau) * W(tau)) + rest;
+      } else {
+        const double k2 = to_double(kinetic2);
+        for (int it = 0; it < kMaxPhase2 && k2 > 0; ++it) {
+          const T next = tau + T(to_double(scaled_residual(tau)) * to_double(tau) / (2.0 * k2));
+          if (next == tau || !is_finite(W(next))) break;
+          tau = next;
+          gW = residual_from_scaled(scaled_residual(tau), tau);
+        }
       }
     }
     // (17)–(18) at the chosen point.
     const VecN dq = x - k.q;
-    G = P_.gradient(VecN((k.q + x) * constant<T>(0.5)));
+    G = P_.gradient(midpoint(k.q, x));
     // The momentum solve may stop on its contraction estimate, and phase 1 may move q_{k+1}
     // along its Taylor polynomial without a new solve: both are checked here, by the Newton
     // correction that (15) would still ask for at the (q_{k+1}, τ) where phase 1 stopped (∇V
@@ -284,13 +307,14 @@ class MechanicalEpAVI {
     // solve's own bound sends the step to the generic path.
     {
       using std::abs;
-      const VecN F1 = dq + G * T(tau1 * tau1 * constant<T>(0.5)) - k.p * tau1;
+      const VecN F1 = dq + G * half(T(tau1 * tau1)) - k.p * tau1;
       // A⁻¹ of the last Newton update of τ: close enough to scale a correction this small.
-      const VecN correction = Ainv * F1;
-      const T scale = dq.template lpNorm<Eigen::Infinity>();
+      const VecD correction = Ainv * lower(F1);
+      const VecD dqd = lower(dq), xd = lower(x), qd = lower(k.q);
+      const double scale = dqd.template lpNorm<Eigen::Infinity>();
       for (int i = 0; i < N; ++i)
-        if (!(abs(correction(i)) <= rounding_bound(x(i), k.q(i), scale))) {
-          theta_ = T(-1);
+        if (!(std::abs(correction(i)) <= rounding_bound(xd(i), qd(i), scale))) {
+          theta_ = -1;
           // A shortcut was taken: the step once more without any (shortcuts = false cannot
           // take this branch again). In double-double about 0.5% of the steps at h0 = 1e-3
           // land just above the bound after a Taylor move (1.0-1.2 times it).
@@ -303,7 +327,7 @@ class MechanicalEpAVI {
           return remember(fall_back(s, rep), s);
         }
     }
-    const VecN F = dq + G * T(tau * tau * constant<T>(0.5)) - k.p * tau;
+    const VecN F = dq + G * half(T(tau * tau)) - k.p * tau;
     rep.energy_residual = std::abs(to_double(T(gW)));
     rep.momentum_residual = to_double(T(F.template lpNorm<Eigen::Infinity>() / tau));
     h_.prev_dt = h_.last_dt;
@@ -311,7 +335,7 @@ class MechanicalEpAVI {
     h_.increment = dq;
     s.t = h_.advance(k.t, tau);
     s.q = x;
-    s.p = dq / tau - G * T(tau * constant<T>(0.5));
+    s.p = dq / tau - G * half(tau);
     G_last_ = G;
     s.E = T(targetW + gW);
     return remember(rep, s);
@@ -322,7 +346,7 @@ class MechanicalEpAVI {
   std::pair<T, T> energy_in_t(const VecN& q0, const VecN& q1, const T& tau, const T& target) const {
     using std::abs;
     const T kinetic = (q1 - q0).squaredNorm() / (T(2) * tau * tau);
-    const T potential = P_.potential(VecN((q0 + q1) * constant<T>(0.5)));
+    const T potential = P_.potential(midpoint(q0, q1));
     return {kinetic + potential - target,
             T(8) * u_ * (abs(kinetic) + abs(potential) + abs(target))};
   }
@@ -330,20 +354,109 @@ class MechanicalEpAVI {
   /// g = (18) − E_k in the wide type, keeping |Δq|² and V(q̄) − E_k for phase 2.
   W wide_energy(const VecN& q0, const VecN& q1, const T& tau, const W& target) {
     const auto [kinetic2, potential] = wide_parts(q0, q1);
-    const W tw = W(tau);
     last_kinetic2_ = kinetic2;
     last_rest_ = potential - target;
-    return last_kinetic2_ / (W(2.0) * tw * tw) + last_rest_;
+    if constexpr (std::is_same_v<W, T>) {
+      return residual_from_scaled(scaled_residual(tau), tau);
+    } else {
+      const W tw = W(tau);
+      return last_kinetic2_ / (W(2.0) * tw * tw) + last_rest_;
+    }
+  }
+
+  /// 2τ²g = |Δq|² + 2τ²(V(q̄) − E_k) in the wide type, at the parts of the last wide_energy:
+  /// (16) without its division, with g's sign and its cancellation in the wide type.
+  W scaled_residual(const T& tau) const {
+    const W tw = W(tau);
+    return last_kinetic2_ + W(2.0) * last_rest_ * (tw * tw);
+  }
+
+  /// g from 2τ²g, the quotient in double. Used where the wide type is T itself (double-double,
+  /// quad: a division there is a software routine). g is small wherever it decides anything, so
+  /// its relative accuracy of 1e-16 adds nothing to E_{k+1} = E_k + g, and the comparisons with
+  /// the floor and the Newton updates of τ need a few digits.
+  static W residual_from_scaled(const W& scaled, const T& tau) {
+    const double t = to_double(tau);
+    return W(to_double(scaled) / (2.0 * t * t));
   }
 
   /// |q1 − q0|² and V((q0 + q1)/2) in the wide type: the two parts of (18).
   std::pair<W, W> wide_parts(const VecN& q0, const VecN& q1) const {
     const VecW a = widen(q0), b = widen(q1);
-    return {(b - a).squaredNorm(), P_.potential(VecW((a + b) * constant<W>(0.5)))};
+    return {(b - a).squaredNorm(), P_.potential(midpoint(a, b))};
   }
 
   static constexpr int kMaxPhase1 = 30;
   static constexpr int kMaxPhase2 = 8;
+
+  /// The polynomial extrapolation of the last kHistory values (SampleHistory::next). In the
+  /// wider types it is taken as the newest value plus the weighted differences to it, the sum
+  /// in double: its error, about 1e-16 of the differences, is far below that of the
+  /// extrapolation itself (1e-14 relative), and it saves kHistory products in T per component.
+  template <class V>
+  static V extrapolated(const SampleHistory<V, T, kHistory>& h) {
+    if constexpr (std::is_same_v<T, double>) {
+      return h.next();
+    } else {
+      const V& x0 = h.newest();
+      if constexpr (std::is_same_v<V, T>) {
+        double sum = 0;
+        for (int j = 1; j < kHistory; ++j)
+          sum += SampleHistory<V, T, kHistory>::weight(kHistory, j) * to_double(T(h.value(j) - x0));
+        return x0 + T(sum);
+      } else {
+        VecD sum = VecD::Zero();
+        for (int j = 1; j < kHistory; ++j)
+          sum += lower(VecN(h.value(j) - x0)) * SampleHistory<V, T, kHistory>::weight(kHistory, j);
+        return x0 + lift(sum);
+      }
+    }
+  }
+
+  /// (a + b)/2, componentwise (half() halves a double-double without a product).
+  template <class S>
+  static Vec<S, N> midpoint(const Vec<S, N>& a, const Vec<S, N>& b) {
+    Vec<S, N> m;
+    for (int i = 0; i < N; ++i) m(i) = half(S(a(i) + b(i)));
+    return m;
+  }
+
+  /// A vector of T in double, and back.
+  static VecD lower(const VecN& v) {
+    if constexpr (std::is_same_v<T, double>) {
+      return v;
+    } else {
+      VecD d;
+      for (int i = 0; i < N; ++i) d(i) = to_double(v(i));
+      return d;
+    }
+  }
+  static VecN lift(const VecD& d) {
+    if constexpr (std::is_same_v<T, double>) {
+      return d;
+    } else {
+      VecN v;
+      for (int i = 0; i < N; ++i) v(i) = T(d(i));
+      return v;
+    }
+  }
+
+  /// Whether a trial step lies in (center/2, 2 center), the generic path's bracket.
+  static bool near(const T& tau, const T& center) {
+    const double t = to_double(tau), c = to_double(center);
+    return t > c / 2 && t < c * 2;
+  }
+
+  /// A⁻¹r for a full-size r in T: A = I + B with B = τ²H/4, so A⁻¹r = r − A⁻¹Br, and only the
+  /// small term A⁻¹Br (about 1e-5 of r for Kepler at h0 = 1e-3) is taken in double.
+  VecN apply_inverse(const MatD& Ainv, const VecN& r, double tau) const {
+    if constexpr (std::is_same_v<T, double>) {
+      (void)tau;
+      return Ainv * r;
+    } else {
+      return r - lift(VecD(Ainv * VecD(H_ * lower(r)) * (tau * tau * 0.25)));
+    }
+  }
 
   static VecW widen(const VecN& v) {
     VecW w;
@@ -352,55 +465,58 @@ class MechanicalEpAVI {
   }
   static bool is_finite(const W& w) { return ScalarTraits<W>::is_finite(w); }
 
-  /// ∇²V(x), by the problem's own Hessian or AutoDiff (ad::potential_hessian).
-  MatN hessian(const VecN& x) const { return ad::potential_hessian(P_, x); }
+  /// ∇²V(x) in double, by the problem's own Hessian or AutoDiff (ad::potential_hessian).
+  MatD hessian(const VecN& x) const { return ad::potential_hessian(P_, lower(x)); }
 
   /// A⁻¹ for A = I + (τ²/4) H: A is I plus a small perturbation wherever (15) is solvable at
   /// all, so the explicit inverse (closed-form cofactors for N <= 4 in Eigen) is accurate and
   /// far cheaper than a pivoted factorization of a 2×2 system.
-  static MatN inverse_newton_matrix(const MatN& H, const T& tau) {
-    return MatN(MatN::Identity() + H * T(tau * tau * constant<T>(0.25))).inverse();
+  static MatD inverse_newton_matrix(const MatD& H, const T& tau) {
+    const double t = to_double(tau);
+    return MatD(MatD::Identity() + H * (t * t * 0.25)).inverse();
   }
 
   /// (15) for q_{k+1} = x at step τ: Newton with the Jacobian A held fixed (A differs from the
   /// exact Jacobian by O(τ²) changes of ∇²V, so the iteration contracts by far more than a
   /// Newton step needs). G is ∇V at the last midpoint used; the residual of (15) is measured at
   /// the point the step returns.
-  void solve_momentum(const State& k, const T& tau, const MatN& Ainv, VecN& x, VecN& G,
+  void solve_momentum(const State& k, const T& tau, const MatD& Ainv, VecN& x, VecN& G,
                       int& iterations) {
-    const T half_tau2 = tau * tau * constant<T>(0.5);
-    T previous(0);  // max |dx| of the last iteration
+    const T half_tau2 = half(T(tau * tau));
+    double previous = 0;  // max |dx| of the last iteration
     // Before a second iteration shows the contraction, the contraction seen in earlier steps
     // (twice it) stands in: A changes by O(τ³) from step to step. The step's final check of
     // (15) verifies the point returned either way, and a step that fails it is taken again
     // without this shortcut.
-    const T theta_before = shortcuts_ && theta_ >= T(0) ? T(T(2) * theta_) : T(1);
+    const double theta_before = shortcuts_ && theta_ >= 0 ? 2 * theta_ : 1.0;
     for (int it = 1; it <= options_.max_newton_iterations; ++it) {
-      G = P_.gradient(VecN((k.q + x) * constant<T>(0.5)));
+      G = P_.gradient(midpoint(k.q, x));
       const VecN F = (x - k.q) + G * half_tau2 - k.p * tau;
-      const VecN dx = Ainv * F;
-      x -= dx;
+      // The correction is about 1e-11 of x in double and 1e-14 in the wider types: its
+      // relative accuracy in double is ample, and the next iteration corrects what is left.
+      const VecD dx = Ainv * lower(F);
+      x -= lift(dx);
       ++iterations;
-      using std::abs;
-      const T scale = (x - k.q).template lpNorm<Eigen::Infinity>();
-      const T size = dx.template lpNorm<Eigen::Infinity>();
+      const VecD xd = lower(x), qd = lower(k.q);
+      const double scale = lower(VecN(x - k.q)).template lpNorm<Eigen::Infinity>();
+      const double size = dx.template lpNorm<Eigen::Infinity>();
       // The contraction θ = |dx_k|/|dx_{k−1}| of this solve: the next correction would be
       // about θ|dx_k|, so once θ/(1 − θ)·|dx_k| is below the bound the iterate is converged
       // without another evaluation of ∇V (the stopping rule of simplified Newton methods).
-      const T theta = it >= 2 && previous > T(0) ? T(size / previous) : theta_before;
-      const T ahead = theta < T(0.5) ? T(theta / (T(1) - theta)) : T(-1);
+      const double theta = it >= 2 && previous > 0 ? size / previous : theta_before;
+      const double ahead = theta < 0.5 ? theta / (1 - theta) : -1.0;
       // What the next steps assume: the contraction seen, but a smaller one only slowly (a
       // correction that happens to come out small says little about the next solve).
-      if (it >= 2 && previous > T(0)) theta_ = std::max(theta, T(theta_ * T(0.25)));
+      if (it >= 2 && previous > 0) theta_ = std::max(theta, theta_ * 0.25);
       previous = size;
-      bool small = true, converged_ahead = ahead >= T(0);
+      bool small = true, converged_ahead = ahead >= 0;
       for (int i = 0; i < N; ++i) {
-        if (!ScalarTraits<T>::is_finite(dx(i)) || !ScalarTraits<T>::is_finite(x(i)))
+        if (!std::isfinite(dx(i)) || !std::isfinite(xd(i)))
           fail_momentum(to_double(k.t), to_double(tau), "gave a non-finite value",
                         to_double(T(F.template lpNorm<Eigen::Infinity>())), iterations);
-        const T bound = rounding_bound(x(i), k.q(i), scale);
-        if (abs(dx(i)) > bound) small = false;
-        if (!(ahead * abs(dx(i)) <= bound)) converged_ahead = false;
+        const double bound = rounding_bound(xd(i), qd(i), scale);
+        if (std::abs(dx(i)) > bound) small = false;
+        if (!(ahead * std::abs(dx(i)) <= bound)) converged_ahead = false;
       }
       if (small || converged_ahead) {
         if (it == 1 && !small) took_shortcut_ = true;
@@ -424,24 +540,26 @@ class MechanicalEpAVI {
   }
 
   /// The size below which a Newton correction of component i of q_{k+1} is rounding: 2u times
-  /// the largest of |q_{k+1,i}|, |q_{k,i}| and the step |q_{k+1} − q_k|. The momentum solve
-  /// stops on it, and the step's final check of (15) holds the point returned to it.
-  T rounding_bound(const T& x_i, const T& q_i, const T& scale) const {
-    using std::abs;
-    return T(2) * u_ * std::max({abs(x_i), abs(q_i), scale});
+  /// the largest of |q_{k+1,i}|, |q_{k,i}| and the step |q_{k+1} − q_k| (u of T, the sizes in
+  /// double). The momentum solve stops on it, and the step's final check of (15) holds the
+  /// point returned to it.
+  double rounding_bound(double x_i, double q_i, double scale) const {
+    return 2 * ud_ * std::max({std::abs(x_i), std::abs(q_i), scale});
   }
 
   /// Where phase 1 stops: the height of a tooth of g (what rounding q_{k+1} to T moves it by)
-  /// plus the energy's own round-off, or tol·|E_k| if that is larger.
+  /// plus the energy's own round-off, or tol·|E_k| if that is larger. An estimate, in double.
   W floor(const State& k, const VecN& x, const T& tau, const VecN& G, const T& target) const {
-    using std::abs;
-    T f(0);
-    const T inv_tau2 = T(1) / (tau * tau);
+    const double t = to_double(tau);
+    const double inv_tau2 = 1.0 / (t * t);
+    const VecD xd = lower(x), dq = lower(VecN(x - k.q)), Gd = lower(G);
+    double f = 0;
     for (int i = 0; i < N; ++i) {
-      const T dgdq = abs(T((x(i) - k.q(i)) * inv_tau2 + G(i) * constant<T>(0.5)));
-      f += dgdq * u_ * std::max(abs(x(i)), abs(T(x(i) - k.q(i))));
+      const double dgdq = std::abs(dq(i) * inv_tau2 + Gd(i) * 0.5);
+      f += dgdq * ud_ * std::max(std::abs(xd(i)), std::abs(dq(i)));
     }
-    f = std::max(T(T(2) * f + u_ * abs(target)), T(T(options_.tol) * abs(target)));
+    const double E = std::abs(to_double(target));
+    f = std::max(2 * f + ud_ * E, options_.tol * E);
     return W(f);
   }
 
@@ -467,16 +585,16 @@ class MechanicalEpAVI {
   Reference reference_;
   Options options_;
   T u_;
+  double ud_;  ///< u_ in double, for the estimates
   long long fallbacks_ = 0;
-  MatN H_ = MatN::Zero();       ///< ∇²V at the last midpoint where dg/dτ was needed
-  VecN G_last_ = VecN::Zero();  ///< ∇V at the last step's midpoint
+  MatD H_ = MatD::Zero();  ///< ∇²V at the last midpoint where dg/dτ was needed
   bool have_hessian_ = false;
-  T theta_ = T(-1);             ///< the contraction the solves of (15) showed (−1: none yet)
+  VecN G_last_ = VecN::Zero();  ///< ∇V at the last step's midpoint
+  double theta_ = -1;           ///< the contraction the solves of (15) showed (−1: none yet)
   bool took_shortcut_ = false;  ///< whether this step stopped a solve on theta_ or moved x
   bool shortcuts_ = true;       ///< whether this step may (see take_step)
   W last_kinetic2_ = W(0), last_rest_ = W(0);  ///< the parts of the last wide_energy
   History h_;  ///< the last steps, the last increment, the compensation of t, E_1
-  static constexpr int kHistory = 8;
   SampleHistory<T, T, kHistory> taus_;          ///< the last steps τ of this trajectory
   SampleHistory<VecN, T, kHistory> positions_;  ///< the last positions, q_k newest
 };

@@ -2,6 +2,8 @@
 // the sign of its energy residuals.
 #include <cmath>
 #include <numbers>
+#include <string>
+#include <type_traits>
 #include <vector>
 
 #include <doctest/doctest.h>
@@ -18,6 +20,16 @@ namespace {
 template <class T>
 Vec<T, 2> lift(const Vec<double, 2>& v) {
   return Vec<T, 2>(T(v(0)), T(v(1)));
+}
+
+template <class T>
+const char* label() {
+  if constexpr (std::is_same_v<T, long double>)
+    return "long double";
+  else if constexpr (std::is_same_v<T, dd_real>)
+    return "double-double";
+  else
+    return "quad";
 }
 
 // One period of the Kepler orbit with eccentricity e from perihelion, h0 = 1e-3, paper's
@@ -140,12 +152,13 @@ TEST_CASE("MechanicalEpAVI at h0 = 0.01: every step ends, and the generic path t
   }
 }
 
-TEST_CASE("MechanicalEpAVI in double-double: the discrete energy walks at random") {
+TEST_CASE_TEMPLATE("MechanicalEpAVI in the wider types: the discrete energy walks at random", T,
+                   long double, dd_real, quad) {
   // e = 0.7, h0 = 1e-3, 1e5 steps (about 100 periods): no preferred sign of the per-step
-  // changes, |z| < 4 for z = Σd/√(Σd²). Phase 2 once started double-double's Newton from the
-  // closed-form zero of (16) in double-double (libqd's square root): the residuals came out
-  // of one sign, z = 5.8 at 1e5 steps, 9.1 at 2e5.
-  using T = dd_real;
+  // changes, |z| < 4 for z = Σd/√(Σd²). These types are their own wide type: phase 2 runs
+  // Newton on 2τ²g with its updates in double. Phase 2 once started double-double's Newton
+  // from the closed-form zero of (16) in double-double (libqd's square root): the residuals
+  // came out of one sign, z = 5.8 at 1e5 steps, 9.1 at 2e5.
   const double e = 0.7, h0 = 1e-3;
   const KeplerOrbit orbit = KeplerOrbit::perihelion(e);
   MechanicalEpAVI<Kepler, T> m{Kepler{}};
@@ -159,7 +172,7 @@ TEST_CASE("MechanicalEpAVI in double-double: the discrete energy walks at random
     sum2 += d * d;
   }
   const double z = sum / std::sqrt(sum2);
-  MESSAGE("double-double, 1e5 steps: z = ", z, ", rms change ", std::sqrt(sum2 / 1e5),
+  MESSAGE(std::string(label<T>()), ", 1e5 steps: z = ", z, ", rms change ", std::sqrt(sum2 / 1e5),
           ", generic path ", m.fallbacks());
   CHECK(std::abs(z) < 4);
   CHECK(m.fallbacks() == 0);
