@@ -38,7 +38,8 @@
 /// leaves residuals up to tol·|E_k| (Sharma's Fig. 5); at the default, phase 2 always runs.
 ///
 /// **Cost.** τ and q_{k+1} start from the polynomials through the last eight steps
-/// (core/extrapolate.hpp); the momentum solve stops on the contraction its corrections show
+/// (core/extrapolate.hpp); the Newton matrix of (15) comes from ∇²V at the start's midpoint,
+/// so the solve is Newton's own iteration; it stops on the contraction its corrections show
 /// (before the second, on the one seen in earlier steps); q_{k+1} follows a Newton update of τ
 /// along its Taylor polynomial; the first value of g, when clearly above the floor, is taken
 /// in T. Every shortcut is checked at the end of the step by the residual of (15) at the point
@@ -129,7 +130,6 @@ class MechanicalEpAVI {
     h_.E_start = s.E;
     h_.last_dt = h0;
     h_.increment = dq;
-    have_hessian_ = false;
     theta_ = -1;
     taus_.clear(), positions_.clear();
     taus_.push(h0), positions_.push(q0), positions_.push(q1);
@@ -179,14 +179,13 @@ class MechanicalEpAVI {
     VecN x = extrapolate ? extrapolated(positions_)
                          : VecN(k.q + k.p * tau - G_last_ * half(T(tau * tau)));
     VecN G;
-    // The Newton matrix of (15). In double it starts from the Hessian of the previous step:
-    // A changes by O(τ³) from step to step, which slows the contraction of (15) to about 1e-7
-    // per iteration, and a double start needs one or two. In the wider types the start is
-    // 1e-14 from the solution and the solve must reach 1e-32: there the Hessian (in double, a
-    // fraction of one evaluation of ∇V in T) is taken at the start's midpoint, the iteration
-    // is Newton's, and one correction is usually enough.
-    if (!have_hessian_ || !std::is_same_v<T, double>)
-      H_ = hessian(midpoint(k.q, x)), have_hessian_ = true;
+    // The Newton matrix of (15), from ∇²V at the start's midpoint (in double: it only scales
+    // corrections). Taken here, it does not wait for the solve, and the solve is Newton's
+    // iteration from its first correction: one correction is usually enough, in double from a
+    // start 1e-11 away, in the wider types from 1e-14 to their round-off. The first Newton
+    // update of τ below uses it too (q_{k+1} moves by about 1e-11 relative in the solve, and
+    // ∇²V with it); later updates, after larger moves, take it again.
+    H_ = hessian(midpoint(k.q, x));
     MatD Ainv = inverse_newton_matrix(H_, tau);
     W gW(0);
     using std::abs;
@@ -215,8 +214,10 @@ class MechanicalEpAVI {
         converged = true;
         break;
       }
-      H_ = hessian(midpoint(k.q, x));
-      Ainv = inverse_newton_matrix(H_, tau);
+      if (it > 0) {
+        H_ = hessian(midpoint(k.q, x));
+        Ainv = inverse_newton_matrix(H_, tau);
+      }
       const double taud = to_double(tau);
       const double inv_tau = 1.0 / taud;  // for the estimates below (not for the step itself)
       const VecD v = lower(VecN(x - k.q)) * inv_tau, Gd = lower(G);
@@ -587,8 +588,7 @@ class MechanicalEpAVI {
   T u_;
   double ud_;  ///< u_ in double, for the estimates
   long long fallbacks_ = 0;
-  MatD H_ = MatD::Zero();  ///< ∇²V at the last midpoint where dg/dτ was needed
-  bool have_hessian_ = false;
+  MatD H_ = MatD::Zero();       ///< ∇²V at the start's midpoint, or where τ was last updated
   VecN G_last_ = VecN::Zero();  ///< ∇V at the last step's midpoint
   double theta_ = -1;           ///< the contraction the solves of (15) showed (−1: none yet)
   bool took_shortcut_ = false;  ///< whether this step stopped a solve on theta_ or moved x
