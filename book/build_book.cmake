@@ -95,7 +95,7 @@ if(DEFINED ENV{VIBOOK_BOOK_BENCH} AND EXISTS ${BENCH_EXE})
 endif()
 if(EXISTS ${BENCH_JSON})
   execute_process(COMMAND ${PYTHON3} ${SOURCE_DIR}/tests/bench/bench_table.py ${BENCH_JSON}
-                          ${BINARY_DIR}/bench/work_precision.csv
+                          ${BINARY_DIR}/bench/work_precision.csv ${GEN}/bench-adaptive.html
                   OUTPUT_FILE ${GEN}/bench.html RESULT_VARIABLE rc)
   if(NOT rc EQUAL 0)
     message(FATAL_ERROR "bench_table.py failed")
@@ -112,6 +112,7 @@ else()
   file(WRITE ${GEN}/bench.html
        "<p><em>Not measured in this build.</em> Run <code>./build.sh bench</code> (or "
        "<code>./build.sh book</code>, which runs the benchmarks) to fill this table.</p>\n")
+  file(COPY_FILE ${GEN}/bench.html ${GEN}/bench-adaptive.html)
 endif()
 
 # 4. Doxygen, then MathJax next to the HTML so that the book works offline.
