@@ -158,6 +158,10 @@ class MechanicalEpAVI {
   /// step took nearly twice as long in the benchmark as in a small program.
   [[gnu::flatten]] ExtendedStepReport take_step(State& s, bool shortcuts) {
     ExtendedStepReport rep;
+    // The estimates are taken in double, which needs T's unit round-off (times the sizes of a
+    // step) inside double's range: true up to about 280 decimal digits. Beyond, for MPFR at
+    // more digits, every step is the generic path's (fallbacks() counts them).
+    if (!(ud_ > kSmallestRoundoff)) return remember(fall_back(s, rep), s);
     took_shortcut_ = false;
     shortcuts_ = shortcuts;
     const State k = s;
@@ -389,6 +393,7 @@ class MechanicalEpAVI {
   }
 
   static constexpr int kMaxPhase1 = 30;
+  static constexpr double kSmallestRoundoff = 1e-280;
   static constexpr int kMaxPhase2 = 8;
 
   /// The polynomial extrapolation of the last kHistory values (SampleHistory::next). In the

@@ -177,3 +177,21 @@ TEST_CASE_TEMPLATE("MechanicalEpAVI in the wider types: the discrete energy walk
   CHECK(std::abs(z) < 4);
   CHECK(m.fallbacks() == 0);
 }
+
+TEST_CASE("MechanicalEpAVI in MPFR beyond double's range: every step by the generic path") {
+  // The closed form takes its estimates (Newton matrices, bounds) in double, which needs the
+  // unit round-off inside double's range. At 300 digits (u ≈ 1e-300) every step must go to
+  // the generic path, and the discrete energy must hold to that precision, not to double's.
+  const MpfrDigits digits(300);
+  using T = mpfr_real;
+  const double e = 0.7, h0 = 1e-3;
+  const KeplerOrbit orbit = KeplerOrbit::perihelion(e);
+  MechanicalEpAVI<Kepler, T> m{Kepler{}};
+  auto s = m.start(T(0), lift<T>(orbit.at(0.0).q), T(h0), lift<T>(orbit.at(h0).q));
+  const T E1 = s.E;
+  for (int k = 0; k < 3; ++k) m.step(s);
+  const double dE = std::abs(to_double(T(s.E - E1)));
+  MESSAGE("MPFR 300 digits, 3 steps: generic path ", m.fallbacks(), ", |E_3 - E_1| = ", dE);
+  CHECK(m.fallbacks() == 3);
+  CHECK(dE <= 1e-250);
+}
