@@ -88,7 +88,6 @@ class MechanicalEpAVI {
   using State = ExtendedState<N, T>;
   using Options = typename Reference::Options;
   using VecN = Vec<T, N>;
-  using MatN = Mat<T, N>;
   using W = typename WiderScalar<T>::type;
   using VecW = Vec<W, N>;
   /// The Newton matrices, derivatives and bounds of the step are estimates: they scale
@@ -388,7 +387,7 @@ class MechanicalEpAVI {
 
   /// |q1 − q0|² and V((q0 + q1)/2) in the wide type: the two parts of (18).
   std::pair<W, W> wide_parts(const VecN& q0, const VecN& q1) const {
-    const VecW a = widen(q0), b = widen(q1);
+    const VecW a = q0.template cast<W>(), b = q1.template cast<W>();
     return {(b - a).squaredNorm(), P_.potential(midpoint(a, b))};
   }
 
@@ -428,25 +427,12 @@ class MechanicalEpAVI {
     return m;
   }
 
-  /// A vector of T in double, and back.
+  /// A vector of T in double (to_double: libqd's dd_real has no conversion Eigen's cast
+  /// could use), and back (Eigen's cast).
   static VecD lower(const VecN& v) {
-    if constexpr (std::is_same_v<T, double>) {
-      return v;
-    } else {
-      VecD d;
-      for (int i = 0; i < N; ++i) d(i) = to_double(v(i));
-      return d;
-    }
+    return v.unaryExpr([](const T& x) { return to_double(x); });
   }
-  static VecN lift(const VecD& d) {
-    if constexpr (std::is_same_v<T, double>) {
-      return d;
-    } else {
-      VecN v;
-      for (int i = 0; i < N; ++i) v(i) = T(d(i));
-      return v;
-    }
-  }
+  static VecN lift(const VecD& d) { return d.template cast<T>(); }
 
   /// Whether a trial step lies in (center/2, 2 center), the generic path's bracket.
   static bool near(const T& tau, const T& center) {
@@ -465,11 +451,6 @@ class MechanicalEpAVI {
     }
   }
 
-  static VecW widen(const VecN& v) {
-    VecW w;
-    for (int i = 0; i < N; ++i) w(i) = W(v(i));
-    return w;
-  }
   static bool is_finite(const W& w) { return ScalarTraits<W>::is_finite(w); }
 
   /// ∇²V(x) in double, by the problem's own Hessian or AutoDiff (ad::potential_hessian).
