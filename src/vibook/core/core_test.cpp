@@ -1,6 +1,8 @@
-// Doctests of core/: Newton reports and typed failures, the streaming recorder, order fits.
+// Doctests of core/: Newton reports and typed failures, the streaming recorder, order fits,
+// the extrapolation of a sample history.
 #include <sys/resource.h>
 
+#include <algorithm>
 #include <atomic>
 #include <cmath>
 #include <limits>
@@ -8,6 +10,7 @@
 
 #include <doctest/doctest.h>
 
+#include "vibook/core/extrapolate.hpp"
 #include "vibook/core/newton.hpp"
 #include "vibook/core/order.hpp"
 #include "vibook/core/parallel.hpp"
@@ -196,4 +199,36 @@ TEST_CASE("parallel_for runs every task and rethrows the first failure") {
                                             }),
                        "4", std::runtime_error);
   CHECK(ran == 10);
+}
+
+TEST_CASE(
+    "SampleHistory: exact on polynomials, the same after many pushes, next_after = push + next") {
+  // The polynomial of degree n − 1 through n samples is exact on a polynomial of that degree:
+  // a cubic at the integers, with small integer values, is extrapolated without rounding by
+  // n = 4 and by n = 8 (its higher differences vanish), across many wraps of the buffer.
+  auto cubic = [](double k) { return 2 * k * k * k - 3 * k * k + k - 5; };
+  SampleHistory<double, double, 8> h;
+  for (int k = 0; k < 100; ++k) {
+    h.push(cubic(k));
+    CHECK(h.count() == std::min(k + 1, 8));
+    CHECK(h.newest() == cubic(k));
+    if (k >= 7) {
+      CHECK(h.next(4) == cubic(k + 1));
+      CHECK(h.next() == cubic(k + 1));
+      for (int j = 0; j < 8; ++j) CHECK(h.value(j) == cubic(k - j));
+    }
+  }
+  // next_after(x) is next() after push(x) to the last bit, for values that do round, at
+  // every fill level and after clear().
+  SampleHistory<Vec<double, 2>, double, 8> a, b;
+  for (int k = 0; k < 40; ++k) {
+    if (k == 23) a.clear(), b.clear();
+    const Vec<double, 2> x(std::sin(0.37 * k) / 3, std::exp(0.01 * k) / 7);
+    const Vec<double, 2> predicted = a.next_after(x);
+    b.push(x);
+    const Vec<double, 2> pushed = b.next();
+    CHECK(predicted(0) == pushed(0));
+    CHECK(predicted(1) == pushed(1));
+    a.push(x);
+  }
 }

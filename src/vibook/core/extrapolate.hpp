@@ -31,15 +31,18 @@ class SampleHistory {
   /// How many values are held (at most K).
   int count() const { return count_; }
   /// The newest value; requires count() >= 1.
-  const V& newest() const { return x_[0]; }
+  const V& newest() const { return x_[top_]; }
   /// The j-th newest value (0: the newest); requires j < count().
-  const V& value(int j) const { return x_[j]; }
+  const V& value(int j) const { return x_[top_ + j]; }
   /// The weight of value(j) in next(n); requires 0 <= j < n <= K.
   static double weight(int n, int j) { return kWeights[n - 1][j]; }
 
   void push(const V& x) {
-    for (int j = K - 1; j > 0; --j) x_[j] = x_[j - 1];
-    x_[0] = x;
+    if (top_ == 0) {  // the buffer's front is full: the K − 1 newest go back to its end
+      for (int j = K - 2; j >= 0; --j) x_[K + 1 + j] = x_[j];
+      top_ = K + 1;
+    }
+    x_[--top_] = x;
     count_ = std::min(count_ + 1, K);
   }
 
@@ -47,8 +50,20 @@ class SampleHistory {
   /// count() >= 1 (one value extrapolates as a constant).
   V next(int n = K) const {
     n = std::min(n, count_);
-    V sum = x_[0] * S(kWeights[n - 1][0]);
-    for (int j = 1; j < n; ++j) sum += x_[j] * S(kWeights[n - 1][j]);
+    const V* x = x_.data() + top_;
+    V sum = x[0] * S(kWeights[n - 1][0]);
+    for (int j = 1; j < n; ++j) sum += x[j] * S(kWeights[n - 1][j]);
+    return sum;
+  }
+
+  /// What next(n) would return after push(x), without pushing: the same sum in the same
+  /// order, so the two agree to the last bit (AVI computes the next step's start this way
+  /// before it knows whether x is accepted).
+  V next_after(const V& x, int n = K) const {
+    n = std::min({n, count_ + 1, K});
+    V sum = x * S(kWeights[n - 1][0]);
+    const V* older = x_.data() + top_;
+    for (int j = 1; j < n; ++j) sum += older[j - 1] * S(kWeights[n - 1][j]);
     return sum;
   }
 
@@ -66,7 +81,10 @@ class SampleHistory {
     return w;
   }();
 
-  std::array<V, K> x_{};
+  /// The values newest first from x_[top_]: a push writes one place further down, so it
+  /// copies nothing until the front is reached, and then the K − 1 it keeps once.
+  std::array<V, 2 * K> x_{};
+  int top_ = 2 * K;
   int count_ = 0;
 };
 
