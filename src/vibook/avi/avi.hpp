@@ -101,6 +101,17 @@ Vec<double, N> monitor_gradient(const Monitor& g, const Problem& P, const Vec<do
 /// Euler midpoint q0 + (Δa g(q0)/2) p0 with a fresh matrix. The point returned is
 /// the last one evaluated, accepted when the Newton correction it still asks for is below
 /// NewtonOptions' rule, so q1, p1, t1 and the residual reported all belong to one q̄.
+///
+/// **The next step's first evaluation is taken early.** An evaluation (∇V and c at a
+/// midpoint) is paired with the one at the midpoint the next step will start from should
+/// this one be accepted (the extrapolation with it appended, SampleHistory::next_after). The
+/// two are independent, so an out-of-order processor computes them side by side instead of
+/// one after the other; a step that continues the trajectory then begins with its first
+/// evaluation done. It is the evaluation the next step would make itself, to the last bit:
+/// the trajectory, the residuals and the iteration counts are those of evaluating in turn.
+/// A pair whose midpoint is not accepted is dropped. ∇V and the monitor are thus evaluated at
+/// points a step may never start from; like every problem and monitor here, they must be
+/// free of side effects.
 template <class Problem, class Monitor>
 class AdaptiveMidpoint {
  public:
@@ -150,10 +161,11 @@ class AdaptiveMidpoint {
   /// One step of (21)–(23) from s, solved for the midpoint q̄ (see the class).
   SolveReport step(TimedState<N>& s, double da) {
     const bool continues = mid_.count() > 0 && da == last_da_ && s.q == last_q_ && s.p == last_p_;
-    if (!continues) mid_.clear(), have_jacobian_ = false;
+    if (!continues) mid_.clear(), have_jacobian_ = false, have_next_ = false;
     const TimedState<N> start = s;
     try {
-      return solve(s, da, continues ? extrapolated_midpoint(s.q) : cold_midpoint(s, da));
+      if (have_next_) return solve(s, da, next_, true);
+      return solve(s, da, {continues ? extrapolated_midpoint(s.q) : cold_midpoint(s, da)}, false);
     } catch (const SolveError&) {
       if (!continues) throw;
     }
@@ -161,7 +173,7 @@ class AdaptiveMidpoint {
     // the explicit Euler midpoint with a fresh matrix, as without a history.
     s = start;
     mid_.clear(), have_jacobian_ = false;
-    return solve(s, da, cold_midpoint(s, da));
+    return solve(s, da, {cold_midpoint(s, da)}, false);
   }
 
   /// The same step by simplified Newton on the full 2N-system (21)–(22) in z = (q1, p1) from
@@ -195,25 +207,41 @@ class AdaptiveMidpoint {
   }
 
  private:
-  /// Newton on F(q̄) = 0 from m, then (21)–(23) at the accepted midpoint. Everything it calls
-  /// is inlined into it (`flatten`, as for the closed-form EpAVI step: epavi/mechanical.hpp).
-  [[gnu::flatten]] SolveReport solve(TimedState<N>& s, double da, VecN m) {
-    SolveReport rep;
-    // [avi-step]
-    // Sharma et al. 2022, (21)–(22) with p̄ eliminated: F(q̄) = 2(q̄ − q0) − c p0 + (c²/2)∇V(q̄).
-    VecN G, F;
+  /// ∇V and c = Δa g at a midpoint m: what an iteration evaluates.
+  struct Evaluation {
+    VecN m = VecN::Zero(), G = VecN::Zero();
     double c = 0;
-    auto evaluate = [&] {
-      G = P_.gradient(m);
-      c = da * monitor_at(m, G);
-      F = (m - s.q) * 2.0 - (s.p - G * (0.5 * c)) * c;
-    };
-    // [avi-step]
+  };
+
+  Evaluation evaluate(const VecN& m, double da) const {
+    Evaluation e{m, P_.gradient(m), 0.0};
+    e.c = da * monitor_at(m, e.G);
+    return e;
+  }
+
+  /// Newton on F(q̄) = 0 from e.m (with ∇V and c there already in e when `evaluated`), then
+  /// (21)–(23) at the accepted midpoint. Everything it calls is inlined into it (`flatten`,
+  /// as for the closed-form EpAVI step: epavi/mechanical.hpp).
+  [[gnu::flatten]] SolveReport solve(TimedState<N>& s, double da, Evaluation e, bool evaluated) {
+    have_next_ = false;
+    SolveReport rep;
+    Evaluation next;  // at the next step's start, should e.m be accepted
+    VecN F;
     double last = 0;
     bool fresh = false;  // whether Jinv_ was evaluated in this step
     const int max_it = options_.max_iterations;
     for (rep.iterations = 1; rep.iterations <= max_it; ++rep.iterations) {
-      evaluate();
+      if (rep.iterations > 1 || !evaluated) {
+        e = evaluate(e.m, da);
+        next = evaluate(next_start(s.q, e.m), da);  // independent of e: computed alongside
+      }
+      // [avi-step]
+      // Sharma et al. 2022, (21)–(22) with p̄ eliminated: F(q̄) = 2(q̄ − q0) − c p0 + (c²/2)∇V(q̄).
+      const VecN& m = e.m;
+      const VecN& G = e.G;
+      const double c = e.c;
+      F = (m - s.q) * 2.0 - (s.p - G * (0.5 * c)) * c;
+      // [avi-step]
       rep.residual = F.template lpNorm<Eigen::Infinity>();
       if (!std::isfinite(rep.residual) || !std::isfinite(c)) break;
       if (!have_jacobian_) Jinv_ = inverse_jacobian(s, da, m, G, c), have_jacobian_ = fresh = true;
@@ -231,7 +259,7 @@ class AdaptiveMidpoint {
         break;
       }
       last = size;
-      m -= dx;
+      e.m -= dx;
     }
     if (!rep.converged) {
       have_jacobian_ = false;
@@ -239,10 +267,12 @@ class AdaptiveMidpoint {
     }
     // A step that needed more than one correction asks for a fresh matrix in the next one.
     if (rep.iterations > 2) have_jacobian_ = false;
-    mid_.push(m);
-    s.q = m * 2.0 - s.q;
-    s.p = s.p - G * c;
-    s.t += c;
+    // The pair taken with the accepted midpoint (none when it was accepted as it came in).
+    if (rep.iterations > 1 || !evaluated) next_ = next, have_next_ = true;
+    mid_.push(e.m);
+    s.q = e.m * 2.0 - s.q;
+    s.p = s.p - e.G * e.c;
+    s.t += e.c;
     last_q_ = s.q, last_p_ = s.p, last_da_ = da;
     return rep;
   }
@@ -275,15 +305,23 @@ class AdaptiveMidpoint {
     return mid_.count() == 1 ? VecN(q0 * 2.0 - mid_.newest()) : mid_.next();
   }
 
+  /// What extrapolated_midpoint will return in the next step if this step, from q0, accepts
+  /// the midpoint m (and so returns q1 = 2m − q0): the same arithmetic, to the last bit.
+  VecN next_start(const VecN& q0, const VecN& m) const {
+    if (mid_.count() == 0) {
+      const VecN q1 = m * 2.0 - q0;
+      return q1 * 2.0 - m;
+    }
+    return mid_.next_after(m);
+  }
+
   /// NewtonOptions' rule for the correction dx of q̄ (twice it is the correction of q1).
   bool correction_is_small(const VecN& q0, const VecN& m, const VecN& dx) const {
     const VecN q1 = m * 2.0 - q0;
     const double displacement = (q1 - q0).template lpNorm<Eigen::Infinity>();
-    for (int i = 0; i < N; ++i) {
-      const double size = std::max({std::abs(q1(i)), std::abs(q0(i)), displacement});
-      if (!(2.0 * std::abs(dx(i)) <= options_.step_rel * size + options_.step_abs)) return false;
-    }
-    return true;
+    const auto size = q1.array().abs().max(q0.array().abs()).max(displacement);
+    // A NaN in dx compares false: not small.
+    return (dx.array().abs() * 2.0 <= size * options_.step_rel + options_.step_abs).all();
   }
 
   Problem P_;
@@ -294,6 +332,8 @@ class AdaptiveMidpoint {
   double last_da_ = 0;
   MatN Jinv_ = MatN::Identity();  ///< F'⁻¹, kept from step to step while it contracts
   bool have_jacobian_ = false;
+  Evaluation next_;  ///< the evaluation at the next step's start (see the class)
+  bool have_next_ = false;
 };
 
 }  // namespace vibook
