@@ -39,7 +39,7 @@ namespace {
 // Every option is kept as the text the user typed and parsed strictly in validate(): CLI11's
 // own conversions accept an empty value as "not given" and drop empty list elements.
 struct RunOptions {
-  std::string problem, method, discrete_lagrangian = "midpoint", csv;
+  std::string problem, method, discrete_lagrangian = "midpoint", csv = "-";
   std::string precision = "double", energy_target = "previous", solver = "closed-form";
   std::string h_text, t_end_text, periods_text, e_text, c_text, tau_end_text, h0_text, tol_text,
       alpha_text, digits_text, every_text, q0_text, p0_text;
@@ -489,14 +489,26 @@ int dispatch_method(const Problem& P, const RunOptions& o) {
   return integrate(P, make_del_integrator<N>(symplectic_euler_adjoint_dl(L)), true, o);
 }
 
+/// The problem a method is implemented for when it is only one (what --problem defaults to);
+/// otherwise ArgumentError naming --problem.
+std::string problem_of(const std::string& method) {
+  for (const char* m : {"epavi", "avi1", "avi2", "vi1", "vi1-adjoint", "vi2-adjoint"})
+    if (method == m) return "kepler";
+  if (method == "k-symplectic" || method == "vi") return "relativistic-kepler";
+  throw ArgumentError("--problem", "required with --method " + method +
+                                       ": harmonic, pendulum, kepler or relativistic-kepler");
+}
+
 }  // namespace
 
 std::function<int()> add_run_command(CLI::App& app) {
   auto o = std::make_shared<RunOptions>();
   auto* run = app.add_subcommand(
       "run", "Integrate a problem with a method and write the trajectory as CSV");
-  run->add_option("--problem", o->problem, "harmonic, pendulum or kepler")
-      ->required()
+  run->add_option("--problem", o->problem,
+                  "harmonic, pendulum, kepler or relativistic-kepler (default: the one problem "
+                  "the method is implemented for: kepler for epavi, avi1, avi2, vi1, "
+                  "vi1-adjoint, vi2-adjoint; relativistic-kepler for k-symplectic, vi)")
       ->check(CLI::IsMember({"harmonic", "pendulum", "kepler", "relativistic-kepler"}));
   run->add_option("--method", o->method,
                   "se (drift-kick symplectic Euler), se-adjoint (kick-drift), sv (Störmer–Verlet), "
@@ -547,12 +559,13 @@ std::function<int()> add_run_command(CLI::App& app) {
   run->add_option("--tau-end", o->tau_end_text,
                   "relativistic-kepler: final proper time (default 40)");
   run->add_option("--every", o->every_text, "write every K-th state (first and last always)");
-  run->add_option("--csv", o->csv, "output file ('-' for standard output)")->required();
+  run->add_option("--csv", o->csv, "output file (default '-': standard output)");
 
   return [o, run]() -> int {
     if (!*run) return -1;
     // --- every argument parsed and checked before any work ---------------------------------
     const auto given = [&](const char* name) { return run->count(name) > 0; };
+    if (!given("--problem")) o->problem = problem_of(o->method);
     const auto number = [&](const char* name, const std::string& text) -> std::optional<double> {
       if (!given(name)) return std::nullopt;
       return parse_number(name, text);

@@ -43,7 +43,7 @@ row 2 "nosuchcmd"        nosuchcmd
 row 2 "--frobnicate"     run --frobnicate
 row 2 "--problem"        run --problem foo --method sv --csv a.csv
 row 2 "--method"         run --problem kepler --method rk4 --csv a.csv
-row 2 "--csv"            "${R[@]}"
+row 2 "--problem"        run --method sv --csv a.csv
 # --- numbers: empty, garbage, non-finite, out of range, out of domain ------------------------
 row 2 "--h"              "${R[@]}" --h "" --csv a.csv
 row 2 "--h"              "${R[@]}" --h abc --csv a.csv

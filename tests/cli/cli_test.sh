@@ -45,7 +45,7 @@ expect 2 "--h" -- run --problem kepler --method sv --h
 expect 2 "--e" -- run --problem kepler --method sv --e 1 --csv "$tmp/a.csv"
 expect 2 "--e" -- run --problem kepler --method sv --e -0.1 --csv "$tmp/a.csv"
 expect 2 "--e" -- run --problem kepler --method sv --e nan --csv "$tmp/a.csv"
-expect 2 "--csv" -- run --problem kepler --method sv
+expect 2 "--problem" -- run --method sv --csv "$tmp/a.csv"
 expect 2 "--csv" -- run --problem kepler --method sv --csv /nonexistent/dir/out.csv
 expect 2 "--q0" -- run --problem harmonic --method sv --q0 1,2 --csv "$tmp/a.csv"
 expect 2 "--t-end" -- run --problem kepler --method sv --t-end 1 --periods 1 --csv "$tmp/a.csv"
@@ -78,6 +78,15 @@ tail -1 "$tmp/c.csv" | grep -q "^629,6.2831853071795862," && ok || bad "one Kepl
 for m in epavi avi1 avi2; do
   expect 0 "" -- run --problem kepler --method "$m" --e 0.7 --h0 0.001 --periods 1 --every 100 --csv "$tmp/ad-$m.csv"
 done
+# As a new user types it: --problem follows from the method (kepler), the CSV goes to standard
+# output. One period at e = 0.1, h0 = 1e-3 with the paper's marching: |E_d − E_1| <= 1e-13.
+expect 0 "" -- run --method epavi --e 0.1 --h0 0.001 --periods 1
+python3 - "$tmp/out" <<'PY' && ok || bad "epavi, one period at e = 0.1: |E_d - E_1| <= 1e-13 on stdout"
+import sys, csv
+rows = list(csv.DictReader(open(sys.argv[1])))
+drift = max(abs(float(r["E_d_drift"])) for r in rows)
+assert len(rows) > 5000 and drift <= 1e-13, (len(rows), drift)
+PY
 head -1 "$tmp/ad-epavi.csv" | grep -qx "step,t,dt,q1,q2,p1,p2,H,L,ecc,omega,E_d,E_d_drift,residual,iterations" && ok || bad "epavi CSV header"
 # Precisions: each runs half a period at e = 0.5; the drift E_k − E_1 shrinks with the precision.
 for pr in double long-double double-double quad; do
