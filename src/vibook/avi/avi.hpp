@@ -231,11 +231,11 @@ class AdaptiveMidpoint {
     bool fresh = false;  // whether Jinv_ was evaluated in this step
     const int max_it = options_.max_iterations;
     for (rep.iterations = 1; rep.iterations <= max_it; ++rep.iterations) {
+      // [avi-step]
       if (rep.iterations > 1 || !evaluated) {
         e = evaluate(e.m, da);
         next = evaluate(next_start(s.q, e.m), da);  // independent of e: computed alongside
       }
-      // [avi-step]
       // Sharma et al. 2022, (21)–(22) with p̄ eliminated: F(q̄) = 2(q̄ − q0) − c p0 + (c²/2)∇V(q̄).
       const VecN& m = e.m;
       const VecN& G = e.G;
