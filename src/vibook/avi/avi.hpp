@@ -254,7 +254,10 @@ class AdaptiveMidpoint {
         dx = Jinv_ * F;
         size = dx.template lpNorm<Eigen::Infinity>();
       }
-      if (rep.residual <= options_.residual_abs || correction_is_small(s.q, m, dx)) {
+      // NewtonOptions' rule, applied to q1 = 2q̄ − q0, whose correction is twice dx.
+      if (rep.residual <= options_.residual_abs ||
+          newton_detail::update_is_small<N>(VecN(m * 2.0 - s.q), dx, s.q, options_.step_rel,
+                                            options_.step_abs, 2.0)) {
         rep.converged = true;
         break;
       }
@@ -313,15 +316,6 @@ class AdaptiveMidpoint {
       return q1 * 2.0 - m;
     }
     return mid_.next_after(m);
-  }
-
-  /// NewtonOptions' rule for the correction dx of q̄ (twice it is the correction of q1).
-  bool correction_is_small(const VecN& q0, const VecN& m, const VecN& dx) const {
-    const VecN q1 = m * 2.0 - q0;
-    const double displacement = (q1 - q0).template lpNorm<Eigen::Infinity>();
-    const auto size = q1.array().abs().max(q0.array().abs()).max(displacement);
-    // A NaN in dx compares false: not small.
-    return (dx.array().abs() * 2.0 <= size * options_.step_rel + options_.step_abs).all();
   }
 
   Problem P_;

@@ -48,26 +48,23 @@ class SampleHistory {
 
   /// The polynomial through the last min(count(), n) values at the next index; requires
   /// count() >= 1 (one value extrapolates as a constant).
-  V next(int n = K) const {
-    n = std::min(n, count_);
-    const V* x = x_.data() + top_;
-    V sum = x[0] * S(kWeights[n - 1][0]);
-    for (int j = 1; j < n; ++j) sum += x[j] * S(kWeights[n - 1][j]);
-    return sum;
-  }
+  V next(int n = K) const { return weighted(x_[top_], x_.data() + top_ + 1, std::min(n, count_)); }
 
   /// What next(n) would return after push(x), without pushing: the same sum in the same
   /// order, so the two agree to the last bit (AVI computes the next step's start this way
   /// before it knows whether x is accepted).
   V next_after(const V& x, int n = K) const {
-    n = std::min({n, count_ + 1, K});
-    V sum = x * S(kWeights[n - 1][0]);
-    const V* older = x_.data() + top_;
+    return weighted(x, x_.data() + top_, std::min({n, count_ + 1, K}));
+  }
+
+ private:
+  /// Σ_j w(n, j) x_j over x_0 = newest and x_1, x_2, … = older[0], older[1], …
+  static V weighted(const V& newest, const V* older, int n) {
+    V sum = newest * S(kWeights[n - 1][0]);
     for (int j = 1; j < n; ++j) sum += older[j - 1] * S(kWeights[n - 1][j]);
     return sum;
   }
 
- private:
   /// kWeights[n − 1][j − 1] = (−1)^(j+1) C(n, j): the weight of the j-th last of n values.
   static constexpr auto kWeights = [] {
     std::array<std::array<double, K>, K> w{};

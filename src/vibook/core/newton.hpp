@@ -40,7 +40,7 @@ bool update_is_small(const Vec<T, N>& x, const Vec<T, N>& dx, const Vec<T, N>& r
   const T displacement = (x - ref).template lpNorm<Eigen::Infinity>();
   for (int i = 0; i < N; ++i) {
     using std::abs;
-    const T size = std::max({T(abs(x(i))), T(abs(ref(i))), displacement});
+    const T size = std::max(std::max(T(abs(x(i))), T(abs(ref(i)))), displacement);
     if (!(factor * abs(dx(i)) <= step_rel * size + step_abs)) return false;
   }
   return true;
