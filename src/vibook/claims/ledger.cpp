@@ -90,6 +90,10 @@ void Ledger::record(const ClaimResult& r) {
         m.values.insert(m.values.end(), r.values.begin(), r.values.end());
         m.note += " | " + r.note;
         m.source += ", " + r.source;
+        m.comparisons.insert(m.comparisons.end(), r.comparisons.begin(), r.comparisons.end());
+        m.errata.insert(m.errata.end(), r.errata.begin(), r.errata.end());
+        if (severity(r.status) > severity(m.status) || (m.cause.empty() && !r.cause.empty()))
+          m.cause = r.cause;
         if (severity(r.status) > severity(m.status)) m.status = r.status;
       }
       return;
@@ -102,16 +106,55 @@ void Ledger::record(const ClaimResult& r) {
   rows_.push_back({*r.info, r});
 }
 
+namespace {
+#define VIBOOK_COMPARISON_FIELDS(X)                                                       \
+  X(paper)                                                                                \
+  X(display) X(label) X(part) X(quote) X(against) X(ours) X(through) X(outcome) X(detail) \
+      X(corrected) X(edit) X(search) X(check) X(role) X(verified)
+}  // namespace
+
+nlohmann::json to_json(const FormulaComparison& c) {
+  nlohmann::json j = nlohmann::json::object();
+#define X(f) j[#f] = c.f;
+  VIBOOK_COMPARISON_FIELDS(X)
+#undef X
+  return j;
+}
+
+FormulaComparison comparison_from_json(const nlohmann::json& j) {
+  FormulaComparison c;
+  if (!j.is_object()) throw std::runtime_error("claims.json: a comparison is not an object");
+#define X(f)                                                                              \
+  if (!j.contains(#f) || !j[#f].is_string())                                              \
+    throw std::runtime_error("claims.json: a comparison has no string field \"" #f "\""); \
+  c.f = j[#f].get<std::string>();
+  VIBOOK_COMPARISON_FIELDS(X)
+#undef X
+  return c;
+}
+
+namespace {
+nlohmann::json comparisons_json(const std::vector<FormulaComparison>& cs) {
+  nlohmann::json a = nlohmann::json::array();
+  for (const auto& c : cs) a.push_back(to_json(c));
+  return a;
+}
+}  // namespace
+
 nlohmann::json results_to_json(const std::vector<ClaimResult>& results) {
   nlohmann::json arr = nlohmann::json::array();
   for (const auto& r : results) {
     nlohmann::json values = nlohmann::json::object();
     for (const auto& [k, v] : r.values) values[k] = v;
-    arr.push_back({{"id", r.id},
-                   {"status", to_string(r.status)},
-                   {"values", values},
-                   {"note", r.note},
-                   {"source", r.source}});
+    nlohmann::json c = {{"id", r.id},
+                        {"status", to_string(r.status)},
+                        {"values", values},
+                        {"note", r.note},
+                        {"source", r.source}};
+    if (!r.comparisons.empty()) c["comparisons"] = comparisons_json(r.comparisons);
+    if (!r.cause.empty()) c["cause"] = r.cause;
+    if (!r.errata.empty()) c["errata"] = r.errata;
+    arr.push_back(std::move(c));
   }
   return {{"claims", arr}};
 }
@@ -134,6 +177,10 @@ std::vector<ClaimResult> results_from_json(const nlohmann::json& js) {
       r.values.push_back({k, v.is_number() ? v.get<double>() : std::nan("")});
     r.note = c.at("note").get<std::string>();
     r.source = c.at("source").get<std::string>();
+    if (c.contains("comparisons"))
+      for (const auto& x : c.at("comparisons")) r.comparisons.push_back(comparison_from_json(x));
+    if (c.contains("cause")) r.cause = c.at("cause").get<std::string>();
+    if (c.contains("errata")) r.errata = c.at("errata").get<std::vector<std::string>>();
     out.push_back(std::move(r));
   }
   return out;
@@ -144,14 +191,19 @@ nlohmann::json Ledger::to_json() const {
   for (const auto& row : rows_) {
     nlohmann::json values = nlohmann::json::object();
     for (const auto& [k, v] : row.result.values) values[k] = v;
-    arr.push_back({{"id", row.info.id},
-                   {"paper", row.info.paper},
-                   {"where", row.info.where},
-                   {"title", row.info.title},
-                   {"status", to_string(row.result.status)},
-                   {"values", values},
-                   {"note", row.result.note},
-                   {"source", row.result.source}});
+    nlohmann::json c = {{"id", row.info.id},
+                        {"paper", row.info.paper},
+                        {"where", row.info.where},
+                        {"title", row.info.title},
+                        {"status", to_string(row.result.status)},
+                        {"values", values},
+                        {"note", row.result.note},
+                        {"source", row.result.source}};
+    if (!row.result.comparisons.empty())
+      c["comparisons"] = comparisons_json(row.result.comparisons);
+    if (!row.result.cause.empty()) c["cause"] = row.result.cause;
+    if (!row.result.errata.empty()) c["errata"] = row.result.errata;
+    arr.push_back(std::move(c));
   }
   return {{"claims", arr}};
 }

@@ -29,6 +29,32 @@ struct ClaimInfo {
   std::string title;
 };
 
+/// One printed display (or one part of it) compared with what vibook computes: the LaTeX read
+/// from the paper's own text, what it was compared with, and the outcome. A formula table row
+/// says *agrees* only through one of these (printed/compare.hpp makes them).
+struct FormulaComparison {
+  std::string paper;      ///< "S", "V" or "SS"
+  std::string display;    ///< "(39)", or "L288" for an unnumbered display (its first line)
+  std::string label;      ///< "(39)", or "unnumbered, line 288 (Example 2)"
+  std::string part;       ///< which part: "the right-hand side", "member 2 of 3"
+  std::string quote;      ///< the LaTeX compared, verbatim from the paper
+  std::string against;    ///< what it was compared with (the engine's modified equation, …)
+  std::string ours;       ///< our side, as LaTeX
+  std::string through;    ///< "through h^2", "exactly"
+  std::string outcome;    ///< "agrees", "differs", "ill-formed" or "unreadable"
+  std::string detail;     ///< the first difference, or the reader's message
+  std::string corrected;  ///< the corrected quote (empty when none was found)
+  std::string edit;       ///< the correction in words ("the sign of the term …")
+  std::string search;     ///< how the correction was searched for
+  std::string check;      ///< the check that compared it
+  /// "" for a comparison that decides the display's outcome; "cross-check" for one shown
+  /// beside it (another reading, another route) that decides nothing.
+  std::string role;
+  /// How our side is verified independently (when it is the correction of a display that no
+  /// small edit corrects).
+  std::string verified;
+};
+
 /// One measurement of a claim, produced by a check function.
 struct ClaimResult {
   std::string id;
@@ -36,7 +62,15 @@ struct ClaimResult {
   std::vector<std::pair<std::string, double>> values;  ///< measured numbers, in order
   std::string note;                                    ///< what was measured and how
   std::string source;                                  ///< check or figure that measured it
-  std::optional<ClaimInfo> info;  ///< required for IDs not in the catalogue (errata)
+  std::optional<ClaimInfo> info;               ///< required for IDs not in the catalogue (errata)
+  std::vector<FormulaComparison> comparisons;  ///< printed displays this claim compared
+  /// Why a claim is not simply reproduced: "misprint" (the printed formula is wrong and the
+  /// errata listed correct it), "does-not-hold" (the statement fails, with the evidence in the
+  /// note), "open-reading" (it depends on a reading the paper leaves open; the note shows each),
+  /// "edge-of-criterion" (the measurement lies at the criterion fixed beforehand; the note says
+  /// by how much). Empty for a reproduced claim.
+  std::string cause;
+  std::vector<std::string> errata;  ///< the erratum IDs a "misprint" cause refers to
 
   /// The measured value of that name, or NaN if there is none (so that any comparison with
   /// a missing value fails).
@@ -88,6 +122,10 @@ class Ledger {
  private:
   std::vector<Row> rows_;
 };
+
+/// JSON of one comparison, and back (std::runtime_error on a malformed object).
+nlohmann::json to_json(const FormulaComparison& c);
+FormulaComparison comparison_from_json(const nlohmann::json& j);
 
 /// JSON of a list of results (one figure's claims.json).
 nlohmann::json results_to_json(const std::vector<ClaimResult>& results);

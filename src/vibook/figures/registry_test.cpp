@@ -56,12 +56,21 @@ TEST_CASE("run_check: a check is held to the claims it names") {
     c.run = [results](const figures::Context&) { return results; };
     return c;
   };
-  const ClaimResult v_ex1{"V-EX1", Status::reproduced, {}, "", "fake-check", std::nullopt};
-  const ClaimResult v_p1{"V-P1", Status::reproduced, {}, "", "fake-check", std::nullopt};
-  const ClaimResult v_p1_pending{"V-P1", Status::pending, {}, "", "fake-check", std::nullopt};
-  const ClaimResult erratum{"V-ERR-9",    Status::erratum,
-                            {},           "",
-                            "fake-check", claims::ClaimInfo{"V-ERR-9", "V", "(9)", "t"}};
+  const ClaimResult v_ex1{"V-EX1", Status::reproduced, {}, "", "fake-check", std::nullopt, {}, "",
+                          {}};
+  const ClaimResult v_p1{"V-P1", Status::reproduced, {}, "", "fake-check", std::nullopt, {}, "",
+                         {}};
+  const ClaimResult v_p1_pending{
+      "V-P1", Status::pending, {}, "", "fake-check", std::nullopt, {}, "", {}};
+  const ClaimResult erratum{"V-ERR-9",
+                            Status::erratum,
+                            {},
+                            "",
+                            "fake-check",
+                            claims::ClaimInfo{"V-ERR-9", "V", "(9)", "t"},
+                            {},
+                            "",
+                            {}};
   // Names one and measures it (an erratum beside it): accepted.
   CHECK(figures::run_check(fake({"V-EX1"}, {v_ex1, erratum}), {}).size() == 2);
   // Names two, measures one: refused, naming the claim.
@@ -78,13 +87,17 @@ TEST_CASE("run_check: a check is held to the claims it names") {
 TEST_CASE("ledger: errata") {
   // Unknown IDs are refused unless they are errata with their own description.
   claims::Ledger l2;
-  CHECK_THROWS_AS(l2.record({"X-1", claims::Status::reproduced, {}, "", "", std::nullopt}),
-                  std::invalid_argument);
+  CHECK_THROWS_AS(
+      l2.record({"X-1", claims::Status::reproduced, {}, "", "", std::nullopt, {}, "", {}}),
+      std::invalid_argument);
   l2.record({"V-ERR-5",
              claims::Status::erratum,
              {},
              "",
              "",
-             claims::ClaimInfo{"V-ERR-5", "V", "(5)", "t"}});
+             claims::ClaimInfo{"V-ERR-5", "V", "(5)", "t"},
+             {},
+             "",
+             {}});
   CHECK(l2.find("V-ERR-5") != nullptr);
 }

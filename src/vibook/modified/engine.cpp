@@ -645,8 +645,8 @@ std::vector<std::vector<ex>> nystrom_modified_equation(std::shared_ptr<JetSpace>
   const auto Sback = stages(xm, x0), Snow = stages(x0, xp);
   Series rhs = Series::constant(0);
   for (int i = 0; i < s; ++i) {
-    const GiNaC::numeric wb = printed_46 ? tab.bhat[i] : tab.bhat[i] - tab.bbar[i];
-    const GiNaC::numeric wn = printed_46 ? tab.bbar[i] - tab.bhat[i] : tab.bbar[i];
+    const ex wb = printed_46 ? tab.bhat[i] : tab.bhat[i] - tab.bbar[i];
+    const ex wn = printed_46 ? tab.bbar[i] - tab.bhat[i] : tab.bbar[i];
     rhs = rhs + Series::constant(wb) * force(Sback[i]) + Series::constant(wn) * force(Snow[i]);
   }
   const Series psi = ((xp - Series::constant(2) * x0 + xm) / h2 - rhs).truncated(K + 1);

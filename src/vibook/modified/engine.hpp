@@ -221,9 +221,11 @@ class Engine {
 
 /// A Nyström method (Shen & Sun (4.5)) for ẍ = f(x): stages x^i = x + c_i h v + h² Σ ā_ij f(x^j),
 /// x_{n+1} = x + h v + h² Σ b̄_i f(x^i), v_{n+1} = v + h Σ b̂_i f(x^i).
+/// The coefficients may be numbers or symbols (a symbolic tableau gives the modified equation
+/// as a formula in them).
 struct NystromTableau {
-  std::vector<GiNaC::numeric> c, bbar, bhat;
-  std::vector<std::vector<GiNaC::numeric>> abar;
+  std::vector<ex> c, bbar, bhat;
+  std::vector<std::vector<ex>> abar;
 };
 
 /// Modified equation ẍ = Σ h^k f_k of a Nyström method on a generic 1-DOF force f (symbols f,

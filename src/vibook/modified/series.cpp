@@ -9,8 +9,10 @@
 #include <cmath>
 #include <cstdint>
 #include <functional>
+#include <numeric>
 #include <sstream>
 #include <stdexcept>
+#include <tuple>
 
 namespace vibook::modified {
 
@@ -208,10 +210,78 @@ Series shifted_jet(const JetSpace& J, int i, const ex& s, int p) {
   return out;
 }
 
+namespace {
+
+// Zero on a normal form with radicals: every power b^(p/q) of a base b (expanded) becomes
+// t_b^(p·Q/q), t_b a new symbol with t_b^Q = b (Q the common denominator of b's exponents);
+// the numerator of the rational function is then reduced modulo t_b^Q − b, which leaves it
+// of degree < Q in each t_b, and it is zero if and only if every coefficient is. This decides
+// (x1² + x2²)^(-7/2)·(x1² + x2²) − (x1² + x2²)^(-5/2) = 0, which expand and normal alone do
+// not (they treat each power of a radical as a separate symbol).
+bool radical_zero(const ex& e) {
+  std::map<ex, long, GiNaC::ex_is_less> denominators;  // base -> common denominator
+  for (GiNaC::const_preorder_iterator it = e.preorder_begin(); it != e.preorder_end(); ++it) {
+    if (!GiNaC::is_a<GiNaC::power>(*it)) continue;
+    const ex ex_ = it->op(1);
+    if (!GiNaC::is_a<numeric>(ex_)) continue;
+    const numeric q = GiNaC::ex_to<numeric>(ex_);
+    if (!q.is_rational() || q.is_integer()) continue;
+    const ex base = GiNaC::expand(it->op(0));
+    const long d = q.denom().to_long();
+    auto [pos, fresh] = denominators.emplace(base, d);
+    if (!fresh) pos->second = std::lcm(pos->second, d);
+  }
+  if (denominators.empty()) return false;
+  std::vector<std::tuple<ex, GiNaC::symbol, long>> radicals;
+  int k = 0;
+  for (const auto& [base, d] : denominators)
+    radicals.emplace_back(base, GiNaC::symbol("vibook_rad" + std::to_string(k++)), d);
+  struct Map : GiNaC::map_function {
+    const std::vector<std::tuple<ex, GiNaC::symbol, long>>& r;
+    explicit Map(const std::vector<std::tuple<ex, GiNaC::symbol, long>>& rr) : r(rr) {}
+    ex operator()(const ex& x) override {
+      if (GiNaC::is_a<GiNaC::power>(x) && GiNaC::is_a<numeric>(x.op(1))) {
+        const numeric q = GiNaC::ex_to<numeric>(x.op(1));
+        if (q.is_rational() && !q.is_integer()) {
+          const ex base = GiNaC::expand(x.op(0).map(*this));
+          for (const auto& [b, t, d] : r)
+            if (GiNaC::expand(base - b).is_zero()) return GiNaC::pow(t, q * d);
+        }
+      }
+      return x.map(*this);
+    }
+  } m(radicals);
+  const ex num = GiNaC::numer(GiNaC::normal(m(e)));
+  // reduce modulo t^d − b, for each radical, then test every coefficient
+  ex red = GiNaC::expand(num);
+  for (const auto& [b, t, d] : radicals) {
+    if (!red.is_polynomial(t)) return false;
+    const int deg = red.degree(t);
+    ex acc = 0;
+    for (int j = 0; j <= deg; ++j)
+      acc += red.coeff(t, j) * GiNaC::pow(b, j / d) * GiNaC::pow(t, j % d);
+    red = GiNaC::expand(acc);
+  }
+  // what remains is of degree < d in each t: zero iff all its coefficients are
+  std::vector<ex> parts = {red};
+  for (const auto& rad : radicals) {
+    const GiNaC::symbol& t = std::get<1>(rad);
+    std::vector<ex> next;
+    for (const ex& p : parts)
+      for (int j = 0; j <= p.degree(t); ++j) next.push_back(p.coeff(t, j));
+    parts = std::move(next);
+  }
+  return std::all_of(parts.begin(), parts.end(),
+                     [](const ex& p) { return GiNaC::normal(GiNaC::expand(p)).is_zero(); });
+}
+
+}  // namespace
+
 bool vanishes(const ex& e) {
   const ex x = GiNaC::expand(e);
   if (x.is_zero()) return true;
-  return GiNaC::normal(x).is_zero();
+  if (GiNaC::normal(x).is_zero()) return true;
+  return radical_zero(x);
 }
 
 ex exact_rationals(const ex& e, std::vector<std::string>* inexact) {

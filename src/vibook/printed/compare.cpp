@@ -1,0 +1,948 @@
+// A printed display against vibook's side, and the correction search (compare.hpp).
+#include "vibook/printed/compare.hpp"
+
+#include <algorithm>
+#include <functional>
+#include <map>
+#include <set>
+#include <sstream>
+
+#include <fmt/format.h>
+#include <fmt/ranges.h>
+
+#include "vibook/modified/canonical.hpp"
+#include "vibook/modified/engine.hpp"
+#include "vibook/modified/series.hpp"
+
+namespace vibook::printed {
+
+using GiNaC::numeric;
+
+Target Target::scalar_series(const std::vector<ex>& c, int through) {
+  Target t;
+  t.series = {c};
+  t.through = through;
+  return t;
+}
+
+Target Target::vector_series(const std::vector<std::vector<ex>>& f, int through) {
+  Target t;
+  const std::size_t n = f.empty() ? 0 : f[0].size();
+  t.series.assign(n, {});
+  for (const auto& fk : f)
+    for (std::size_t i = 0; i < n; ++i) t.series[i].push_back(fk.at(i));
+  t.through = through;
+  return t;
+}
+
+Target Target::exactly(const std::vector<ex>& components) {
+  Target t;
+  t.exact = components;
+  return t;
+}
+
+Target Target::exactly(const ex& scalar) { return exactly(std::vector<ex>{scalar}); }
+
+namespace {
+
+// Abstract calls compare equal only with their arguments in one form: expand them.
+ex expand_arguments(const ex& e) {
+  struct Map : GiNaC::map_function {
+    ex operator()(const ex& x) override {
+      if (GiNaC::is_a<GiNaC::function>(x) || GiNaC::is_a<GiNaC::fderivative>(x)) {
+        ex y = x;
+        for (std::size_t k = 0; k < x.nops(); ++k)
+          y = y.subs(x.op(k) == GiNaC::expand(x.op(k).map(*this)));
+        return y;
+      }
+      return x.map(*this);
+    }
+  } m;
+  return m(e);
+}
+
+std::string str(const numeric& n) {
+  std::ostringstream os;
+  os << n;
+  return os.str();
+}
+
+std::string latex(const ex& e) { return modified::canonical_string(e, modified::Format::latex); }
+
+// Where printed and ours differ, in a form a reader can take in: both sides when they are
+// short; else their difference when that is short; else both evaluated at one point (every
+// symbol a distinct small rational) when they are numbers there; else only their sizes.
+std::string describe_difference(const ex& printed, const ex& ours) {
+  const std::string a = latex(GiNaC::expand(printed)), b = latex(GiNaC::expand(ours));
+  if (a.size() + b.size() <= 600) return fmt::format("printed \\({}\\), ours \\({}\\)", a, b);
+  const ex d = GiNaC::normal(printed - ours);
+  const std::string dl = latex(d);
+  if (dl.size() <= 400) return fmt::format("printed − ours = \\({}\\)", dl);
+  GiNaC::exset syms;
+  struct Collect : GiNaC::visitor, GiNaC::symbol::visitor {
+    GiNaC::exset* out;
+    void visit(const GiNaC::symbol& x) override { out->insert(x); }
+  } c;
+  c.out = &syms;
+  (printed - ours).traverse(c);
+  // by name, not by GiNaC's order (which follows creation order, and so the checks run before)
+  std::map<std::string, ex> by_name;
+  for (const ex& x : syms) by_name[GiNaC::ex_to<GiNaC::symbol>(x).get_name()] = x;
+  GiNaC::exmap at;
+  std::vector<std::string> shown;
+  int k = 0;
+  for (const auto& [name, x] : by_name) {
+    const numeric v = numeric(2 * k + 3, 7 + k);
+    at[x] = v;
+    shown.push_back(fmt::format("{} = {}", latex(x), str(v)));
+    ++k;
+  }
+  const ex pa = GiNaC::evalf(printed.subs(at)), pb = GiNaC::evalf(ours.subs(at));
+  if (GiNaC::is_a<numeric>(pa) && GiNaC::is_a<numeric>(pb) && GiNaC::ex_to<numeric>(pa).is_real() &&
+      GiNaC::ex_to<numeric>(pb).is_real())
+    return fmt::format("at \\({}\\): printed {:.12g}, ours {:.12g}", fmt::join(shown, ",\\ "),
+                       GiNaC::ex_to<numeric>(pa).to_double(),
+                       GiNaC::ex_to<numeric>(pb).to_double());
+  return fmt::format("printed and ours differ (expressions of {} and {} characters)", a.size(),
+                     b.size());
+}
+
+// The differences printed − ours of one reading, over every case, component and power; the
+// first non-vanishing one described in `first`.
+struct Differences {
+  std::vector<ex> d;
+  std::string first;
+  int through = -1;  // highest power compared (series), −1 for exact
+  bool failed = false;
+};
+
+// With `stop`, the first difference that does not vanish ends the work (the search only
+// needs to know whether a candidate fails); `out.failed` says so.
+Differences differences(const std::vector<Token>& tokens, const std::map<std::size_t, ex>& factors,
+                        const Spec& spec, const std::vector<Case>& cases, bool describe,
+                        bool stop = false) {
+  Differences out;
+  for (const Case& c : cases) {
+    const Reading r = read(tokens, *c.notation, factors);
+    std::vector<std::size_t> members = spec.members;
+    if (members.empty()) members.push_back(Spec::kLast);
+    if (spec.equation) members = {0};
+    for (std::size_t m : members) {
+      if (m == Spec::kLast) m = r.members.size() - 1;
+      if (m >= r.members.size() || (spec.equation && r.members.size() != 2))
+        throw ReadError(fmt::format("the quote has {} members, not {}", r.members.size(),
+                                    spec.equation ? 2 : m + 1));
+      Value v = r.members[m];
+      if (spec.equation) v = add(v, scale(-1, r.members[1]));
+      if (v.tuple) throw IllFormed("the compared member is an argument list");
+      const std::string where_m =
+          members.size() > 1 ? fmt::format("member {}: ", m + 1) : std::string();
+      const std::size_t comps =
+          c.target.series.empty() ? c.target.exact.size() : c.target.series.size();
+      if (v.c.size() != comps)
+        throw IllFormed(
+            fmt::format("the printed member has {} components, ours {}", v.c.size(), comps));
+      const std::string where = (cases.size() > 1 ? c.name + ": " : std::string()) + where_m;
+      if (c.target.series.empty()) {
+        for (std::size_t i = 0; i < comps; ++i) {
+          const auto& J = c.notation->jets();
+          ex printed = at_jet_point(expand_arguments(v.c[i]), J);
+          ex ours = at_jet_point(expand_arguments(c.target.exact[i]), J);
+          if (c.target.reduce) {
+            printed = c.target.reduce(printed);
+            ours = c.target.reduce(ours);
+          }
+          const ex diff = printed - ours;
+          out.d.push_back(diff);
+          if (stop && !modified::vanishes(diff)) {
+            out.failed = true;
+            return out;
+          }
+          if (describe && out.first.empty() && !modified::vanishes(diff))
+            out.first = where + (comps > 1 ? fmt::format("component {}: ", i + 1) : "") +
+                        describe_difference(printed, ours);
+        }
+        continue;
+      }
+      int K = c.target.through;
+      if (K < 0)
+        for (const auto& s : c.target.series) K = std::max(K, static_cast<int>(s.size()) - 1);
+      std::optional<int> rem = r.remainder[m];
+      if (spec.equation && r.remainder[1])
+        rem = rem ? std::min(*rem, *r.remainder[1]) : r.remainder[1];
+      if (rem) K = std::min(K, *rem - 1);
+      if (K < 0) throw ReadError("the display's remainder leaves no power of the step to compare");
+      out.through = std::max(out.through, K);
+      const auto& J = c.notation->jets();
+      std::map<ex, modified::Series, GiNaC::ex_is_less> subs;
+      subs[J.h()] = modified::Series::h();
+      // Extra terms for quotients by powers of h (2/h · arcsin(h/2)); the result must still
+      // reach h^K, or the comparison stops with a reader error rather than read missing terms
+      // as zeros.
+      modified::SeriesEvaluator se(J, subs, K + 8);
+      for (std::size_t i = 0; i < comps; ++i) {
+        modified::Series s;
+        try {
+          s = se(v.c[i]);
+        } catch (const std::domain_error& e) {
+          throw ReadError(std::string("cannot expand the printed member in the step: ") + e.what());
+        }
+        if (s.prec <= K)
+          throw ReadError(
+              fmt::format("the expansion of the printed member reaches only h^{}", s.prec - 1));
+        const int low = std::min(0, s.low);
+        for (int k = low; k <= K; ++k) {
+          const ex printed = at_jet_point(k < s.prec ? s.coeff(k) : ex(0), J);
+          const auto& tc = c.target.series[i];
+          const ex ours =
+              k >= 0 && k < static_cast<int>(tc.size()) ? tc[static_cast<std::size_t>(k)] : ex(0);
+          const ex diff = printed - ours;
+          out.d.push_back(diff);
+          if (stop && !modified::vanishes(diff)) {
+            out.failed = true;
+            return out;
+          }
+          if (describe && out.first.empty() && !modified::vanishes(diff))
+            out.first = fmt::format("{}h^{}{}: ", where, k,
+                                    comps > 1 ? fmt::format(" of component {}", i + 1) : "") +
+                        describe_difference(printed, ours);
+        }
+      }
+    }
+  }
+  return out;
+}
+
+// A rational times powers of the parameters (h, c^-2, 8h): a factor a correction may have.
+bool monomial_in(const ex& l, const std::vector<GiNaC::symbol>& params) {
+  ex rest = l;
+  for (const auto& p : params) {
+    if (!rest.has(p)) continue;
+    const ex e = GiNaC::expand(rest);
+    if (GiNaC::is_a<GiNaC::add>(e)) return false;
+    // divide out p^k
+    int k = 0;
+    for (; k < 12 && rest.has(p); ++k) rest = GiNaC::normal(rest / p);
+    if (rest.has(p)) {
+      rest = l;
+      for (int j = 0; j < 12 && rest.has(p); ++j) rest = GiNaC::normal(rest * p);
+      if (rest.has(p)) return false;
+    }
+  }
+  return GiNaC::is_a<numeric>(rest) && GiNaC::ex_to<numeric>(rest).is_rational();
+}
+
+bool all_vanish(const std::vector<ex>& d) {
+  return std::all_of(d.begin(), d.end(), [](const ex& e) { return modified::vanishes(e); });
+}
+
+// --- the correction search -------------------------------------------------------------------
+
+struct Candidate {
+  std::vector<Token> tokens;
+  std::map<std::size_t, ex> scale;
+  std::string edit;
+};
+
+Token make(Token::Kind k, const std::string& text, bool space = false) {
+  Token t;
+  t.kind = k;
+  t.text = text;
+  t.space_before = space;
+  return t;
+}
+
+bool sizing(const Token& x) {
+  static const std::set<std::string> k = {"left", "bigl", "Bigl", "biggl", "Biggl",
+                                          "big",  "Big",  "bigg", "Bigg"};
+  return x.kind == Token::Kind::command && k.count(x.text);
+}
+
+// The term's first token including a sizing command before it (\left| …).
+std::size_t with_sizing(const std::vector<Token>& t, std::size_t first) {
+  while (first > 0 && sizing(t[first - 1])) --first;
+  return first;
+}
+
+std::string term_text(const std::vector<Token>& t, std::size_t b, std::size_t e) {
+  return print(std::vector<Token>(t.begin() + static_cast<std::ptrdiff_t>(b),
+                                  t.begin() + static_cast<std::ptrdiff_t>(std::min(e, t.size()))));
+}
+
+// The sign token before a term (skipping \left and similar), or npos.
+std::size_t sign_before(const std::vector<Token>& t, std::size_t first) {
+  std::size_t k = first;
+  while (k > 0) {
+    --k;
+    const Token& x = t[k];
+    if (x.sym("+") || x.sym("-")) return k;
+    if (x.cmd("left") || x.cmd("bigl") || x.cmd("Bigl") || x.cmd("big") || x.cmd("Big") ||
+        x.cmd("quad") || x.sym("&") || x.cmd("\\"))
+      continue;
+    return std::string::npos;
+  }
+  return std::string::npos;
+}
+
+// The tokens with the term [first, end) multiplied by λ (a rational), as a reader would
+// write the correction.
+std::vector<Token> scaled_tokens(const std::vector<Token>& t, std::size_t first, std::size_t end,
+                                 const ex& factor) {
+  // split the factor into its rational part and the rest (h, c^{-2}), printed as LaTeX
+  numeric lambda = 1;
+  ex rest = 1;
+  if (GiNaC::is_a<numeric>(factor)) {
+    lambda = GiNaC::ex_to<numeric>(factor);
+  } else {
+    const ex f = GiNaC::expand(factor);
+    const ex c = GiNaC::is_a<GiNaC::mul>(f) ? f.op(f.nops() - 1) : ex(1);
+    if (GiNaC::is_a<numeric>(c)) {
+      lambda = GiNaC::ex_to<numeric>(c);
+      rest = f / c;
+    } else {
+      rest = f;
+    }
+  }
+  if (rest != 1) {
+    std::vector<Token> out = scaled_tokens(t, first, end, lambda);
+    const std::size_t at =
+        with_sizing(out, first + (out.size() > t.size() ? out.size() - t.size() : 0));
+    std::vector<Token> ins = tokenize(latex(rest));
+    if (!ins.empty()) ins.front().space_before = true;
+    out[at].space_before = true;
+    out.insert(out.begin() + static_cast<std::ptrdiff_t>(at), ins.begin(), ins.end());
+    return out;
+  }
+  first = with_sizing(t, first);
+  std::vector<Token> out = t;
+  const std::size_t s = sign_before(t, first);
+  (void)end;
+  if (lambda.is_zero()) {
+    const std::size_t b = s == std::string::npos ? first : s;
+    out.erase(out.begin() + static_cast<std::ptrdiff_t>(b),
+              out.begin() + static_cast<std::ptrdiff_t>(std::min(end, out.size())));
+    return out;
+  }
+  numeric mag = lambda;
+  if (lambda.is_negative()) {
+    mag = -lambda;
+    if (s != std::string::npos) {
+      out[s].text = out[s].sym("+") ? "-" : "+";
+    } else {
+      out.insert(out.begin() + static_cast<std::ptrdiff_t>(first),
+                 make(Token::Kind::symbol, "-", t[first].space_before));
+    }
+  }
+  if (mag == 1) return out;
+  const std::size_t at = first + (lambda.is_negative() && s == std::string::npos ? 1 : 0);
+  // a leading integer coefficient: multiply it
+  if (out[at].kind == Token::Kind::number && out[at].text.find('.') == std::string::npos) {
+    const numeric v = numeric(out[at].text.c_str()) * mag;
+    if (v.is_integer()) {
+      out[at].text = str(v);
+      return out;
+    }
+  }
+  std::vector<Token> ins;
+  if (mag.is_integer()) {
+    ins.push_back(make(Token::Kind::number, str(mag), out[at].space_before));
+  } else {
+    ins = {make(Token::Kind::command, "frac", out[at].space_before),
+           make(Token::Kind::symbol, "{"),
+           make(Token::Kind::number, str(mag.numer())),
+           make(Token::Kind::symbol, "}"),
+           make(Token::Kind::symbol, "{"),
+           make(Token::Kind::number, str(mag.denom())),
+           make(Token::Kind::symbol, "}")};
+  }
+  out[at].space_before = true;
+  out.insert(out.begin() + static_cast<std::ptrdiff_t>(at), ins.begin(), ins.end());
+  return out;
+}
+
+// Positions of the digits written as subscripts (x_1, \dot{x}_{2}), with the text of the
+// symbol before the underscore (its base and accents) and its digit.
+struct SubDigit {
+  std::size_t pos;
+  std::string symbol;
+};
+std::vector<SubDigit> subscript_digits(const std::vector<Token>& t) {
+  std::vector<SubDigit> out;
+  for (std::size_t k = 0; k + 1 < t.size(); ++k) {
+    if (!t[k].sym("_")) continue;
+    // the symbol: back to the start of \dot{x} or x
+    std::string sym;
+    if (k > 0) {
+      std::size_t b = k - 1;
+      if (t[b].sym("}")) {
+        int depth = 0;
+        for (std::size_t j = b + 1; j-- > 0;) {
+          if (t[j].sym("}")) ++depth;
+          if (t[j].sym("{") && --depth == 0) {
+            b = j > 0 ? j - 1 : j;
+            break;
+          }
+        }
+      }
+      sym = term_text(t, b, k);
+    }
+    if (t[k + 1].kind == Token::Kind::number && t[k + 1].text.size() == 1) {
+      out.push_back({k + 1, sym});
+    } else if (t[k + 1].sym("{")) {
+      for (std::size_t j = k + 2; j < t.size() && !t[j].sym("}"); ++j)
+        if (t[j].kind == Token::Kind::number && t[j].text.size() == 1) out.push_back({j, sym});
+    }
+  }
+  return out;
+}
+
+// Positions of integers in superscripts (h^2, x^{(3)}).
+std::vector<std::size_t> superscript_integers(const std::vector<Token>& t) {
+  std::vector<std::size_t> out;
+  for (std::size_t k = 0; k + 1 < t.size(); ++k) {
+    if (!t[k].sym("^")) continue;
+    if (t[k + 1].kind == Token::Kind::number) {
+      out.push_back(k + 1);
+    } else if (t[k + 1].sym("{")) {
+      int depth = 0;
+      for (std::size_t j = k + 1; j < t.size(); ++j) {
+        if (t[j].sym("{")) ++depth;
+        if (t[j].sym("}") && --depth == 0) break;
+        if (t[j].kind == Token::Kind::number && t[j].text.find('.') == std::string::npos)
+          out.push_back(j);
+      }
+    }
+  }
+  return out;
+}
+
+// Argument lists: for each comma at depth 1 of a (…) or ⟨…⟩, the item after it (for deletion),
+// and for lists of two, both items (for a swap).
+struct ListItem {
+  std::size_t open, comma, close;  // the comma before the item, and where the item ends
+};
+std::vector<std::pair<std::size_t, std::size_t>> list_items(const std::vector<Token>& t) {
+  // returns [begin, end) token ranges to delete: ", item"
+  std::vector<std::pair<std::size_t, std::size_t>> out;
+  for (std::size_t k = 0; k < t.size(); ++k) {
+    if (!t[k].sym(",")) continue;
+    int depth = 0;
+    std::size_t j = k + 1;
+    for (; j < t.size(); ++j) {
+      const Token& x = t[j];
+      if (x.sym("(") || x.sym("[") || x.sym("{") || x.cmd("langle")) ++depth;
+      if (x.sym(")") || x.sym("]") || x.sym("}") || x.cmd("rangle")) {
+        if (depth == 0) break;
+        --depth;
+      }
+      if (x.sym(",") && depth == 0) break;
+    }
+    std::size_t end = j;
+    while (end > k + 1 &&
+           (t[end - 1].cmd("right") || t[end - 1].cmd("bigr") || t[end - 1].cmd("Bigr")))
+      --end;
+    out.emplace_back(k, end);
+  }
+  return out;
+}
+
+}  // namespace
+
+claims::FormulaComparison compare(const Spec& spec, const std::vector<Case>& cases) {
+  claims::FormulaComparison out;
+  out.paper = std::string(key(spec.paper));
+  out.quote = spec.quote;
+  out.part = spec.part;
+  out.against = spec.against;
+  out.check = spec.check;
+  out.role = spec.role;
+  out.verified = spec.verified;
+  try {
+    const Display& d = spec.display.empty() ? display_quoting(spec.paper, spec.quote)
+                                            : display(spec.paper, spec.display);
+    if (!quotes(d, spec.quote))
+      throw std::invalid_argument("the quote does not occur in display " + d.full_id());
+    out.display = d.id();
+    out.label = d.label();
+  } catch (const std::invalid_argument& e) {
+    out.outcome = "unreadable";
+    out.detail = e.what();
+    return out;
+  }
+  // Our side, as LaTeX (the first case's target).
+  if (!cases.empty()) {
+    const Target& t = cases[0].target;
+    std::vector<std::string> comps;
+    if (t.series.empty()) {
+      for (const auto& e : t.exact) comps.push_back(latex(e));
+      out.through = "exactly";
+    } else {
+      const GiNaC::symbol h = cases[0].notation->jets().h();
+      for (const auto& s : t.series) {
+        std::vector<ex> c = s;
+        if (t.through >= 0 && static_cast<int>(c.size()) > t.through + 1)
+          c.resize(static_cast<std::size_t>(t.through) + 1);
+        comps.push_back(modified::format_series(c, h, modified::Format::latex));
+      }
+    }
+    out.ours =
+        comps.size() == 1
+            ? comps[0]
+            : "\\begin{bmatrix}" + fmt::format("{}", fmt::join(comps, " \\\\ ")) + "\\end{bmatrix}";
+  }
+  std::vector<Token> tokens;
+  try {
+    tokens = tokenize(spec.quote);
+  } catch (const ReadError& e) {
+    out.outcome = "unreadable";
+    out.detail = e.what();
+    return out;
+  }
+  try {
+    const Differences d = differences(tokens, {}, spec, cases, true);
+    if (d.through >= 0) out.through = fmt::format("through h^{}", d.through);
+    if (all_vanish(d.d)) {
+      out.outcome = "agrees";
+      return out;
+    }
+    out.outcome = "differs";
+    out.detail = d.first;
+  } catch (const IllFormed& e) {
+    out.outcome = "ill-formed";
+    out.detail = e.what();
+  } catch (const ReadError& e) {
+    out.outcome = "unreadable";
+    out.detail = e.what();
+    return out;
+  }
+  if (!spec.search) {
+    out.search = "no correction searched for (this comparison is a cross-check)";
+    return out;
+  }
+
+  // --- the correction search ---
+  int tried = 0;
+  auto works = [&](const std::vector<Token>& t, const std::map<std::size_t, ex>& scale) {
+    ++tried;
+    try {
+      const Differences d = differences(t, scale, spec, cases, false, true);
+      return !d.failed && all_vanish(d.d);
+    } catch (const ReadError&) {
+      return false;
+    } catch (const IllFormed&) {
+      return false;
+    } catch (const std::exception&) {  // an edited text the notation cannot evaluate
+      return false;
+    }
+  };
+  auto found = [&](const std::vector<Token>& t, const std::string& edit) {
+    out.corrected = print(t);
+    out.edit = edit;
+  };
+  const Notation& n0 = *cases[0].notation;
+  const auto terms = term_ranges(tokens, n0);
+  // 1. one term times λ
+  const GiNaC::symbol lambda("vibook_lambda");
+  const std::vector<GiNaC::symbol> params = n0.parameters();
+  for (const auto& [first, end] : terms) {
+    ++tried;
+    try {
+      const Differences d = differences(tokens, {{first, lambda}}, spec, cases, false);
+      std::optional<ex> sol;
+      bool linear = true;
+      for (const ex& e0 : d.d) {
+        const ex e = GiNaC::expand(e0);
+        if (!e.is_polynomial(lambda) || e.degree(lambda) > 1) {
+          linear = false;
+          break;
+        }
+        const ex B = e.coeff(lambda, 1), A = e.coeff(lambda, 0);
+        if (modified::vanishes(B)) continue;
+        const ex l = GiNaC::normal(-A / B);
+        if (!monomial_in(l, params)) {
+          linear = false;
+          break;
+        }
+        sol = l;
+        break;
+      }
+      if (!linear || !sol || *sol == 1) continue;
+      std::vector<ex> subst;
+      for (const ex& e : d.d) subst.push_back(e.subs(lambda == *sol));
+      if (!all_vanish(subst)) continue;
+      const std::string term = term_text(tokens, with_sizing(tokens, first), end);
+      std::string edit;
+      if (sol->is_zero())
+        edit = "the term \\(" + term + "\\) removed";
+      else if (*sol == -1)
+        edit = "the sign of the term \\(" + term + "\\) reversed";
+      else
+        edit = "the term \\(" + term + "\\) multiplied by \\(" + latex(*sol) + "\\)";
+      found(scaled_tokens(tokens, first, end, *sol), edit);
+      break;
+    } catch (const ReadError&) {
+    } catch (const IllFormed&) {
+    }
+  }
+  // 2. one token changed
+  std::vector<Candidate> singles;
+  if (out.edit.empty()) {
+    const int dim = std::max(2, n0.dim());
+    for (const auto& s : subscript_digits(tokens))
+      for (int v = 1; v <= dim; ++v) {
+        if (std::to_string(v) == tokens[s.pos].text) continue;
+        Candidate c{tokens, {}, ""};
+        c.tokens[s.pos].text = std::to_string(v);
+        c.edit =
+            fmt::format("the subscript {} of \\({}\\) read as {}", tokens[s.pos].text, s.symbol, v);
+        singles.push_back(c);
+      }
+    for (std::size_t k = 0; k < tokens.size(); ++k) {
+      if (tokens[k].cmd("dot") || tokens[k].cmd("ddot")) {
+        Candidate c{tokens, {}, ""};
+        c.tokens[k].text = tokens[k].text == "dot" ? "ddot" : "dot";
+        c.edit = "\\(\\" + tokens[k].text + "\\) read as \\(\\" + c.tokens[k].text +
+                 "\\) at character " + std::to_string(tokens[k].begin + 1);
+        singles.push_back(c);
+      }
+      if ((tokens[k].kind == Token::Kind::letter ||
+           (tokens[k].kind == Token::Kind::command && tokens[k].text.size() > 2 &&
+            std::islower(static_cast<unsigned char>(tokens[k].text[0])) == 0 && false)) &&
+          !(k + 1 < tokens.size() && tokens[k + 1].sym("'")) &&
+          !(k > 0 && tokens[k - 1].sym("_")) &&
+          !(k > 0 && tokens[k - 1].sym("{") && k > 1 &&
+            tokens[k - 2].kind == Token::Kind::command)) {
+        // a first prime on a letter (U → U')
+        Candidate add{tokens, {}, ""};
+        add.tokens.insert(add.tokens.begin() + static_cast<std::ptrdiff_t>(k) + 1,
+                          make(Token::Kind::symbol, "'"));
+        add.edit = "a prime added to \\(" + tokens[k].text + "\\) at character " +
+                   std::to_string(tokens[k].begin + 1);
+        singles.push_back(add);
+      }
+      if (tokens[k].sym("'")) {
+        Candidate add{tokens, {}, ""};
+        add.tokens.insert(add.tokens.begin() + static_cast<std::ptrdiff_t>(k),
+                          make(Token::Kind::symbol, "'"));
+        add.edit = "one prime more at character " + std::to_string(tokens[k].begin + 1);
+        singles.push_back(add);
+        Candidate del{tokens, {}, ""};
+        del.tokens.erase(del.tokens.begin() + static_cast<std::ptrdiff_t>(k));
+        del.edit = "one prime less at character " + std::to_string(tokens[k].begin + 1);
+        singles.push_back(del);
+      }
+    }
+    for (std::size_t pos : superscript_integers(tokens))
+      for (int dv : {-1, 1}) {
+        const numeric v = numeric(tokens[pos].text.c_str()) + dv;
+        if (v.is_negative()) continue;
+        Candidate c{tokens, {}, ""};
+        c.tokens[pos].text = str(v);
+        c.edit = "the exponent " + tokens[pos].text + " at character " +
+                 std::to_string(tokens[pos].begin + 1) + " read as " + str(v);
+        singles.push_back(c);
+      }
+    for (const auto& c : singles)
+      if (works(c.tokens, c.scale)) {
+        found(c.tokens, c.edit);
+        break;
+      }
+  }
+  // 3. two subscript digits swapped throughout one symbol, in the whole quote or in one
+  // member of it (the part between two top-level relations)
+  std::vector<std::pair<std::size_t, std::size_t>> segments = {{0, tokens.size()}};
+  {
+    int depth = 0;
+    std::size_t start = 0;
+    std::vector<std::pair<std::size_t, std::size_t>> parts;
+    for (std::size_t k = 0; k < tokens.size(); ++k) {
+      const Token& x = tokens[k];
+      if (x.sym("(") || x.sym("[") || x.sym("{") || x.cmd("langle")) ++depth;
+      if (x.sym(")") || x.sym("]") || x.sym("}") || x.cmd("rangle")) --depth;
+      if (depth == 0 && x.sym("=")) {
+        parts.emplace_back(start, k);
+        start = k + 1;
+      }
+    }
+    parts.emplace_back(start, tokens.size());
+    if (parts.size() > 1) segments.insert(segments.end(), parts.begin(), parts.end());
+  }
+  for (const auto& [seg_b, seg_e] : segments) {
+    if (!out.edit.empty()) break;
+    {
+      std::map<std::string, std::vector<std::size_t>> by_symbol;
+      for (const auto& s : subscript_digits(tokens))
+        if (s.pos >= seg_b && s.pos < seg_e) by_symbol[s.symbol].push_back(s.pos);
+      for (const auto& [sym, pos] : by_symbol) {
+        std::set<std::string> digits;
+        for (auto p : pos) digits.insert(tokens[p].text);
+        if (digits.size() < 2) continue;
+        const std::vector<std::string> ds(digits.begin(), digits.end());
+        for (std::size_t a = 0; a < ds.size() && out.edit.empty(); ++a)
+          for (std::size_t b = a + 1; b < ds.size() && out.edit.empty(); ++b) {
+            std::vector<Token> t = tokens;
+            for (auto p : pos) {
+              if (t[p].text == ds[a])
+                t[p].text = ds[b];
+              else if (t[p].text == ds[b])
+                t[p].text = ds[a];
+            }
+            if (works(t, {}))
+              found(t, fmt::format("the subscripts {} and {} of \\({}\\) exchanged throughout{}",
+                                   ds[a], ds[b], sym,
+                                   seg_b == 0 && seg_e == tokens.size() ? "" : " the last member"));
+          }
+        if (!out.edit.empty()) break;
+      }
+    }
+  }
+  // 4. one argument deleted
+  if (out.edit.empty()) {
+    for (const auto& [b, e] : list_items(tokens)) {
+      std::vector<Token> t = tokens;
+      t.erase(t.begin() + static_cast<std::ptrdiff_t>(b),
+              t.begin() + static_cast<std::ptrdiff_t>(e));
+      if (works(t, {})) {
+        found(t, "the argument \\(" + term_text(tokens, b + 1, e) + "\\) at character " +
+                     std::to_string(tokens[b].begin + 1) + " removed");
+        break;
+      }
+    }
+  }
+  // 5. two accented forms of one letter exchanged throughout; the variable of d/dX changed
+  if (out.edit.empty()) {
+    std::map<std::string, std::map<std::string, std::vector<std::size_t>>> accented;
+    for (std::size_t k = 0; k + 3 < tokens.size(); ++k)
+      if (tokens[k].kind == Token::Kind::command &&
+          (tokens[k].text == "hat" || tokens[k].text == "bar" || tokens[k].text == "tilde" ||
+           tokens[k].text == "dot" || tokens[k].text == "ddot") &&
+          tokens[k + 1].sym("{") && tokens[k + 3].sym("}"))
+        accented[tokens[k + 2].text][tokens[k].text].push_back(k);
+    for (const auto& [letter, forms] : accented) {
+      if (forms.size() < 2 || !out.edit.empty()) continue;
+      for (auto a = forms.begin(); a != forms.end() && out.edit.empty(); ++a)
+        for (auto b = std::next(a); b != forms.end() && out.edit.empty(); ++b) {
+          std::vector<Token> t = tokens;
+          for (auto k : a->second) t[k].text = b->first;
+          for (auto k : b->second) t[k].text = a->first;
+          if (works(t, {}))
+            found(t, "\\(\\" + a->first + "{" + letter + "}\\) and \\(\\" + b->first + "{" +
+                         letter + "}\\) exchanged throughout");
+        }
+    }
+  }
+  if (out.edit.empty()) {
+    for (std::size_t k = 0; k + 1 < tokens.size() && out.edit.empty(); ++k) {
+      // \frac{d…}{d X…}: X is the letter after a d that follows an opening brace
+      if (!(tokens[k].is(Token::Kind::letter, "d") && k > 0 && tokens[k - 1].sym("{") &&
+            tokens[k + 1].kind == Token::Kind::letter && k >= 2 && tokens[k - 2].sym("}")))
+        continue;
+      for (const char* v : {"t", "a", "s", "\\tau"}) {
+        if (tokens[k + 1].text == v) continue;
+        std::vector<Token> t = tokens;
+        t[k + 1] = tokenize(v).front();
+        if (works(t, {})) {
+          found(t, "\\(d/d" + tokens[k + 1].text + "\\) at character " +
+                       std::to_string(tokens[k + 1].begin + 1) + " read as \\(d/d" + v + "\\)");
+          break;
+        }
+      }
+    }
+  }
+  // 6. two edits: two sign reversals, or a sign reversal and a token change
+  if (out.edit.empty()) {
+    std::vector<Candidate> flips;
+    for (const auto& [first, end] : terms)
+      flips.push_back({tokens,
+                       {{first, ex(-1)}},
+                       "the sign of \\(" + term_text(tokens, first, end) + "\\) reversed"});
+    const std::size_t budget = 600;
+    std::size_t spent = 0;
+    for (std::size_t i = 0; i < flips.size() && out.edit.empty() && spent < budget; ++i)
+      for (std::size_t j = i + 1; j < flips.size() && out.edit.empty() && spent < budget;
+           ++j, ++spent) {
+        std::map<std::size_t, ex> sc = flips[i].scale;
+        sc.insert(flips[j].scale.begin(), flips[j].scale.end());
+        if (works(tokens, sc)) {
+          const std::vector<Token> t =
+              scaled_tokens(tokens, terms[j].first, terms[j].second, numeric(-1));
+          found(scaled_tokens(t, terms[i].first, terms[i].second, numeric(-1)),
+                flips[i].edit + " and " + flips[j].edit);
+        }
+      }
+    for (std::size_t i = 0; i < flips.size() && out.edit.empty() && spent < budget; ++i)
+      for (std::size_t j = 0; j < singles.size() && out.edit.empty() && spent < budget;
+           ++j, ++spent)
+        if (singles[j].tokens.size() == tokens.size() && works(singles[j].tokens, flips[i].scale))
+          found(scaled_tokens(singles[j].tokens, terms[i].first, terms[i].second, numeric(-1)),
+                flips[i].edit + " and " + singles[j].edit);
+    // two single changes in place (the same slip in two components: ẋ₁ and ẋ₂ for ẍ₁, ẍ₂)
+    auto changed_at = [&](const Candidate& c) {
+      std::size_t at = std::string::npos;
+      if (c.tokens.size() != tokens.size()) return at;
+      for (std::size_t k = 0; k < tokens.size(); ++k)
+        if (c.tokens[k].text != tokens[k].text)
+          return at == std::string::npos ? (at = k) : std::string::npos;
+      return at;
+    };
+    for (std::size_t i = 0; i < singles.size() && out.edit.empty() && spent < budget; ++i) {
+      const std::size_t a = changed_at(singles[i]);
+      if (a == std::string::npos) continue;
+      for (std::size_t j = i + 1; j < singles.size() && out.edit.empty() && spent < budget; ++j) {
+        const std::size_t b = changed_at(singles[j]);
+        if (b == std::string::npos || b == a) continue;
+        ++spent;
+        std::vector<Token> t = singles[i].tokens;
+        t[b] = singles[j].tokens[b];
+        if (works(t, {})) found(t, singles[i].edit + " and " + singles[j].edit);
+      }
+    }
+  }
+  if (out.edit.empty() && !spec.proposed.empty()) {
+    try {
+      if (all_vanish(differences(tokenize(spec.proposed), {}, spec, cases, false).d)) {
+        out.corrected = spec.proposed;
+        out.edit = spec.proposed_edit.empty() ? "the check's correction" : spec.proposed_edit;
+        out.edit += " (stated by the check, read and compared like the print)";
+      }
+    } catch (const ReadError&) {
+    } catch (const IllFormed&) {
+    }
+  }
+  out.search = fmt::format(
+      "searched: one term times a rational λ or a monomial in the parameters ({} terms), one "
+      "subscript, accent, prime or exponent changed ({} candidates), subscript pairs exchanged "
+      "throughout a symbol, one argument removed, two accents of a letter exchanged, the "
+      "variable of a derivative changed, and pairs of sign reversals and single changes, or of "
+      "two single changes (at most 600 pairs); {} readings in all",
+      terms.size(), singles.size(), tried);
+  return out;
+}
+
+claims::ClaimResult erratum_for(const claims::FormulaComparison& c, const std::string& id,
+                                const std::string& title, const std::string& context) {
+  claims::ClaimResult r;
+  r.id = id;
+  r.source = c.check;
+  r.info = claims::ClaimInfo{id, c.paper, c.label, title};
+  const bool found = !c.corrected.empty();
+  const bool replaced = !found && !c.verified.empty();
+  r.status = found || replaced ? claims::Status::erratum : claims::Status::not_reproduced;
+  r.cause = found ? "misprint" : "does-not-hold";
+  r.values = {{"printed_agrees", 0.0}, {"small_correction_found", found ? 1.0 : 0.0}};
+  std::string corrected = c.corrected;
+  while (!corrected.empty() &&
+         (corrected.back() == ',' || corrected.back() == '.' || corrected.back() == ' '))
+    corrected.pop_back();
+  r.note = fmt::format(
+      "Printed {} ({}): {}. {}", c.label, c.part,
+      c.outcome == "ill-formed" ? "ill-formed as printed, " + c.detail : "differs, " + c.detail,
+      found ? "Corrected (" + c.edit + "): " + corrected + ", which agrees with " + c.against +
+                  " " + c.through + "."
+      : replaced
+          ? "No small edit corrects it (" + c.search + "); the correct formula is " + c.against +
+                ", shown beside the print, verified independently: " + c.verified + "."
+          : "No correction found; " + c.search + ".");
+  if (!context.empty()) r.note += " " + context;
+  r.comparisons = {c};
+  return r;
+}
+
+}  // namespace vibook::printed
+
+namespace vibook::printed {
+
+// Abstract calls (and their derivatives) at the jet point x as the engine's derivative symbols
+// U_1, phi1_12, …; calls elsewhere are left as they are.
+ex at_jet_point(const ex& e, const modified::JetSpace& J) {
+  struct Map : GiNaC::map_function {
+    const modified::JetSpace& J;
+    explicit Map(const modified::JetSpace& j) : J(j) {}
+    ex operator()(const ex& x) override {
+      int family = 0;
+      std::vector<ex> args;
+      std::vector<int> index;
+      if (modified::match_abstract(x, family, args, index)) {
+        bool at_x = static_cast<int>(args.size()) == J.family_arity(family);
+        for (std::size_t k = 0; at_x && k < args.size(); ++k)
+          at_x =
+              GiNaC::expand(args[k] - J.x(0, J.family_dof(family, static_cast<int>(k)))).is_zero();
+        if (at_x) return J.derivative(family, index);
+        return x;
+      }
+      return x.map(*this);
+    }
+  } m(J);
+  return m(e);
+}
+
+std::string erratum_id(const claims::FormulaComparison& c, const ErratumNames& names) {
+  for (const auto& [display, id] : names)
+    if (display == c.display) return id;
+  const std::string d =
+      c.display.front() == '(' ? c.display.substr(1, c.display.size() - 2) : c.display;
+  return c.paper + "-ERR-" + d;
+}
+
+void conclude(claims::ClaimResult& claim, std::vector<claims::FormulaComparison> comparisons,
+              std::vector<claims::ClaimResult>& errata, const ErratumNames& names) {
+  int agree = 0, corrected = 0, replaced = 0, uncorrected = 0, unreadable = 0;
+  std::string unread;
+  for (const auto& c : comparisons) {
+    if (agrees(c) || c.role == "cross-check") {
+      agree += agrees(c) ? 1 : 0;
+      continue;
+    }
+    if (c.outcome == "unreadable") {
+      ++unreadable;
+      unread += (unread.empty() ? "" : "; ") + c.label + ": " + c.detail;
+      continue;
+    }
+    const std::string id = erratum_id(c, names);
+    const std::string title = c.part + (c.edit.empty() ? " does not agree" : ": " + c.edit);
+    // one erratum per display: a second comparison of the same display joins the first
+    auto it = std::find_if(errata.begin(), errata.end(),
+                           [&](const claims::ClaimResult& e) { return e.id == id; });
+    if (it == errata.end()) {
+      errata.push_back(erratum_for(c, id, title));
+    } else {
+      it->comparisons.push_back(c);
+      const claims::ClaimResult more = erratum_for(c, id, title);
+      it->note += " | " + more.note;
+      if (more.status == claims::Status::not_reproduced) it->status = more.status;
+      if (it->cause.empty() || more.cause == "does-not-hold") it->cause = more.cause;
+    }
+    if (std::find(claim.errata.begin(), claim.errata.end(), id) == claim.errata.end())
+      claim.errata.push_back(id);
+    if (!c.corrected.empty())
+      corrected += 1;
+    else if (!c.verified.empty())
+      replaced += 1;
+    else
+      uncorrected += 1;
+  }
+  claim.values.push_back({"displays_compared", static_cast<double>(comparisons.size())});
+  claim.values.push_back({"displays_agreeing", static_cast<double>(agree)});
+  claim.comparisons.insert(claim.comparisons.end(), comparisons.begin(), comparisons.end());
+  std::string summary =
+      fmt::format(" Printed displays read from the paper and compared: {}, agreeing {}",
+                  comparisons.size(), agree);
+  if (corrected + replaced + uncorrected > 0)
+    summary += fmt::format(", found wrong {} ({})", corrected + replaced + uncorrected,
+                           fmt::join(claim.errata, ", "));
+  if (unreadable > 0) summary += fmt::format(", not read {} ({})", unreadable, unread);
+  claim.note += summary + ".";
+  if (unreadable > 0 || uncorrected > 0 || replaced > 0) {
+    claim.status = claims::Status::not_reproduced;
+    claim.cause = uncorrected + replaced > 0 ? "does-not-hold" : "";
+    if (uncorrected + replaced == 0)
+      claim.note += " A display the reader cannot read is not a comparison.";
+  } else if (corrected > 0) {
+    if (claim.status != claims::Status::not_reproduced) {
+      claim.status = claims::Status::erratum;
+      claim.cause = "misprint";
+    }
+  }
+}
+
+}  // namespace vibook::printed
