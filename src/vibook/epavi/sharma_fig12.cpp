@@ -19,6 +19,7 @@
 #include "vibook/epavi/epavi.hpp"
 #include "vibook/epavi/mechanical.hpp"
 #include "vibook/kepler/kepler.hpp"
+#include "vibook/modified/printed_checks.hpp"
 
 namespace vibook::checks {
 
@@ -260,7 +261,16 @@ std::vector<claims::ClaimResult> run_fig1(const Context& ctx) {
       r.epavi.max_energy_err, r.generic_max_energy_err,
       ok ? "All criteria met; caveat: the time span and the comparison quantity are our readings."
          : "Not met: " + why);
-  return {c, f3};
+  // The monitor functions (26)–(27) as printed, against the ones AVI1 and AVI2 step with.
+  std::vector<claims::FormulaComparison> cs;
+  {
+    const std::lock_guard<std::mutex> lock(modified::ginac_mutex());  // GiNaC: one thread
+    cs = printed_detail::sharma_discrete_prints("monitors", "sharma-fig1");
+  }
+  std::vector<claims::ClaimResult> out;
+  printed::conclude(c, cs, out);
+  out.insert(out.begin(), {c, f3});
+  return out;
 }
 
 std::vector<claims::ClaimResult> run_fig2(const Context& ctx) {

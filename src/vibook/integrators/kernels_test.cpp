@@ -29,11 +29,17 @@ TEST_CASE("V-EX1: kernels equal the generic solver on their discrete Lagrangians
   const auto results = figures::find("check-v-ex1")->run({});
   REQUIRE(results.size() == 3);
   CHECK(results[0].id == "V-EX1");
-  CHECK(results[0].status == claims::Status::reproduced_with_caveat);
+  // (a)-(d) read from the paper agree; both maps of (5) lack the factor h: a misprint.
+  CHECK(results[0].status == claims::Status::erratum);
+  CHECK(results[0].cause == "misprint");
+  CHECK(results[0].value("displays_agreeing") == 4);
   CHECK(results[1].id == "V-P1");
   CHECK(results[1].status == claims::Status::reproduced);
   CHECK(results[2].id == "V-ERR-5");
   CHECK(results[2].status == claims::Status::erratum);
+  REQUIRE(results[2].comparisons.size() == 2);  // p_j and p_{j+1}, each corrected by h
+  for (const auto& c : results[2].comparisons)
+    CHECK(c.edit.find("multiplied by \\(h\\)") != std::string::npos);
 }
 
 TEST_CASE("measured orders on Kepler e = 0.5, h = 3/64 ... 3/4096 (two-sided, |p - p0| < 0.1)") {

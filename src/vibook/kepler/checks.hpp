@@ -15,7 +15,7 @@ using claims::Check;
 using claims::Context;
 
 Check check_ss_t2();              ///< check-ss-t2: SS-T2 (check_ss_t2_p4.cpp)
-Check check_ss_p4();              ///< check-ss-p4: SS-P4, SS-ERR-P4 (check_ss_t2_p4.cpp)
+Check check_ss_p4();              ///< check-ss-p4: SS-P4 (check_ss_t2_p4.cpp)
 Check check_ss_t6();              ///< check-ss-t6: SS-T6, SS-T7 (shen_sun_kepler.cpp)
 Check shen_sun_fig2();            ///< shen-sun-fig2: SS-F2 (shen_sun_kepler.cpp)
 Check shen_sun_fig345();          ///< shen-sun-fig345: SS-F3, SS-F4, SS-F5 (shen_sun_kepler.cpp)

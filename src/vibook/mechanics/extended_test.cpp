@@ -24,8 +24,14 @@ TEST_CASE("S-DEL: marching (15)-(18) reproduces (11)-(12) on Kepler and on the p
   CHECK(k.printed_eq14_residual > 0.1);              // (14) as printed breaks (16)
   const auto results = figures::find("check-s-del")->run({});
   REQUIRE(results.size() == 2);
-  CHECK(results[0].status == claims::Status::reproduced_with_caveat);
+  // (13), (15)-(18) read from the paper agree; (14) needs its sign reversed.
+  CHECK(results[0].status == claims::Status::erratum);
+  CHECK(results[0].value("displays_compared") == 6);
+  CHECK(results[0].value("displays_agreeing") == 5);
+  CHECK(results[1].id == "S-ERR-14");
   CHECK(results[1].status == claims::Status::erratum);
+  REQUIRE(results[1].comparisons.size() == 1);
+  CHECK(results[1].comparisons[0].edit.find("sign") != std::string::npos);
 }
 
 TEST_CASE("extended step: no admissible root is a typed error, not a NaN") {

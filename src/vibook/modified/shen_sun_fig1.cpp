@@ -53,14 +53,6 @@ std::vector<claims::ClaimResult> run(const Context& ctx) {
     acc += GiNaC::pow(J->h(), k) * H[k];
     Hk.emplace_back(acc, vars);
   }
-  // (4.20) as printed: H_mod,1 = ½(p + (h/2)∇φ)² + φ, against the engine's truncation.
-  const modified::ex x = J->x(0, 0), p = J->p(0), hs = J->h();
-  const modified::ex print420 = GiNaC::pow(p + hs / 2 * (-GiNaC::sin(x)), 2) / 2 + GiNaC::cos(x);
-  const modified::ex engine1 = H[0] + hs * H[1];
-  const modified::ex diff = GiNaC::expand(print420 - engine1);
-  // They agree up to O(h²): the difference must have no h⁰ and h¹ terms.
-  const bool eq420 = modified::vanishes(diff.coeff(hs, 0)) && modified::vanishes(diff.coeff(hs, 1));
-
   auto value = [&](int k, double xx, double pp) {
     return static_cast<double>(Hk[k]({LD(xx), LD(pp), LD(h)}));
   };
@@ -126,19 +118,18 @@ std::vector<claims::ClaimResult> run(const Context& ctx) {
   c.values = {{"spread_H", spread[0]},
               {"spread_Hmod1", spread[1]},
               {"spread_Hmod2", spread[2]},
-              {"ratio_Hmod1_over_H", spread[1] / spread[0]},
-              {"eq420_matches_engine_to_O(h^2)", eq420 ? 1.0 : 0.0}};
+              {"ratio_Hmod1_over_H", spread[1] / spread[0]}};
   // [ss-f1-criterion]
   const bool closer = spread[1] < 0.2 * spread[0];
-  c.status = closer && eq420 ? claims::Status::reproduced : claims::Status::not_reproduced;
+  c.status = closer ? claims::Status::reproduced : claims::Status::not_reproduced;
   // [ss-f1-criterion]
   c.note = fmt::format(
       "Pendulum φ = cos x, symplectic Euler (4.16), (x0, p0, h) = (π/2, 0.5, 0.25), {} steps. "
       "Spread (max − min) along the discrete orbit: H {:.3e}, H_mod,1 {:.3e}, H_mod,2 {:.3e} "
       "(ratio H_mod,1/H {:.3f}; \"far more closely\" read as below 0.2). H_mod,k is the engine's "
-      "series Legendre transform of L_mod,k; (4.20) {} the engine's H_mod,1 up to O(h²).",
-      steps, spread[0], spread[1], spread[2], spread[1] / spread[0],
-      eq420 ? "agrees with" : "does not agree with");
+      "series Legendre transform of L_mod,k; (4.20) itself is read from the paper and compared "
+      "with it by check-modified.",
+      steps, spread[0], spread[1], spread[2], spread[1] / spread[0]);
   return {c};
 }
 

@@ -5,6 +5,7 @@
 #pragma once
 
 #include <array>
+#include <vector>
 
 #include "vibook/core/types.hpp"
 
@@ -19,8 +20,10 @@ inline constexpr std::array<double, 7> kSweepSpeeds = {2.0, 3.0, 5.0, 10.0, 20.0
 struct SsT8Measurement {
   double vi322_vs_composition = 0, generic_vs_composition = 0, printed_319_vs_composition = 0;
   double bound = 0;  ///< round-off bound 64ε(|u| + |t||∇φ|), the largest along the run
-  double thm8_printed_residual = 0, thm8_corrected_residual = 0, thm8_scale = 0;
   int max_newton_iterations = 0;
+  /// (t, x₁, x₂) after each step of the composition, from the start (steps + 1 entries): the
+  /// two-step equations of Theorem 8 are evaluated along it.
+  std::vector<std::array<double, 3>> trajectory;
 };
 SsT8Measurement ss_t8_measure(double c, double h, int steps);
 
