@@ -24,10 +24,10 @@ TEST_CASE("S-DEL: marching (15)-(18) reproduces (11)-(12) on Kepler and on the p
   CHECK(k.printed_eq14_residual > 0.1);              // (14) as printed breaks (16)
   const auto results = figures::find("check-s-del")->run({});
   REQUIRE(results.size() == 2);
-  // (13), (15)-(18) read from the paper agree; (14) needs its sign reversed.
+  // (11)-(13), (15)-(18) read from the paper agree; (14) needs its sign reversed.
   CHECK(results[0].status == claims::Status::erratum);
-  CHECK(results[0].value("displays_compared") == 6);
-  CHECK(results[0].value("displays_agreeing") == 5);
+  CHECK(results[0].value("displays_compared") == 8);
+  CHECK(results[0].value("displays_agreeing") == 7);
   CHECK(results[1].id == "S-ERR-14");
   CHECK(results[1].status == claims::Status::erratum);
   REQUIRE(results[1].comparisons.size() == 1);

@@ -137,17 +137,30 @@ std::vector<claims::ClaimResult> appendix_a(std::vector<claims::ClaimResult>& er
       "(2/√λ at λ = 1); at h = 1.9 the partial sum of 400 terms matches the closed form to "
       "{:.1e} relative.",
       radius, dev);
-  printed::conclude(aa, cmp.take(), errata);
-  std::vector<claims::ClaimResult> out = {aa};
-  out.push_back(claims::erratum(
+  // The bound printed in the text after the series (an inline formula), against the radius.
+  {
+    printed::Spec sp;
+    sp.paper = Paper::SS;
+    sp.quote = R"(h \leq \frac{2}{h\sqrt{\lambda}})";
+    sp.members = {1};
+    sp.part = "the convergence bound stated after the series";
+    sp.against = "the radius of convergence 2/√λ of the series in h";
+    sp.verified = fmt::format(
+        "the ratio test on the exact coefficients (radius {:.4f} at λ = 1) and the partial sums "
+        "at h = 1.9",
+        radius);
+    cmp.spec(sp, {{&n, Target::exactly(2 / GiNaC::sqrt(lambda)), ""}});
+  }
+  // The numerical evidence first; the comparison of the bound joins it by name.
+  errata.push_back(claims::erratum(
       {"SS-ERR-A", "SS", "Appendix A, text after (A5)", "Convergence bound h ≤ 2/(h√λ)"},
       "check-modified", {{"radius_ratio_test", radius}, {"rel_dev_partial_sum_h1.9", dev}}, conv,
-      "Printed (in the text, not a display): the series converges for h ≤ 2/(h√λ), which has h "
-      "on both sides (for λ = 1 it reads h ≤ √2). The series in h² has coefficients "
-      "2(k−1)!²/(2k)! λ^k, whose ratio tends to λ/4: it converges for |h| < 2/√λ (|√λh/2| ≤ 1 in "
-      "Lemma A1). Measured: ratio-test radius at λ = 1, and convergence to the closed form at "
-      "h = 1.9 > √2."));
-  return out;
+      "Printed (in the text): the series converges for h ≤ 2/(h√λ), which has h on both sides "
+      "(for λ = 1 it reads h ≤ √2). The series in h² has coefficients 2(k−1)!²/(2k)! λ^k, whose "
+      "ratio tends to λ/4: it converges for |h| < 2/√λ (|√λh/2| ≤ 1 in Lemma A1). Measured: "
+      "ratio-test radius at λ = 1, and convergence to the closed form at h = 1.9 > √2."));
+  printed::conclude(aa, cmp.take(), errata, {{"I788", "SS-ERR-A"}});
+  return {aa};
 }
 
 std::vector<claims::ClaimResult> run(const Context&) {

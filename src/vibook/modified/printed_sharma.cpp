@@ -284,6 +284,22 @@ std::vector<claims::FormulaComparison> sharma_discrete_prints(
     const std::string conv = "vibook's time-marching step (extended.hpp) on " + dl +
                              ": p_k = −D2 L_d(k, k+1) = "
                              "D4 L_d(k−1, k) and E_k = D1 L_d(k, k+1) = −D3 L_d(k−1, k)";
+    // (11)–(12): the variation of the discrete action Σ L_d (9) with respect to q_k and t_k.
+    std::vector<ex> dq, dt;
+    {
+      const ex S = Ld_at(-1) + Ld_at(0);
+      dq = {S.diff(q[1][0]), S.diff(q[1][1])};
+      dt = {S.diff(t[1])};
+    }
+    const std::string var = "the derivative of the discrete action Σ L_d (9), with " + dl + ", ";
+    cmp(Paper::S,
+        R"(\mathbf{D}_4 L_d(t_{k-1}, \mathbf{q}_{k-1}, t_k, \mathbf{q}_k) + \mathbf{D}_2 L_d(t_k, \mathbf{q}_k, t_{k+1}, \mathbf{q}_{k+1}) = \mathbf{0}, \quad (11))",
+        "the discrete Euler–Lagrange equation in q (11), its left-hand side",
+        var + "with respect to q_k", n, Target::exactly(dq), {0});
+    cmp(Paper::S,
+        R"(\mathbf{D}_3 L_d(t_{k-1}, \mathbf{q}_{k-1}, t_k, \mathbf{q}_k) + \mathbf{D}_1 L_d(t_k, \mathbf{q}_k, t_{k+1}, \mathbf{q}_{k+1}) = 0. \quad (12))",
+        "the discrete energy equation (12), its left-hand side", var + "with respect to t_k", n,
+        Target::exactly(dt), {0});
     cmp(Paper::S,
         R"(\mathbf{p}_k = \mathbf{D}_4 L_d(t_{k-1}, \mathbf{q}_{k-1}, t_k, \mathbf{q}_k). \quad (13))",
         "the discrete momentum (13)", conv, n, Target::exactly(d_slot(-1, 4)), {1});

@@ -853,6 +853,22 @@ std::vector<claims::FormulaComparison> shen_sun_relativistic_prints(
         "d/dt ∂L/∂ẋ − ∂L/∂x of L = −c²γ⁻¹(ẋ) − φ(x) (φ = −1/|x|, the library's attractive "
         "potential)",
         n, Target::exactly(el), {}, true);
+    // §3's potential for the relativistic Kepler problem, stated in the text before (3.16).
+    {
+      Spec sp;
+      sp.paper = Paper::SS;
+      sp.quote = R"(\phi(x) = \frac{1}{|x|})";
+      sp.members = {1};
+      sp.part = "the Coulomb potential of §3's relativistic Kepler problem";
+      sp.against = "φ = −1/|x|, the attractive potential of the library and of Fig. 7";
+      sp.verified =
+          "the sign of the radial force of Fig. 7's Lagrangian against (3.17) with the printed φ "
+          "(SS-ERR-PHI's values)";
+      const ex r = GiNaC::sqrt(x1 * x1 + x2 * x2);
+      JetNotation np = n;
+      np.field("phi", "", ex(0), "x");  // the left side names what is defined
+      cmp.spec(sp, {{&np, Target::exactly(-1 / r), ""}});
+    }
     cmp(Paper::SS, R"(L(x, \dot{x}) = -c^2\gamma^{-1}(\dot{x}) + \phi(x))",
         "the Lagrangian stated for (2.7)",
         "L = −c²γ⁻¹(ẋ) − φ(x), whose Euler–Lagrange equation is (2.7) (the row of (2.7))", n,
@@ -865,6 +881,7 @@ std::vector<claims::FormulaComparison> shen_sun_relativistic_prints(
     double c;
     std::shared_ptr<JetNotation> n;
     std::vector<ex> rows;  // t, x1, x2
+    ex ld;                 // L_d(X_n, X_{n+1}) / h
   };
   const std::vector<GiNaC::symbol> t = {GiNaC::symbol("t_nm1", "t_{n-1}"),
                                         GiNaC::symbol("t_n", "t_{n}"),
@@ -889,16 +906,33 @@ std::vector<claims::FormulaComparison> shen_sun_relativistic_prints(
       if (o < -1 || o > 1) throw printed::ReadError("t_n with an offset beyond ±1");
       return Value::scalar(t[static_cast<std::size_t>(o + 1)]);
     });
-    n->discrete("x", 'n', [x](int o, const printed::Atom&, bool&) {
+    n->discrete("x", 'n', [x, t](int o, const printed::Atom& a, bool&) {
       if (o < -1 || o > 1) throw printed::ReadError("x_n with an offset beyond ±1");
-      const auto& q = x[static_cast<std::size_t>(o + 1)];
+      const auto k = static_cast<std::size_t>(o + 1);
+      const auto& q = x[k];
+      // bold: the extended configuration (t, x) of (3.16)–(3.20)
+      if (a.has_accent("mathbf")) return Value::vector({t[k], q[0], q[1]});
       return Value::vector({q[0], q[1]});
     });
+    // (3.17)'s M = diag(−c², I) and A(x) = (−φ(x), 0), as the text after (3.17) defines them
+    Value M = Value::zeros(2, 3);
+    M.c = {constant<ex>(-cv * cv), ex(0), ex(0), ex(0), ex(1), ex(0), ex(0), ex(0), ex(1)};
+    n->constant("\\mathbf{M}", M);
+    const ex phi_y = modified::exact_rationals(P.phi(Vec<ex, 2>(y[0], y[1])));
+    n->callable("A", [phi_y, y](const printed::Atom&, const std::vector<Value>& args) -> Value {
+      if (args.size() != 1 || args[0].rank != 1 || args[0].c.size() != 3)
+        throw printed::IllFormed("A takes the extended configuration (t, x)");
+      const ex at = phi_y.subs(GiNaC::lst{y[0] == args[0].c[1], y[1] == args[0].c[2]});
+      return Value::vector({-at, ex(0), ex(0)});
+    });
+    n->callable("mathbb{L}",
+                [](const printed::Atom&, const std::vector<Value>&) { return Value::scalar(0); });
     const auto Ld = relativistic::discrete_lagrangian_320(P);
     auto X = [&](int o) {
       const auto k = static_cast<std::size_t>(o + 1);
       return Vec<ex, 3>(ex(t[k]), ex(x[k][0]), ex(x[k][1]));
     };
+    st.ld = modified::exact_rationals(Ld(X(0), X(1), ex(h))) / h;  // the paper's scaling
     const ex S = modified::exact_rationals(Ld(X(-1), X(0), ex(h)) + Ld(X(0), X(1), ex(h)));
     const std::vector<GiNaC::symbol> own = {t[1], x[1][0], x[1][1]},
                                      newest = {t[2], x[2][0], x[2][1]};
@@ -908,6 +942,18 @@ std::vector<claims::FormulaComparison> shen_sun_relativistic_prints(
     }
     st.n = n;
     settings.push_back(st);
+  }
+  {
+    Spec sp;
+    sp.paper = Paper::SS;
+    sp.quote =
+        R"(= \frac{1}{2} \frac{(\mathbf{x}_{n+1} - \mathbf{x}_n)^\top \mathbf{M}(\mathbf{x}_{n+1} - \mathbf{x}_n)}{h^2} + \mathbf{A}(\mathbf{x}_n) \cdot \frac{\mathbf{x}_{n+1} - \mathbf{x}_n}{h} \quad (3.20))";
+    sp.part = "the discrete Lagrangian (3.20), with M and A of (3.17)";
+    sp.against = "the library's discrete_lagrangian_320 divided by h (vibook's scaling is h·𝕃)";
+    std::vector<Case> cases;
+    for (const auto& st : settings)
+      cases.push_back({st.n.get(), Target::exactly(st.ld), fmt::format("c = {}", st.c)});
+    cmp.spec(sp, cases);
   }
   const std::string del =
       "the discrete Euler–Lagrange equation of the library's discrete_lagrangian_320 (3.20) "

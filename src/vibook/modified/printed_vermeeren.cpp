@@ -725,6 +725,18 @@ std::vector<claims::FormulaComparison> vermeeren_example1(const std::string& che
         "the momentum p_{j+1} of (5)",
         "the momentum D₂L_d of the library's Störmer–Verlet (L_d = h·L_disc)", n,
         Target::exactly(p1), {1});
+    // (4): the discrete Euler–Lagrange equation, against the derivative of the discrete
+    // action Σ L_disc with respect to x_j (the library's Störmer–Verlet, in the paper's
+    // scaling L_disc = L_d/h).
+    const ex dS = (discrete_lagrangian(dl, d.qm, s, h) + discrete_lagrangian(dl, s, d.q1, h))
+                      .diff(s)
+                      .subs(s == d.q0) /
+                  h;
+    cmp(Paper::V,
+        R"(D_2 L_{\text{disc}}(x_{j-1}, x_j, h) + D_1 L_{\text{disc}}(x_j, x_{j+1}, h) = 0)",
+        "the discrete Euler–Lagrange equation (4), its left-hand side",
+        "∂/∂x_j of Σ L_disc, with the library's Störmer–Verlet L_d = h·L_disc", n,
+        Target::exactly(dS), {0});
   }
   return cmp.take();
 }

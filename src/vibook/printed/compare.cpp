@@ -932,6 +932,27 @@ void conclude(claims::ClaimResult& claim, std::vector<claims::FormulaComparison>
                            fmt::join(claim.errata, ", "));
   if (unreadable > 0) summary += fmt::format(", not read {} ({})", unreadable, unread);
   claim.note += summary + ".";
+  // The headline: what is wrong, display by display (once per display).
+  std::vector<std::string> heads;
+  std::set<std::string> headed;
+  for (const auto& c : comparisons) {
+    if (agrees(c) || c.role == "cross-check" || !headed.insert(c.paper + c.display).second)
+      continue;
+    if (c.outcome == "unreadable")
+      heads.push_back(c.label + " could not be read");
+    else if (!c.corrected.empty())
+      heads.push_back(c.label + " misprinted (" + erratum_id(c, names) + "): " + c.edit);
+    else
+      heads.push_back(c.label + " does not hold (" + c.part + ")");
+  }
+  if (!heads.empty()) {
+    const std::string h = fmt::format("{}", fmt::join(heads, "; "));
+    claim.headline = claim.headline.empty() ? h : claim.headline + "; " + h;
+  }
+  // [printed-verdict]
+  // A display that cannot be read, or that differs with no small correction, makes the claim
+  // not reproduced; displays that differ only by corrected misprints make it an erratum
+  // (cause "misprint"), unless the check's own measurement already failed.
   if (unreadable > 0 || uncorrected > 0 || replaced > 0) {
     claim.status = claims::Status::not_reproduced;
     claim.cause = uncorrected + replaced > 0 ? "does-not-hold" : "";
@@ -943,6 +964,7 @@ void conclude(claims::ClaimResult& claim, std::vector<claims::FormulaComparison>
       claim.cause = "misprint";
     }
   }
+  // [printed-verdict]
 }
 
 }  // namespace vibook::printed

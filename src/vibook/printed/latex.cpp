@@ -365,6 +365,10 @@ class Parser : public Reader {
         continue;
       }
       if (x.cmd("rm")) continue;
+      // \mathbf{0}: a bold number is the number (the zero vector of "= \mathbf{0}")
+      if ((x.cmd("mathbf") || x.cmd("boldsymbol")) && k + 3 < t.size() && t[k + 1].sym("{") &&
+          t[k + 2].kind == Token::Kind::number && t[k + 3].sym("}"))
+        continue;
       idx_.push_back(k);
     }
     // A trailing full stop or comma, and a trailing equation tag "\quad (39)".
@@ -501,7 +505,9 @@ class Parser : public Reader {
 
   bool relation() {
     const Token& k = peek();
-    if (k.sym("=") || k.cmd("simeq") || k.cmd("approx") || k.cmd("equiv")) {
+    // equalities, and inequalities: "h \leq 2/\sqrt{\lambda}" has two members too
+    if (k.sym("=") || k.cmd("simeq") || k.cmd("approx") || k.cmd("equiv") || k.cmd("leq") ||
+        k.cmd("geq") || k.cmd("le") || k.cmd("ge") || k.sym("<") || k.sym(">")) {
       ++p_;
       return true;
     }

@@ -148,9 +148,9 @@ std::vector<Display> find_displays(Paper paper) {
   static const std::regex tag_cmd(R"(\\tag\{([^}]*)\})");
   static const std::regex tag_line(R"(^\s*(?:<sup>)?\((\d+(?:\.\d+)?[a-z]?)\)(?:</sup>)?\s*$)");
   static const std::regex tag_text_end(R"(\((\d+(?:\.\d+)?[a-z]?)\)\s*$)");
-  static const std::regex heading(R"(^#+\s*(.*)$)");
+  static const std::regex heading(R"(^#+\s*(.*)$|^(\d{1,2}\.\s+[A-Z][A-Za-z\- ]{3,70})$)");
   static const std::regex context_start(
-      R"(^\s*\*{1,2}(Example|Theorem|Lemma|Proposition|Definition|Remark|Corollary)\s*([0-9A-Z.]*)|^\s*\*(Proof)\.?\*)");
+      R"(^\s*\*{0,2}(Example|Theorem|Lemma|Proposition|Definition|Remark|Corollary)\s+([0-9A-Z]+(?:\.[0-9]+)?)\.?(?:\*{1,2}|\s+\(|\.\s)|^\s*\*(Proof)\.?\*|^(Proof)\.\s)");
   std::vector<Display> out;
   Number last;
   bool first = true;
@@ -165,10 +165,12 @@ std::vector<Display> find_displays(Paper paper) {
       while (!line.empty() && (line.back() == '\n' || line.back() == '\r')) line.pop_back();
       std::smatch m;
       if (std::regex_search(line, m, heading) && line.rfind("$$", 0) != 0) {
-        section = trim(m[1].str());
+        section = trim(m[1].matched ? m[1].str() : m[2].str());
         context.clear();
+      } else if (trim(line) == "□" || trim(line) == "∎") {
+        context.clear();  // the end of a proof
       } else if (std::regex_search(line, m, context_start)) {
-        context = m[3].matched ? "Proof" : trim(m[1].str() + " " + m[2].str());
+        context = m[3].matched || m[4].matched ? "Proof" : trim(m[1].str() + " " + m[2].str());
         while (!context.empty() && context.back() == '.') context.pop_back();
       }
       ++line_scan;
@@ -272,9 +274,9 @@ std::vector<Display> find_displays(Paper paper) {
 // of the text it stands in.
 std::vector<Display> find_inline(Paper paper) {
   const std::string_view t = text(paper);
-  static const std::regex heading(R"(^#+\s*(.*)$)");
+  static const std::regex heading(R"(^#+\s*(.*)$|^(\d{1,2}\.\s+[A-Z][A-Za-z\- ]{3,70})$)");
   static const std::regex context_start(
-      R"(^\s*\*{1,2}(Example|Theorem|Lemma|Proposition|Definition|Remark|Corollary)\s*([0-9A-Z.]*)|^\s*\*(Proof)\.?\*)");
+      R"(^\s*\*{0,2}(Example|Theorem|Lemma|Proposition|Definition|Remark|Corollary)\s+([0-9A-Z]+(?:\.[0-9]+)?)\.?(?:\*{1,2}|\s+\(|\.\s)|^\s*\*(Proof)\.?\*|^(Proof)\.\s)");
   std::vector<Display> out;
   std::string section, context;
   bool in_block = false;
@@ -287,10 +289,12 @@ std::vector<Display> find_inline(Paper paper) {
     const std::string ls(l);
     std::smatch m;
     if (!in_block && std::regex_search(ls, m, heading)) {
-      section = trim(m[1].str());
+      section = trim(m[1].matched ? m[1].str() : m[2].str());
+      context.clear();
+    } else if (!in_block && (trim(ls) == "□" || trim(ls) == "∎")) {
       context.clear();
     } else if (!in_block && std::regex_search(ls, m, context_start)) {
-      context = m[3].matched ? "Proof" : trim(m[1].str() + " " + m[2].str());
+      context = m[3].matched || m[4].matched ? "Proof" : trim(m[1].str() + " " + m[2].str());
       while (!context.empty() && context.back() == '.') context.pop_back();
     }
     int k = 0;

@@ -91,7 +91,7 @@ TEST_CASE("papers: a quote names exactly one display or inline formula") {
   const Display& n = display_quoting(Paper::SS, "\\dot{x}_1 + \\frac{x_1}{|x|^3}");
   CHECK(n.inline_math);
   CHECK(n.id() == "I307");
-  CHECK(n.label() == "inline, line 307");
+  CHECK(n.label() == "inline, line 307 (Proof)");
 }
 
 TEST_CASE("reader: the constructs the papers use") {
