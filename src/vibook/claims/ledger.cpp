@@ -94,6 +94,8 @@ void Ledger::record(const ClaimResult& r) {
         m.errata.insert(m.errata.end(), r.errata.begin(), r.errata.end());
         if (severity(r.status) > severity(m.status) || (m.cause.empty() && !r.cause.empty()))
           m.cause = r.cause;
+        if (!r.headline.empty())
+          m.headline = m.headline.empty() ? r.headline : m.headline + "; " + r.headline;
         if (severity(r.status) > severity(m.status)) m.status = r.status;
       }
       return;
@@ -107,10 +109,11 @@ void Ledger::record(const ClaimResult& r) {
 }
 
 namespace {
-#define VIBOOK_COMPARISON_FIELDS(X)                                                       \
-  X(paper)                                                                                \
-  X(display) X(label) X(part) X(quote) X(against) X(ours) X(through) X(outcome) X(detail) \
-      X(corrected) X(edit) X(search) X(check) X(role) X(verified)
+#define VIBOOK_COMPARISON_FIELDS(X)                                                         \
+  X(paper)                                                                                  \
+  X(display)                                                                                \
+  X(label) X(part) X(quote) X(against) X(ours) X(through) X(outcome) X(detail) X(corrected) \
+      X(edit) X(search) X(check) X(role) X(verified)
 }  // namespace
 
 nlohmann::json to_json(const FormulaComparison& c) {
@@ -154,6 +157,7 @@ nlohmann::json results_to_json(const std::vector<ClaimResult>& results) {
     if (!r.comparisons.empty()) c["comparisons"] = comparisons_json(r.comparisons);
     if (!r.cause.empty()) c["cause"] = r.cause;
     if (!r.errata.empty()) c["errata"] = r.errata;
+    if (!r.headline.empty()) c["headline"] = r.headline;
     arr.push_back(std::move(c));
   }
   return {{"claims", arr}};
@@ -181,6 +185,7 @@ std::vector<ClaimResult> results_from_json(const nlohmann::json& js) {
       for (const auto& x : c.at("comparisons")) r.comparisons.push_back(comparison_from_json(x));
     if (c.contains("cause")) r.cause = c.at("cause").get<std::string>();
     if (c.contains("errata")) r.errata = c.at("errata").get<std::vector<std::string>>();
+    if (c.contains("headline")) r.headline = c.at("headline").get<std::string>();
     out.push_back(std::move(r));
   }
   return out;
@@ -203,6 +208,7 @@ nlohmann::json Ledger::to_json() const {
       c["comparisons"] = comparisons_json(row.result.comparisons);
     if (!row.result.cause.empty()) c["cause"] = row.result.cause;
     if (!row.result.errata.empty()) c["errata"] = row.result.errata;
+    if (!row.result.headline.empty()) c["headline"] = row.result.headline;
     arr.push_back(std::move(c));
   }
   return {{"claims", arr}};
@@ -371,43 +377,152 @@ std::string Ledger::to_html(std::string_view paper_filter,
   return out;
 }
 
+namespace {
+// HTML-escaped, TeX left for MathJax (a headline may quote the LaTeX of a correction).
+std::string escape_keep_tex(std::string_view s) {
+  std::string o;
+  for (char c : s) {
+    if (c == '<')
+      o += "&lt;";
+    else if (c == '>')
+      o += "&gt;";
+    else if (c == '&')
+      o += "&amp;";
+    else
+      o += c;
+  }
+  return o;
+}
+
+// The kind of a claim on the landing page: its status and, when not reproduced, its cause.
+struct Kind {
+  const char* key;
+  const char* column;   // the table's short heading
+  const char* heading;  // the list's heading
+};
+constexpr Kind kKinds[] = {
+    {"reproduced", "reproduced", "reproduced"},
+    {"reproduced-with-caveat", "with a caveat", "reproduced with a caveat"},
+    {"erratum-misprint", "misprint", "holds once the misprints are corrected (status erratum)"},
+    {"not-reproduced-does-not-hold", "does not hold",
+     "not reproduced: the statement does not hold"},
+    {"not-reproduced-open-reading", "open reading",
+     "not reproduced: depends on a reading the paper leaves open"},
+    {"not-reproduced-edge-of-criterion", "at the edge",
+     "not reproduced: at the edge of the criterion fixed beforehand"},
+    {"not-reproduced-unexplained", "no cause given", "not reproduced: cause not given"},
+    {"pending", "pending", "pending"}};
+
+std::string kind_of(const ClaimResult& r) {
+  switch (r.status) {
+    case Status::reproduced:
+      return "reproduced";
+    case Status::reproduced_with_caveat:
+      return "reproduced-with-caveat";
+    case Status::erratum:
+      return "erratum-misprint";
+    case Status::pending:
+      return "pending";
+    case Status::not_reproduced:
+      if (r.cause == "does-not-hold" || r.cause == "open-reading" || r.cause == "edge-of-criterion")
+        return "not-reproduced-" + r.cause;
+      return "not-reproduced-unexplained";
+  }
+  return "pending";
+}
+}  // namespace
+
+std::vector<std::string> Ledger::unexplained() const {
+  std::vector<std::string> out;
+  for (const auto& row : rows_) {
+    const auto& r = row.result;
+    if (row.info.id.find("-ERR-") != std::string::npos) continue;
+    const bool failed = r.status == Status::not_reproduced || r.status == Status::erratum;
+    if (failed &&
+        (r.cause.empty() || r.headline.empty() || kind_of(r) == "not-reproduced-unexplained"))
+      out.push_back(row.info.id);
+  }
+  return out;
+}
+
 std::string Ledger::to_summary_html() const {
-  const Status order[] = {Status::reproduced, Status::reproduced_with_caveat,
-                          Status::not_reproduced, Status::erratum, Status::pending};
-  std::string out = "<table class=\"vibook-summary\">\n<tr><th>paper</th>";
-  for (Status st : order) out += fmt::format("<th>{}</th>", to_string(st));
-  out += "<th>all</th></tr>\n";
-  auto count = [&](std::string_view paper, Status st) {
+  // Claims (the catalogue's IDs) counted once each, by status and cause; the errata (the
+  // printed formulas found wrong) counted separately, never as claims.
+  std::string out =
+      "<table class=\"vibook-summary\">\n<tr><th rowspan=\"2\">paper</th><th "
+      "colspan=\"2\">reproduced</th><th rowspan=\"2\">erratum:<br>misprint</th><th "
+      "colspan=\"4\">not reproduced</th><th rowspan=\"2\">pending</th><th "
+      "rowspan=\"2\">claims</th><th rowspan=\"2\">errata<br>found</th></tr>\n<tr>";
+  for (const auto& k : kKinds) {
+    const std::string_view key = k.key;
+    if (key == "erratum-misprint" || key == "pending") continue;
+    out += fmt::format("<th>{}</th>", key == "reproduced" ? "as stated" : k.column);
+  }
+  out += "</tr>\n";
+  auto is_claim = [](const Row& r) { return r.info.id.find("-ERR-") == std::string::npos; };
+  auto count = [&](std::string_view paper, std::string_view kind) {
     return std::count_if(rows_.begin(), rows_.end(), [&](const Row& r) {
-      return (paper.empty() || r.info.paper == paper) && r.result.status == st;
+      return is_claim(r) && (paper.empty() || r.info.paper == paper) && kind_of(r.result) == kind;
+    });
+  };
+  auto errata = [&](std::string_view paper) {
+    return std::count_if(rows_.begin(), rows_.end(), [&](const Row& r) {
+      return !is_claim(r) && (paper.empty() || r.info.paper == paper) &&
+             r.result.status == Status::erratum;
+    });
+  };
+  auto claims_of = [&](std::string_view paper) {
+    return std::count_if(rows_.begin(), rows_.end(), [&](const Row& r) {
+      return is_claim(r) && (paper.empty() || r.info.paper == paper);
     });
   };
   for (const auto& [key, name] : kPapers) {
     out += fmt::format("<tr><td>{}</td>", name);
-    long all = 0;
-    for (Status st : order) {
-      const long n = count(key, st);
-      all += n;
-      out += fmt::format("<td class=\"status-{}\">{}</td>", to_string(st), n);
-    }
-    out += fmt::format("<td>{}</td></tr>\n", all);
+    for (const auto& k : kKinds)
+      out += fmt::format("<td class=\"kind-{}\">{}</td>", k.key, count(key, k.key));
+    out += fmt::format("<td>{}</td><td>{}</td></tr>\n", claims_of(key), errata(key));
   }
   out += "<tr><td><b>all</b></td>";
-  for (Status st : order)
-    out += fmt::format("<td class=\"status-{}\"><b>{}</b></td>", to_string(st), count({}, st));
-  out += fmt::format("<td><b>{}</b></td></tr>\n</table>\n", rows_.size());
-  for (const auto& [st, heading] :
-       {std::pair{Status::not_reproduced, "Not reproduced (measured, and the claim does not hold)"},
-        std::pair{Status::erratum,
-                  "Errata (a printed formula or number is wrong; the book "
-                  "shows both forms)"}}) {
-    out += fmt::format("<p><b>{}</b>:</p>\n<ul class=\"vibook-findings\">\n", heading);
-    for (const auto& r : rows_)
-      if (r.result.status == st)
-        out += fmt::format("<li><code>{}</code> ({}) {}</li>\n", escape(r.info.id),
-                           escape(r.info.where), escape(r.info.title));
-    out += "</ul>\n";
+  for (const auto& k : kKinds)
+    out += fmt::format("<td class=\"kind-{}\"><b>{}</b></td>", k.key, count({}, k.key));
+  out += fmt::format("<td><b>{}</b></td><td><b>{}</b></td></tr>\n</table>\n", claims_of({}),
+                     errata({}));
+  // Each claim that is not simply reproduced, headed by what failed, with a link to its row.
+  for (const auto& k : kKinds) {
+    if (std::string_view(k.key) == "reproduced" || std::string_view(k.key) == "pending") continue;
+    std::string items;
+    for (const auto& r : rows_) {
+      if (!is_claim(r) || kind_of(r.result) != k.key) continue;
+      const std::string id = escape(r.info.id);
+      std::string head =
+          r.result.headline.empty() ? escape(r.info.title) : escape_keep_tex(r.result.headline);
+      if (r.result.status == Status::reproduced_with_caveat && r.result.headline.empty())
+        head = escape(r.info.title) + " (the caveat is in the note)";
+      std::string errs;
+      for (const auto& e : r.result.errata)
+        errs += fmt::format("{0}<a href=\"report.html#claim-{1}\">{1}</a>",
+                            errs.empty() ? "" : ", ", escape(e));
+      items += fmt::format(
+          "<li><a href=\"report.html#claim-{0}\"><code>{0}</code></a> ({1}): {2}{3}</li>\n", id,
+          escape(r.info.where), head, errs.empty() ? "" : " — errata " + errs);
+    }
+    if (!items.empty())
+      out += fmt::format("<p><b>{}</b>:</p>\n<ul class=\"vibook-findings\">\n{}</ul>\n", k.heading,
+                         items);
   }
+  std::string items;
+  for (const auto& r : rows_) {
+    if (is_claim(r)) continue;
+    items += fmt::format(
+        "<li><a href=\"report.html#claim-{0}\"><code>{0}</code></a> ({1}, {2}): {3}</li>\n",
+        escape(r.info.id), escape(r.info.where), to_string(r.result.status),
+        escape_keep_tex(r.info.title));
+  }
+  if (!items.empty())
+    out +=
+        "<p><b>Errata</b> (a printed formula or statement found wrong; the report shows the "
+        "print, the correction and the evidence):</p>\n<ul class=\"vibook-findings\">\n" +
+        items + "</ul>\n";
   return out;
 }
 

@@ -71,6 +71,9 @@ struct ClaimResult {
   /// by how much). Empty for a reproduced claim.
   std::string cause;
   std::vector<std::string> errata;  ///< the erratum IDs a "misprint" cause refers to
+  /// One line naming what failed (a claim not reproduced) or what is misprinted: the claim's
+  /// headline on the book's landing page. Required for every claim with a cause.
+  std::string headline;
 
   /// The measured value of that name, or NaN if there is none (so that any comparison with
   /// a missing value fails).
@@ -118,6 +121,9 @@ class Ledger {
   /// HTML for the book's first page: the number of claims per paper and status, then the
   /// claims that were not reproduced and the errata found, by ID and title.
   std::string to_summary_html() const;
+  /// The claims (not errata) that are not reproduced, or reproduced only with misprints
+  /// corrected, without a cause or a headline saying what failed: the book refuses them.
+  std::vector<std::string> unexplained() const;
 
  private:
   std::vector<Row> rows_;

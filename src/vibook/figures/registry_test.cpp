@@ -56,21 +56,19 @@ TEST_CASE("run_check: a check is held to the claims it names") {
     c.run = [results](const figures::Context&) { return results; };
     return c;
   };
-  const ClaimResult v_ex1{"V-EX1", Status::reproduced, {}, "", "fake-check", std::nullopt, {}, "",
-                          {}};
-  const ClaimResult v_p1{"V-P1", Status::reproduced, {}, "", "fake-check", std::nullopt, {}, "",
-                         {}};
-  const ClaimResult v_p1_pending{
-      "V-P1", Status::pending, {}, "", "fake-check", std::nullopt, {}, "", {}};
-  const ClaimResult erratum{"V-ERR-9",
-                            Status::erratum,
-                            {},
-                            "",
-                            "fake-check",
-                            claims::ClaimInfo{"V-ERR-9", "V", "(9)", "t"},
-                            {},
-                            "",
-                            {}};
+  auto result = [](std::string id, Status st, std::optional<claims::ClaimInfo> info = {}) {
+    ClaimResult r;
+    r.id = std::move(id);
+    r.status = st;
+    r.source = "fake-check";
+    r.info = std::move(info);
+    return r;
+  };
+  const ClaimResult v_ex1 = result("V-EX1", Status::reproduced);
+  const ClaimResult v_p1 = result("V-P1", Status::reproduced);
+  const ClaimResult v_p1_pending = result("V-P1", Status::pending);
+  const ClaimResult erratum =
+      result("V-ERR-9", Status::erratum, claims::ClaimInfo{"V-ERR-9", "V", "(9)", "t"});
   // Names one and measures it (an erratum beside it): accepted.
   CHECK(figures::run_check(fake({"V-EX1"}, {v_ex1, erratum}), {}).size() == 2);
   // Names two, measures one: refused, naming the claim.
@@ -87,17 +85,14 @@ TEST_CASE("run_check: a check is held to the claims it names") {
 TEST_CASE("ledger: errata") {
   // Unknown IDs are refused unless they are errata with their own description.
   claims::Ledger l2;
-  CHECK_THROWS_AS(
-      l2.record({"X-1", claims::Status::reproduced, {}, "", "", std::nullopt, {}, "", {}}),
-      std::invalid_argument);
-  l2.record({"V-ERR-5",
-             claims::Status::erratum,
-             {},
-             "",
-             "",
-             claims::ClaimInfo{"V-ERR-5", "V", "(5)", "t"},
-             {},
-             "",
-             {}});
+  claims::ClaimResult unknown;
+  unknown.id = "X-1";
+  unknown.status = claims::Status::reproduced;
+  CHECK_THROWS_AS(l2.record(unknown), std::invalid_argument);
+  claims::ClaimResult e5;
+  e5.id = "V-ERR-5";
+  e5.status = claims::Status::erratum;
+  e5.info = claims::ClaimInfo{"V-ERR-5", "V", "(5)", "t"};
+  l2.record(e5);
   CHECK(l2.find("V-ERR-5") != nullptr);
 }

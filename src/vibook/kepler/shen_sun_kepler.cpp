@@ -15,6 +15,7 @@
 #include <random>
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include "vibook/core/angle.hpp"
 #include "vibook/core/order.hpp"
@@ -306,112 +307,201 @@ std::vector<claims::ClaimResult> run_fig345(const Context& ctx) {
                   r["se"].final_domega, r["sv"].final_domega, r["vi1"].final_domega,
                   r["vi2"].final_domega, r["se"].max_domega, r["sv"].max_domega,
                   r["vi1"].max_domega, r["vi2"].max_domega, s5 ? "yes" : "no", w1, w2);
+  // What failed, by method.
+  auto failing = [&](const char* what, double classic, double vi1, double vi2) {
+    std::vector<std::string> parts;
+    for (const auto& [n, v] : {std::pair{"VI-1", vi1}, std::pair{"VI-2", vi2}})
+      if (!(v <= 0.5 * classic))
+        parts.push_back(fmt::format("{}'s {} {:.2g} is not at most half of min(se, sv) = {:.2g}", n,
+                                    what, v, classic));
+    return fmt::format("{}", fmt::join(parts, "; "));
+  };
+  if (f3.status == claims::Status::not_reproduced) {
+    f3.cause = "does-not-hold";
+    f3.headline = "the energy error is not bounded for all four methods (second half > 2× first)";
+  }
+  if (f4.status == claims::Status::not_reproduced) {
+    f4.cause = "does-not-hold";
+    f4.headline = (b4 ? std::string() : "the eccentricity error is not bounded for all four; ") +
+                  failing("eccentricity error", classic_e, r["vi1"].max_decc, r["vi2"].max_decc);
+  }
+  if (f5.status == claims::Status::not_reproduced) {
+    f5.cause = "does-not-hold";
+    f5.headline = failing("angle error", classic_w, r["vi1"].max_domega, r["vi2"].max_domega);
+  }
   return {f3, f4, f5};
 }
 
 // ---- Fig. 6: convergence of the LRL vector over one period -------------------------------
 // The paper: h_i = 2^{−i}, i = 1..6, "over one period"; it gives neither the initial condition
-// nor how the period is closed. We run both initial conditions of §5, close the period
-// exactly (n = round(T/2^{−i}) steps of h = T/n), extend to i = 10, and fit orders two-sidedly
-// over i = 5..10 (the asymptotic range; the round-off floor 1e-13 is excluded), reporting the
-// fit over the paper's i = 1..6 too.
+// nor how the period is closed. Every reasonable reading is measured and shown: both initial
+// conditions of §5, and two step rules: the period closed exactly (n = round(T/2^{−i}) steps
+// of h = T/n), and the paper's own h = 2^{−i} taken literally for n = round(T/h) steps (the
+// eccentricity and the perihelion angle are invariants of the exact flow, so ending a little
+// before or after T changes only the numerical error, not what is measured). Orders are
+// fitted two-sidedly over i = 5..10 (the asymptotic range; the round-off floor 1e-13 is
+// excluded), and over the paper's i = 1..6 for the report.
 std::vector<claims::ClaimResult> run_fig6(const Context& ctx) {
   struct Ic {
     const char* name;
     State<2> s0;
   };
-  std::vector<Ic> ics(2);
+  std::vector<Ic> ics(3);
   ics[0].name = "perihelion_e0.6";
   ics[0].s0 = kepler_perihelion_state(0.6);
   ics[1].name = "x0_-3_p0_0.45";
   ics[1].s0.q = Vec<double, 2>(-3.0, 0.0);
   ics[1].s0.p = Vec<double, 2>(0.0, 0.45);
+  // Both of §5's starts lie on the orbit's axis, where a symmetric method's one-period error
+  // in e cancels to higher order; a start off the axis (the e = 0.6 orbit a fifth of a period
+  // after perihelion) is a third reading.
+  ics[2].name = "e0.6_at_T/5";
+  {
+    const KeplerOrbit o = KeplerOrbit::perihelion(0.6);
+    const auto st = o.at(2 * std::numbers::pi / 5);
+    ics[2].s0.q = st.q;
+    ics[2].s0.p = st.p;
+  }
   const auto methods = four_methods();
   claims::ClaimResult c;
   c.id = "SS-F6";
   c.source = "shen-sun-fig6";
   std::string txt;
-  bool ok = true;
+  std::vector<std::string> met, missed, orders_met, orders_missed, vi2_not_below, angles_unordered;
   for (const auto& ic : ics) {
-    const KeplerInvariants k0 = kepler_invariants(ic.s0.q, ic.s0.p);
-    const double a = -0.5 / k0.H, T = 2 * std::numbers::pi * a * std::sqrt(a);
-    std::optional<std::ofstream> f;
-    if (ctx.out_dir) {
-      f.emplace(*ctx.out_dir / (std::string(ic.name) + ".csv"));
-      *f << "h,se_ecc,sv_ecc,vi1_ecc,vi2_ecc,se_angle,sv_angle,vi1_angle,vi2_angle\n";
-    }
-    std::map<std::string, std::vector<double>> ecc, ang;
-    std::vector<double> hs;
-    for (int i = 1; i <= 10; ++i) {
-      const long n = std::lround(T / std::ldexp(1.0, -i));
-      const double h = T / double(n);
-      hs.push_back(h);
-      std::vector<double> row{h};
+    for (const bool literal : {false, true}) {
+      const std::string reading =
+          std::string(ic.name) + (literal ? ", h = 2^-i literally" : ", period closed (h = T/n)");
+      std::string tag = std::string(ic.name) + (literal ? "_h2i" : "");
+      for (auto& ch : tag)
+        if (ch == '/') ch = '_';
+      const KeplerInvariants k0 = kepler_invariants(ic.s0.q, ic.s0.p);
+      const double a = -0.5 / k0.H, T = 2 * std::numbers::pi * a * std::sqrt(a);
+      std::optional<std::ofstream> f;
+      if (ctx.out_dir) {
+        f.emplace(*ctx.out_dir / (tag + ".csv"));
+        *f << "h,se_ecc,sv_ecc,vi1_ecc,vi2_ecc,se_angle,sv_angle,vi1_angle,vi2_angle\n";
+      }
+      std::map<std::string, std::vector<double>> ecc, ang;
+      std::vector<double> hs;
+      for (int i = 1; i <= 10; ++i) {
+        const long n = std::lround(T / std::ldexp(1.0, -i));
+        const double h = literal ? std::ldexp(1.0, -i) : T / double(n);
+        hs.push_back(h);
+        std::vector<double> row{h};
+        for (const auto& m : methods) {
+          Vec<double, 2> q = ic.s0.q, p = ic.s0.p;
+          for (long k = 0; k < n; ++k) m.step(q, p, h);
+          const KeplerInvariants k1 = kepler_invariants(q, p);
+          double dw = k1.omega - k0.omega;
+          dw -= 2 * std::numbers::pi * std::nearbyint(dw / (2 * std::numbers::pi));
+          ecc[m.name].push_back(std::abs(k1.ecc - k0.ecc));
+          ang[m.name].push_back(std::abs(dw));
+        }
+        for (const auto& m : methods) row.push_back(ecc[m.name].back());
+        for (const auto& m : methods) row.push_back(ang[m.name].back());
+        if (f) {
+          for (std::size_t j = 0; j < row.size(); ++j)
+            *f << (j ? "," : "") << fmt::format("{:.17g}", row[j]);
+          *f << "\n";
+        }
+      }
+      auto fit = [&](const std::vector<double>& e, int lo, int hi) {
+        std::vector<double> H(hs.begin() + lo, hs.begin() + hi), E(e.begin() + lo, e.begin() + hi);
+        try {
+          return fit_order(H, E, 1e-13, 3).slope;
+        } catch (const std::invalid_argument&) {
+          return double(NAN);
+        }
+      };
+      std::map<std::string, double> pe, pa;
       for (const auto& m : methods) {
-        Vec<double, 2> q = ic.s0.q, p = ic.s0.p;
-        for (long k = 0; k < n; ++k) m.step(q, p, h);
-        const KeplerInvariants k1 = kepler_invariants(q, p);
-        double dw = k1.omega - k0.omega;
-        dw -= 2 * std::numbers::pi * std::nearbyint(dw / (2 * std::numbers::pi));
-        ecc[m.name].push_back(std::abs(k1.ecc - k0.ecc));
-        ang[m.name].push_back(std::abs(dw));
+        pe[m.name] = fit(ecc[m.name], 4, 10);
+        pa[m.name] = fit(ang[m.name], 4, 10);
+        c.values.push_back({fmt::format("{}_{}_ecc_order", tag, m.name), pe[m.name]});
+        c.values.push_back({fmt::format("{}_{}_angle_order", tag, m.name), pa[m.name]});
+        c.values.push_back(
+            {fmt::format("{}_{}_ecc_order_paper_range", tag, m.name), fit(ecc[m.name], 0, 6)});
+        c.values.push_back(
+            {fmt::format("{}_{}_angle_order_paper_range", tag, m.name), fit(ang[m.name], 0, 6)});
       }
-      for (const auto& m : methods) row.push_back(ecc[m.name].back());
-      for (const auto& m : methods) row.push_back(ang[m.name].back());
-      if (f) {
-        for (std::size_t j = 0; j < row.size(); ++j)
-          *f << (j ? "," : "") << fmt::format("{:.17g}", row[j]);
-        *f << "\n";
-      }
+      // [ss-f6-criterion]
+      // The claims, each two-sided with tolerance 0.3 on the order, for each reading.
+      auto near = [](double x, double p) { return std::abs(x - p) < 0.3; };
+      const bool smaller_vi2 = ecc["vi2"][9] < ecc["sv"][9];
+      const bool ang_small =
+          ang["vi1"][9] < std::min(ang["se"][9], ang["sv"][9]) && ang["vi2"][9] < ang["vi1"][9];
+      std::vector<std::string> fails;
+      bool orders_here = true;
+      auto need = [&](bool cond, const std::string& what) {
+        if (!cond) fails.push_back(what);
+      };
+      auto order = [&](bool cond, const std::string& what) {
+        orders_here = orders_here && cond;
+        need(cond, what);
+      };
+      order(near(pe["se"], 2), fmt::format("se ecc order {:.2f} (2)", pe["se"]));
+      order(near(pe["vi1"], 2), fmt::format("VI-1 ecc order {:.2f} (2)", pe["vi1"]));
+      order(near(pe["sv"], 4), fmt::format("sv ecc order {:.2f} (4)", pe["sv"]));
+      order(pe["vi2"] > 2.3, fmt::format("VI-2 ecc order {:.2f} (> 2.3)", pe["vi2"]));
+      need(smaller_vi2, "VI-2 ecc error not below sv's");
+      for (const char* m : {"se", "sv", "vi1", "vi2"})
+        order(near(pa[m], 2), fmt::format("{} angle order {:.2f} (2)", m, pa[m]));
+      need(ang_small, "angle errors not ordered VI-2 < VI-1 < min(se, sv)");
+      // [ss-f6-criterion]
+      (fails.empty() ? met : missed).push_back(reading);
+      (orders_here ? orders_met : orders_missed).push_back(reading);
+      if (!smaller_vi2) vi2_not_below.push_back(reading);
+      if (!ang_small) angles_unordered.push_back(reading);
+      txt += fmt::format(
+          "{} (T = {:.4f}): eccentricity orders se {:.2f}, sv {:.2f}, VI-1 {:.2f}, VI-2 {:.2f}; "
+          "angle orders {:.2f}, {:.2f}, {:.2f}, {:.2f}; {}. ",
+          reading, T, pe["se"], pe["sv"], pe["vi1"], pe["vi2"], pa["se"], pa["sv"], pa["vi1"],
+          pa["vi2"],
+          fails.empty() ? "all met" : "missed: " + fmt::format("{}", fmt::join(fails, ", ")));
     }
-    auto fit = [&](const std::vector<double>& e, int lo, int hi) {
-      std::vector<double> H(hs.begin() + lo, hs.begin() + hi), E(e.begin() + lo, e.begin() + hi);
-      try {
-        return fit_order(H, E, 1e-13, 3).slope;
-      } catch (const std::invalid_argument&) {
-        return double(NAN);
-      }
-    };
-    std::map<std::string, double> pe, pa;
-    for (const auto& m : methods) {
-      pe[m.name] = fit(ecc[m.name], 4, 10);
-      pa[m.name] = fit(ang[m.name], 4, 10);
-      c.values.push_back({fmt::format("{}_{}_ecc_order", ic.name, m.name), pe[m.name]});
-      c.values.push_back({fmt::format("{}_{}_angle_order", ic.name, m.name), pa[m.name]});
-      c.values.push_back(
-          {fmt::format("{}_{}_ecc_order_paper_range", ic.name, m.name), fit(ecc[m.name], 0, 6)});
-      c.values.push_back(
-          {fmt::format("{}_{}_angle_order_paper_range", ic.name, m.name), fit(ang[m.name], 0, 6)});
-    }
-    // [ss-f6-criterion]
-    // The claims, each two-sided with tolerance 0.3 on the order.
-    auto near = [](double x, double p) { return std::abs(x - p) < 0.3; };
-    const bool smaller_vi2 = ecc["vi2"][9] < ecc["sv"][9];
-    const bool ang_small =
-        ang["vi1"][9] < std::min(ang["se"][9], ang["sv"][9]) && ang["vi2"][9] < ang["vi1"][9];
-    const bool here = near(pe["se"], 2) && near(pe["vi1"], 2) && near(pe["sv"], 4) &&
-                      pe["vi2"] > 2.3 && smaller_vi2 && near(pa["se"], 2) && near(pa["sv"], 2) &&
-                      near(pa["vi1"], 2) && near(pa["vi2"], 2) && ang_small;
-    // [ss-f6-criterion]
-    ok = ok && here;
-    txt += fmt::format(
-        "{} (T = {:.4f}): eccentricity orders se {:.2f}, sv {:.2f}, VI-1 {:.2f}, VI-2 {:.2f}; "
-        "angle orders {:.2f}, {:.2f}, {:.2f}, {:.2f}; at h = T/n ≈ 2^-10: VI-2 ecc error {} "
-        "Störmer–Verlet's, angle errors VI-1 {} min(se, sv), VI-2 {} VI-1. ",
-        ic.name, T, pe["se"], pe["sv"], pe["vi1"], pe["vi2"], pa["se"], pa["sv"], pa["vi1"],
-        pa["vi2"], smaller_vi2 ? "below" : "NOT below",
-        ang["vi1"][9] < std::min(ang["se"][9], ang["sv"][9]) ? "below" : "NOT below",
-        ang["vi2"][9] < ang["vi1"][9] ? "below" : "NOT below");
   }
-  c.status = ok ? claims::Status::reproduced_with_caveat : claims::Status::not_reproduced;
+  const bool all = missed.empty();
+  c.status = all ? claims::Status::reproduced_with_caveat : claims::Status::not_reproduced;
+  if (!all) {
+    // What failed, part by part: the orders depend on the reading; an ordering of the errors
+    // that fails under every reading does not hold.
+    const std::size_t n = met.size() + missed.size();
+    std::vector<std::string> parts;
+    if (!orders_missed.empty())
+      parts.push_back(orders_met.empty() ? "the stated orders fail under every reading"
+                                         : fmt::format("the stated orders hold only for {}",
+                                                       fmt::join(orders_met, "; ")));
+    if (!vi2_not_below.empty())
+      parts.push_back(vi2_not_below.size() == n
+                          ? "VI-2's eccentricity error is not below Störmer–Verlet's under any "
+                            "reading"
+                          : fmt::format("VI-2's eccentricity error is not below Störmer–Verlet's "
+                                        "for {}",
+                                        fmt::join(vi2_not_below, "; ")));
+    if (!angles_unordered.empty())
+      parts.push_back(
+          fmt::format("the angle errors are not ordered VI-2 < VI-1 < min(se, sv) "
+                      "for {}",
+                      fmt::join(angles_unordered, "; ")));
+    // Open reading when some reading meets the whole claim; when none does, the claim as a
+    // whole does not hold (its parts may each hold under some reading: the headline says so).
+    c.cause = met.empty() ? "does-not-hold" : "open-reading";
+    c.headline = fmt::format("no reading meets the whole claim: {}", fmt::join(parts, "; "));
+    if (!met.empty())
+      c.headline = fmt::format("the claim holds for {} only: {}", fmt::join(met, "; "),
+                               fmt::join(parts, "; "));
+  }
+  c.values.push_back({"readings_met", double(met.size())});
+  c.values.push_back({"readings_measured", double(met.size() + missed.size())});
   c.note = txt + fmt::format(
                      "Criterion (fixed before measuring): orders within 0.3 of the claimed ones "
-                     "(eccentricity: se, VI-1 2, sv 4, VI-2 > 2.3; angle: all 2) fitted over h ≈ "
-                     "2^-5..2^-10 with the period closed exactly, and the stated orderings of the "
-                     "errors. {}",
-                     ok ? "Met for both initial conditions; caveat: the initial condition and the "
-                          "closing of the period are our choices."
-                        : "Not met for both initial conditions (see the orders above).");
+                     "(eccentricity: se, VI-1 2, sv 4, VI-2 > 2.3; angle: all 2) fitted over "
+                     "i = 5..10, and the stated orderings of the errors at i = 10. Readings met: "
+                     "{} of {}. {}",
+                     met.size(), met.size() + missed.size(),
+                     all ? "Caveat: the initial condition and the step rule are our readings."
+                         : "The paper leaves the initial condition and the step rule open.");
   return {c};
 }
 
