@@ -49,8 +49,15 @@ if(NOT rc EQUAL 0)
 endif()
 
 find_program(PYTHON3 python3 REQUIRED)
-# 2a. Every printed formula: one table per paper, each outcome read from this ledger.
-execute_process(COMMAND ${PYTHON3} ${SOURCE_DIR}/book/formulas.py ${OUT}/claims.json ${GEN}
+# 2a. Every printed formula: one row per display the papers' text holds (`vibook displays`),
+#     each outcome read from the comparisons of this ledger.
+execute_process(COMMAND ${VIBOOK} displays --inline --json-out ${OUT}/displays.json
+                RESULT_VARIABLE rc)
+if(NOT rc EQUAL 0)
+  message(FATAL_ERROR "vibook displays failed (exit ${rc})")
+endif()
+execute_process(COMMAND ${PYTHON3} ${SOURCE_DIR}/book/formulas.py ${OUT}/claims.json
+                        ${OUT}/displays.json ${GEN}
                 RESULT_VARIABLE rc)
 if(NOT rc EQUAL 0)
   message(FATAL_ERROR "formulas.py failed (exit ${rc})")
@@ -113,6 +120,16 @@ else()
        "<p><em>Not measured in this build.</em> Run <code>./build.sh bench</code> (or "
        "<code>./build.sh book</code>, which runs the benchmarks) to fill this table.</p>\n")
   file(COPY_FILE ${GEN}/bench.html ${GEN}/bench-adaptive.html)
+endif()
+
+# 3b. The chapters' prose quotes measured values as [[CLAIM:value]]: each must be in this
+#     ledger (Doxygen's input filter, book/ledger_text.py, substitutes them).
+file(GLOB chapters ${SOURCE_DIR}/book/*.md)
+execute_process(COMMAND ${PYTHON3} ${SOURCE_DIR}/book/ledger_text.py --check ${OUT}/claims.json
+                        ${chapters}
+                RESULT_VARIABLE rc)
+if(NOT rc EQUAL 0)
+  message(FATAL_ERROR "ledger_text.py: a chapter quotes a value the ledger does not have")
 endif()
 
 # 4. Doxygen, then MathJax next to the HTML so that the book works offline.

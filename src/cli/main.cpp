@@ -7,6 +7,7 @@
 #include <system_error>
 
 #include <fmt/format.h>
+#include <nlohmann/json.hpp>
 
 #include "cli.hpp"
 #include "vibook/claims/ledger.hpp"
@@ -15,6 +16,7 @@
 #include "vibook/core/parallel.hpp"
 #include "vibook/figures/registry.hpp"
 #include "vibook/plot/gnuplot.hpp"
+#include "vibook/printed/papers.hpp"
 
 namespace fs = std::filesystem;
 using namespace vibook;
@@ -160,9 +162,56 @@ int cmd_claims(bool json, const std::string& json_out, const std::string& html_d
   return cli::kOk;
 }
 
+// `vibook displays`: the papers' displayed formulas as vibook finds them in their text (and,
+// with --inline, the inline formulas), the list the book's formula tables have one row per.
+int cmd_displays(const std::vector<std::string>& papers, bool with_inline, bool json,
+                 const std::string& json_out) {
+  std::vector<printed::Paper> which;
+  for (const auto& k : papers) {
+    try {
+      which.push_back(printed::paper_from_key(k));
+    } catch (const std::invalid_argument&) {
+      throw ArgumentError("--paper", fmt::format("'{}' is not a paper (S, V or SS)", k));
+    }
+  }
+  if (which.empty()) which = {printed::Paper::S, printed::Paper::V, printed::Paper::SS};
+  if (!json_out.empty()) check_output_path(json_out, "--json-out", false);
+  nlohmann::json out = nlohmann::json::array();
+  std::string table;
+  for (printed::Paper p : which) {
+    std::vector<const printed::Display*> all;
+    for (const auto& d : printed::displays(p)) all.push_back(&d);
+    if (with_inline)
+      for (const auto& d : printed::inline_formulas(p)) all.push_back(&d);
+    for (const auto* d : all) {
+      out.push_back({{"paper", std::string(printed::key(p))},
+                     {"id", d->id()},
+                     {"label", d->label()},
+                     {"number", d->number},
+                     {"line", d->line},
+                     {"section", d->section},
+                     {"context", d->context},
+                     {"inline", d->inline_math},
+                     {"latex", d->latex}});
+      std::string head = d->latex.substr(0, 70);
+      for (auto& ch : head)
+        if (ch == '\n') ch = ' ';
+      table += fmt::format("{:<3} {:<8} {:<40.40} {}{}\n", printed::key(p), d->id(),
+                           d->section + (d->context.empty() ? "" : " / " + d->context), head,
+                           d->latex.size() > 70 ? "…" : "");
+    }
+  }
+  if (!json_out.empty()) write_output_file(json_out, out.dump(2) + "\n", "--json-out");
+  if (json)
+    std::cout << out.dump(2) << '\n';
+  else if (json_out.empty())
+    std::cout << table;
+  return cli::kOk;
+}
+
 // The subcommands, for the message about an unknown one.
 constexpr const char* kCommands[] = {"list", "figure",   "figures", "claims",
-                                     "run",  "modified", "verify"};
+                                     "run",  "modified", "verify",  "displays"};
 
 }  // namespace
 
@@ -202,6 +251,19 @@ int main(int argc, char** argv) {
                  "read the results of the figures from DIR/ID/claims.json (written by `vibook "
                  "figures --out DIR` of this build) instead of running them again");
 
+  auto* disp = app.add_subcommand(
+      "displays",
+      "List the papers' displayed formulas as vibook reads them from the papers' text (the rows "
+      "of the book's formula tables)");
+  std::vector<std::string> disp_papers;
+  bool disp_inline = false, disp_json = false;
+  std::string disp_json_out;
+  disp->add_option("--paper", disp_papers, "S, V or SS (repeatable; default all three)");
+  disp->add_flag("--inline", disp_inline, "also list the inline formulas $…$ of the text");
+  disp->add_flag("--json", disp_json,
+                 "print JSON: paper, id, label, number, line, section, context, latex");
+  disp->add_option("--json-out", disp_json_out, "write the JSON to this file");
+
   const auto run = cli::add_run_command(app);
   const auto modified = cli::add_modified_command(app);
   const auto verify = cli::add_verify_command(app);
@@ -214,7 +276,7 @@ int main(int argc, char** argv) {
     if (!known) {
       fmt::print(stderr,
                  "vibook: error: unknown command '{}' (commands: list, figure, figures, claims, "
-                 "run, modified; see `vibook --help`)\n",
+                 "run, modified, verify, displays; see `vibook --help`)\n",
                  word);
       return cli::kBadArgument;
     }
@@ -263,6 +325,8 @@ int main(int argc, char** argv) {
       rc = modified();
     else if (app.got_subcommand("verify"))
       rc = verify();
+    else if (app.got_subcommand("displays"))
+      rc = cmd_displays(disp_papers, disp_inline, disp_json, disp_json_out);
     else
       rc = run();
     // Whatever went to standard output must have arrived (a full disk, a closed pipe).
