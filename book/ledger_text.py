@@ -38,7 +38,8 @@ def value_of(claims, cid, name, spec):
         text = c.get(name, "") or (spec or "")
         if not text:
             raise KeyError(f"claim {cid} has no {name}")
-        return html.escape(text, quote=False)
+        # inline TeX of a headline (a correction's term) in Doxygen's delimiters
+        return html.escape(text, quote=False).replace("\\(", "\\f$").replace("\\)", "\\f$")
     if name == "corrected":
         for x in c.get("comparisons", []):
             if x.get("corrected"):

@@ -48,7 +48,7 @@ std::function<ex(const ex&)> on_shell(const modified::JetSpace& J, std::vector<i
                                       const std::vector<std::vector<ex>>& f, int K);
 
 /// A notation over an engine's jet space of one curve `x` (all degrees of freedom), with
-/// the engine's Lagrangians as callables: `\mathcal{L}_{\text{disc}}([x],h)` (and `mesh`,
+/// the engine's Lagrangians as callables: `\\mathcal{L}_{\\text{disc}}([x],h)` (and `mesh`,
 /// `mod,k`) stand for the engine's L_disc, L_mesh and L_mod,k (Vermeeren's names).
 JetNotation engine_notation(modified::Engine& E, const std::string& curve = "x");
 

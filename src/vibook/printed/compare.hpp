@@ -7,7 +7,7 @@
 /// quote into expressions with the check's notation; each is expanded in the step size by the
 /// engine's series arithmetic and compared coefficient by coefficient with the target (the
 /// engine's result, or an exact expression), below the display's own remainder
-/// `\mathcal{O}(h^k)`. Several *cases* (the same display read under several settings, such as
+/// `\\mathcal{O}(h^k)`. Several *cases* (the same display read under several settings, such as
 /// Theorem 10 for four Nyström tableaux) must all agree.
 ///
 /// **Correction search.** When the display does not agree (or means nothing as printed), the

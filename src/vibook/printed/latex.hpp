@@ -2,9 +2,9 @@
 /// \brief A reader for the LaTeX of the papers' displayed formulas: it turns a display, as
 /// printed, into GiNaC expressions, so that no printed formula is ever retyped by hand.
 ///
-/// The reader knows the grammar of the LaTeX subset the three papers use (`\frac`, `\left(`,
-/// `\sqrt`, sub- and superscripts, primes, dots, `\langle a, b \rangle`, `|x|`, `[a, b]^\top`,
-/// `\begin{bmatrix}`, `\sum_{i=1}^s`, `\mathcal{O}(h^k)`, `\frac{d}{dt}`, `\frac{\partial}{\partial
+/// The reader knows the grammar of the LaTeX subset the three papers use (`\\frac`, `\\left(`,
+/// `\\sqrt`, sub- and superscripts, primes, dots, `\\langle a, b \\rangle`, `|x|`, `[a, b]^\\top`,
+/// `\\begin{bmatrix}`, `\\sum_{i=1}^s`, `\\mathcal{O}(h^k)`, `\\frac{d}{dt}`, `\\frac{\\partial}{\\partial
 /// x_i}`, chains `A = B = C`, `aligned` environments) and nothing of what the symbols mean. That
 /// is a *notation* (notation.hpp): one per paper and setting, it says that `U''` is the Hessian
 /// of the potential, `x^{(3)}` the third derivative of the curve, `V_{qq}` a second derivative,
@@ -13,18 +13,18 @@
 /// Values are tensors (scalars, vectors, matrices, three-tensors) with GiNaC components.
 /// Juxtaposition multiplies: a scalar scales; a vector times a vector is their contraction
 /// (Vermeeren's U'ẍ is ⟨∇U, ẍ⟩); a matrix times a vector is the product; a derivative tensor
-/// followed by an argument list, `U''(\dot{x}, \dot{x})` or `\phi_{xx}\langle\dot{x},\dot{x}
-/// \rangle`, is applied to its arguments (contracted slot by slot).
+/// followed by an argument list, `U''(\\dot{x}, \\dot{x})` or `\\phi_{xx}\\langle\\dot{x},\\dot{x}
+/// \\rangle`, is applied to its arguments (contracted slot by slot).
 ///
 /// Reading rules the papers need, stated once:
-/// - An operator (`\frac{d}{dt}`, `\frac{\partial}{\partial x_1}`, `\nabla`) applies to the
+/// - An operator (`\\frac{d}{dt}`, `\\frac{\\partial}{\\partial x_1}`, `\\nabla`) applies to the
 ///   product of the factors that follow it in its term.
-/// - `\sum_{i=1}^{s}` sums the term that follows it; a later term of the same bracket that uses
+/// - `\\sum_{i=1}^{s}` sums the term that follows it; a later term of the same bracket that uses
 ///   the summation index is summed over it too (Shen & Sun's Theorem 10 writes one sum over two
 ///   lines).
-/// - `\mathcal{O}(h^k)` marks the display's remainder: it is zero, and the display is compared
-///   below h^k only. `\dots` in a sum is zero (the check says to which order it compares).
-/// - A comma or full stop at the end, `\quad` and the equation tag are not part of the formula.
+/// - `\\mathcal{O}(h^k)` marks the display's remainder: it is zero, and the display is compared
+///   below h^k only. `\\dots` in a sum is zero (the check says to which order it compares).
+/// - A comma or full stop at the end, `\\quad` and the equation tag are not part of the formula.
 ///
 /// Two kinds of failure are kept apart: ReadError (the reader cannot read the text: a
 /// limitation of ours, reported as "not compared") and IllFormed (the text reads, but means
@@ -107,7 +107,7 @@ struct Atom {
   std::vector<std::string> accents;
   int primes = 0;
   std::optional<std::vector<Token>> sub, sup;
-  /// The atom printed back, for messages ("\dot{x}_1").
+  /// The atom printed back, for messages ("\\dot{x}_1").
   std::string text() const;
   bool has_accent(std::string_view a) const;
   /// The subscript's tokens as one string of their texts ("xx", "1", "ij", "text{disc}").
@@ -155,7 +155,7 @@ class Notation {
   virtual const std::vector<GiNaC::symbol>& point() const = 0;
   /// The expansion point of fields: the jet x (its value at the curve).
   virtual std::vector<ex> expansion_point() const = 0;
-  /// The step symbol whose powers `\mathcal{O}(…)` counts (h, or Δa).
+  /// The step symbol whose powers `\\mathcal{O}(…)` counts (h, or Δa).
   virtual GiNaC::symbol step() const = 0;
   /// The curve `curve` at time `time` (an expression in time_symbol() and the step), with
   /// `derivative` derivatives; the reader applies a curve this way.
@@ -164,18 +164,18 @@ class Notation {
   virtual GiNaC::symbol time_symbol() const;
   /// The total time derivative (d/dt) of a value, `times` times; ReadError by default.
   virtual Value time_derivative(const Value& v, const std::string& variable, int times) const;
-  /// ∂v/∂(atom) for an atom of the denominator of `\frac{\partial …}{\partial …}`.
+  /// ∂v/∂(atom) for an atom of the denominator of `\\frac{\\partial …}{\\partial …}`.
   virtual Value partial(const Value& v, const Atom& wrt) const;
   /// How many terms of a Taylor expansion a point evaluation keeps (powers of the step), and
   /// the last index of a sum to ∞.
   virtual int cap() const { return 8; }
-  /// The sign that `\pm` stands for in this reading (+1 or −1; `\mp` the other one). A display
+  /// The sign that `\\pm` stands for in this reading (+1 or −1; `\\mp` the other one). A display
   /// with ± is read once per sign.
   virtual int pm() const { return 0; }
   /// A field applied to one argument of its dimension is evaluated there, wherever that is
   /// (displays in discrete variables); otherwise only near the jet point.
   virtual bool points_anywhere() const { return false; }
-  /// The range of a summation index written without limits (\sum_j): nullopt if unknown.
+  /// The range of a summation index written without limits (\\sum_j): nullopt if unknown.
   virtual std::optional<std::pair<int, int>> index_range(char) const { return std::nullopt; }
   /// Symbols that a correction's factor may contain besides numbers (the step h, the speed of
   /// light c): a term multiplied by c^-2 is a correction, one multiplied by x_1 is not.

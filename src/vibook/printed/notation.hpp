@@ -1,21 +1,21 @@
 /// \file notation.hpp
-/// \brief The papers' notation over the engine's jet space: what `x`, `\dot{x}`, `x^{(3)}`,
-/// `U''`, `\phi_{xx}`, `\phi^{[1]}`, `V_{qq}`, `q'`, `h` and `\Delta a` mean, set up per paper
+/// \brief The papers' notation over the engine's jet space: what `x`, `\\dot{x}`, `x^{(3)}`,
+/// `U''`, `\\phi_{xx}`, `\\phi^{[1]}`, `V_{qq}`, `q'`, `h` and `\\Delta a` mean, set up per paper
 /// and setting by the check that compares a display.
 ///
 /// A JetNotation is configured with
 /// - *curves*: a letter and the degrees of freedom of the jet space it covers (`x` all of
 ///   them, as a vector; Sharma's `q` and `t` one each). Its derivatives are written with dots
-///   (`\dot{x}`, `\ddot{x}`), primes (`q'''`), or `x^{(k)}`; a digit subscript picks a
-///   component (`\dot{x}_2`); a step subscript (`x_j`, `x_{j+1}`, with the letter given by
+///   (`\\dot{x}`, `\\ddot{x}`), primes (`q'''`), or `x^{(k)}`; a digit subscript picks a
+///   component (`\\dot{x}_2`); a step subscript (`x_j`, `x_{j+1}`, with the letter given by
 ///   discrete_index) is the curve at t + (offset)·h; applied to a time, `x(t+h)` is the curve's
 ///   Taylor series there.
 /// - *fields*: a name (`U`, `phi`, `V`, `f`), an optional superscript that selects it
 ///   (`[1]`), and the scalar function as an expression in the point symbols (an abstract
 ///   function of the engine, or a concrete potential). Derivatives are written with primes,
-///   `^{(k)}`, `\nabla`, or a subscript repeating the position letter (`\phi_{xx}`, `V_{qq}`).
-/// - *constants* and *callables* by the exact text of the atom (`m`, `\alpha`, `\lambda`,
-///   `\text{EL}`).
+///   `^{(k)}`, `\\nabla`, or a subscript repeating the position letter (`\\phi_{xx}`, `V_{qq}`).
+/// - *constants* and *callables* by the exact text of the atom (`m`, `\\alpha`, `\\lambda`,
+///   `\\text{EL}`).
 ///
 /// Chapter: \ref formulas.
 #pragma once
@@ -79,7 +79,7 @@ class JetNotation : public Notation {
   /// An atom `base` with a subscript read as an expression (B_{2i} in a sum over i): the value
   /// f(subscript).
   JetNotation& indexed(const std::string& base, std::function<Value(const ex&)> f);
-  /// An atom written `text` with any subscript (\hat{b}_i, \bar{a}_{ij}, c_i): the value
+  /// An atom written `text` with any subscript (\\hat{b}_i, \\bar{a}_{ij}, c_i): the value
   /// f(atom, reader), which reads the subscript's index letters through Reader::bound.
   JetNotation& subscripted(const std::string& text,
                            std::function<Value(const Atom&, const Reader&)> f);
@@ -90,7 +90,7 @@ class JetNotation : public Notation {
   /// A field applied to one argument is evaluated there, wherever that is (displays in
   /// discrete variables); by default only arguments near the jet point are points.
   JetNotation& anywhere(bool on = true);
-  /// The range of an index letter summed without limits (\sum_j).
+  /// The range of an index letter summed without limits (\\sum_j).
   JetNotation& index_range(char letter, int from, int to);
   std::optional<std::pair<int, int>> index_range(char letter) const override;
   /// A symbol a correction's factor may contain (besides the step).

@@ -6,7 +6,7 @@
 /// A *display* is one `$$…$$` block of the paper file, or a run of such blocks that the paper
 /// breaks over several lines (a block that starts with `=`, `+`, `−`, `±` or a relation and
 /// carries no number of its own continues the one before it). Its number is read from the
-/// paper's own text: a tag at the end of the block (`\quad (39)`, `\tag{21}`, `(\text{A1})`),
+/// paper's own text: a tag at the end of the block (`\\quad (39)`, `\\tag{21}`, `(\\text{A1})`),
 /// or a line `(22)` or `<sup>(20)</sup>` right after it, or a text line right after it that
 /// ends with the number; a number is accepted only where it continues the paper's sequence.
 ///
