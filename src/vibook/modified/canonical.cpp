@@ -32,6 +32,8 @@ struct Term {
 
 Term split(const ex& e);
 std::string print(const ex& e, Format f);
+std::string print_factor(const ex& x, Format f);
+bool flipped(const ex& sum);
 
 // The sort key of a term: its monomial in text form, then its coefficient.
 struct Keyed {
@@ -41,7 +43,7 @@ struct Keyed {
 
 std::string monomial_text(const Term& t) {
   std::string s;
-  for (const auto& x : t.factors) s += (s.empty() ? "" : "*") + print(x, Format::text);
+  for (const auto& x : t.factors) s += (s.empty() ? "" : "*") + print_factor(x, Format::text);
   return s;
 }
 
@@ -55,6 +57,23 @@ std::vector<ex> sorted(std::vector<Keyed> v) {
   return out;
 }
 
+// The sign of a sum inside a product is GiNaC's choice, made in the same hash order that
+// changes from run to run: (t0 − t1)² in one run is (t1 − t0)² in the next, and GiNaC turns
+// any power built with the other sign back into its own. So the sign is fixed when printing:
+// a sum standing as a factor, or as the base of an integer power, is printed with the sign
+// that makes its first term in canonical order positive (flipped()), and the term's
+// coefficient takes the sign this costs: −1 for a sum, (−1)^n for a power n (factor_sign()).
+bool int_power_of_sum(const ex& x) {
+  return GiNaC::is_a<GiNaC::power>(x) && GiNaC::is_a<GiNaC::add>(x.op(0)) &&
+         GiNaC::is_a<numeric>(x.op(1)) && GiNaC::ex_to<numeric>(x.op(1)).is_integer();
+}
+
+numeric factor_sign(const ex& x) {
+  if (GiNaC::is_a<GiNaC::add>(x)) return flipped(x) ? -1 : 1;
+  if (int_power_of_sum(x) && flipped(x.op(0)) && GiNaC::ex_to<numeric>(x.op(1)).is_odd()) return -1;
+  return 1;
+}
+
 Term split(const ex& e) {
   Term t;
   if (GiNaC::is_a<numeric>(e)) {
@@ -62,6 +81,7 @@ Term split(const ex& e) {
     return t;
   }
   if (!GiNaC::is_a<GiNaC::mul>(e)) {
+    if (!GiNaC::is_a<GiNaC::add>(e)) t.coeff *= factor_sign(e);
     t.factors.push_back(e);
     return t;
   }
@@ -71,7 +91,8 @@ Term split(const ex& e) {
     if (GiNaC::is_a<numeric>(x)) {
       t.coeff *= GiNaC::ex_to<numeric>(x);
     } else {
-      fs.push_back({print(x, Format::text), "", x});
+      t.coeff *= factor_sign(x);
+      fs.push_back({print_factor(x, Format::text), "", x});
     }
   }
   t.factors = sorted(std::move(fs));
@@ -98,7 +119,7 @@ std::string paren(const std::string& s, Format f) {
 std::string product(const std::vector<ex>& factors, Format f) {
   std::string s;
   for (const auto& x : factors) {
-    std::string p = print(x, f);
+    std::string p = print_factor(x, f);
     if (needs_parens_as_factor(x)) p = paren(p, f);
     if (!s.empty()) s += f == Format::latex ? " " : "*";
     s += p;
@@ -123,7 +144,8 @@ std::string print_term(const Term& t, Format f) {
     const numeric cn = abs(c.numer()), cd = c.denom();
     // A lone sum above the bar needs no parentheses.
     const bool lone_sum = num.size() == 1 && cn == 1 && GiNaC::is_a<GiNaC::add>(num[0]);
-    std::string top = lone_sum ? print(num[0], f) : product(num, f), bottom = product(den, f);
+    std::string top = lone_sum ? print_factor(num[0], f) : product(num, f),
+                bottom = product(den, f);
     if (cn != 1) top = numeric_text(cn, f) + (top.empty() ? "" : " " + top);
     if (cd != 1) bottom = numeric_text(cd, f) + (bottom.empty() ? "" : " " + bottom);
     if (top.empty()) top = "1";
@@ -160,18 +182,10 @@ std::string print(const ex& e, Format f) {
   if (GiNaC::is_a<GiNaC::mul>(e)) return print_term(split(e), f);
   if (GiNaC::is_a<GiNaC::power>(e)) {
     const ex b = e.op(0), x = e.op(1);
-    std::string base = print(b, f);
-    if (needs_parens_as_base(b)) base = paren(base, f);
-    if (f == Format::latex) {
-      if (x.is_equal(GiNaC::numeric(1, 2))) return "\\sqrt{" + print(b, f) + "}";
-      if (GiNaC::is_a<numeric>(x) && GiNaC::ex_to<numeric>(x).is_negative())
-        return print_term(split(e), f);
-      return base + "^{" + print(x, f) + "}";
-    }
-    std::string expo = print(x, f);
-    const bool plain = GiNaC::is_a<numeric>(x) && GiNaC::ex_to<numeric>(x).is_pos_integer();
-    if (!plain) expo = "(" + expo + ")";
-    return base + (f == Format::python ? "**" : "^") + expo;
+    if (f == Format::latex && GiNaC::is_a<numeric>(x) && GiNaC::ex_to<numeric>(x).is_negative())
+      return print_term(split(e), f);
+    const std::string sign = factor_sign(e) == -1 ? "-" : "";
+    return sign + print_factor(e, f);
   }
   if (GiNaC::is_a<GiNaC::function>(e)) {
     const std::string name = GiNaC::ex_to<GiNaC::function>(e).get_name();
@@ -193,6 +207,34 @@ std::string print(const ex& e, Format f) {
   else
     os << GiNaC::dflt << e;
   return os.str();
+}
+
+}  // namespace
+
+namespace {
+
+bool flipped(const ex& sum) {
+  const std::vector<ex> ops = canonical_operands(sum);
+  return !ops.empty() && split(ops.front()).coeff.is_negative();
+}
+
+// A factor of a term: a sum, or the base of an integer power of a sum, with the sign
+// flipped() chooses (the coefficient has taken its cost); anything else as print() has it.
+std::string print_factor(const ex& e, Format f) {
+  if (GiNaC::is_a<GiNaC::add>(e)) return print(flipped(e) ? ex(GiNaC::expand(-e)) : e, f);
+  if (!GiNaC::is_a<GiNaC::power>(e)) return print(e, f);
+  const ex x = e.op(1);
+  const ex b = int_power_of_sum(e) && flipped(e.op(0)) ? ex(GiNaC::expand(-e.op(0))) : e.op(0);
+  std::string base = print(b, f);
+  if (needs_parens_as_base(b)) base = paren(base, f);
+  if (f == Format::latex) {
+    if (x.is_equal(GiNaC::numeric(1, 2))) return "\\sqrt{" + print(b, f) + "}";
+    return base + "^{" + print(x, f) + "}";
+  }
+  std::string expo = print(x, f);
+  const bool plain = GiNaC::is_a<numeric>(x) && GiNaC::ex_to<numeric>(x).is_pos_integer();
+  if (!plain) expo = "(" + expo + ")";
+  return base + (f == Format::python ? "**" : "^") + expo;
 }
 
 }  // namespace

@@ -469,12 +469,14 @@ claims::FormulaComparison compare(const Spec& spec, const std::vector<Case>& cas
     out.detail = e.what();
     return out;
   }
-  // Our side, as LaTeX (the first case's target).
+  // Our side, as LaTeX (the first case's target), expanded: the unexpanded form's shape (which
+  // products GiNaC multiplied out on the way) depends on the order the symbols were made in,
+  // which differs between runs when checks run in parallel; the expanded form does not.
   if (!cases.empty()) {
     const Target& t = cases[0].target;
     std::vector<std::string> comps;
     if (t.series.empty()) {
-      for (const auto& e : t.exact) comps.push_back(latex(e));
+      for (const auto& e : t.exact) comps.push_back(latex(GiNaC::expand(e)));
       out.through = "exactly";
     } else {
       const GiNaC::symbol h = cases[0].notation->jets().h();
@@ -482,6 +484,7 @@ claims::FormulaComparison compare(const Spec& spec, const std::vector<Case>& cas
         std::vector<ex> c = s;
         if (t.through >= 0 && static_cast<int>(c.size()) > t.through + 1)
           c.resize(static_cast<std::size_t>(t.through) + 1);
+        for (auto& x : c) x = GiNaC::expand(x);
         comps.push_back(modified::format_series(c, h, modified::Format::latex));
       }
     }
