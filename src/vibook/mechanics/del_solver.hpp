@@ -22,8 +22,13 @@ namespace vibook {
 /// Each step reports the residual |p_k + D1 L_d|_inf at the returned q_{k+1} and the number
 /// of Newton iterations; a step that does not converge throws SolveError.
 ///
-/// The first Newton guess is q_k + h p_k (exact to O(h²) for unit mass); later guesses
-/// reuse the previous increment q_k − q_{k−1}.
+/// The Newton guess: the previous increment, q_k + (q_k − q_{k−1}), when the q passed in is
+/// the one the previous step returned; otherwise q_k + h p_k. The latter is right to O(h²)
+/// only for the kinetic energy ½|v|² (unit mass): for a mass matrix M it is off by
+/// h (M⁻¹ − I) p_k, and Newton starts from there (a poor start for a heavy or light mass
+/// shows as more iterations in the SolveReport, or a SolveError). A state changed by hand, or
+/// one moved between integrators, is detected by comparing q with the last one returned, so
+/// reset() is needed only to force the q + h p guess.
 template <int N, class DiscreteLagrangian>
 class DelIntegrator {
  public:
@@ -34,6 +39,7 @@ class DelIntegrator {
 
   /// Advance (q, p) by one step of size h. Throws SolveError if Newton fails.
   SolveReport step(Vec<double, N>& q, Vec<double, N>& p, double h) {
+    if (have_increment_ && q != last_q_) have_increment_ = false;  // not our last state
     Vec<double, N> q1 =
         have_increment_ ? Vec<double, N>(q + increment_) : Vec<double, N>(q + h * p);
     const Vec<double, N> q0 = q;
@@ -48,10 +54,12 @@ class DelIntegrator {
     increment_ = q1 - q0;
     have_increment_ = true;
     q = q1;
+    last_q_ = q1;
     return rep;
   }
 
-  /// Forget the previous increment (call after changing the state by hand).
+  /// Forget the previous increment: the next guess is q + h p. (A state that is not the last
+  /// one returned is detected without it.)
   void reset() { have_increment_ = false; }
 
   /// Discrete Legendre map p_k = −D1 L_d(q_k, q_{k+1}, h)   (Vermeeren (5), first half).
@@ -90,6 +98,7 @@ class DelIntegrator {
   DiscreteLagrangian Ld_;
   NewtonOptions options_;
   Vec<double, N> increment_ = Vec<double, N>::Zero();
+  Vec<double, N> last_q_ = Vec<double, N>::Zero();
   bool have_increment_ = false;
 };
 
