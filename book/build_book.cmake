@@ -85,6 +85,27 @@ if(NOT rc EQUAL 0)
   message(FATAL_ERROR "vibook verify failed (exit ${rc}); see ${GEN}/verify-cli.txt")
 endif()
 file(COPY ${FIGS}/verify-report/verify-report.svg DESTINATION ${IMAGES})
+# Three more for the chapter: a wrong discrete Lagrangian (the kinetic term doubled), which must
+# fail with status 5; symplectic Euler, first order, with its modified Hamiltonian; a
+# fourth-order method whose --h-list reaches the round-off plateau.
+function(vibook_verify_case out want)
+  execute_process(COMMAND ${VIBOOK} verify ${ARGN} OUTPUT_FILE ${GEN}/${out}
+                  ERROR_VARIABLE err RESULT_VARIABLE rc)
+  if(NOT rc EQUAL want)
+    message(FATAL_ERROR "vibook verify (${out}) exited ${rc}, expected ${want}: ${err}")
+  endif()
+endfunction()
+vibook_verify_case(verify-wrong-kinetic.txt 5
+                   --ld "h*((q1-q0)^2/h^2 - (V(q0)+4*V((q0+q1)/2)+V(q1))/6)"
+                   --potential "x^2/2+y^2/2+x^2*y-y^3/3" --q0 0,0.1 --p0 0.35,0
+                   --modified-order 0)
+vibook_verify_case(verify-euler.txt 0
+                   --ld "h*( ((q1-q0)/h)^2/2 - V(q1) )" "--potential=-cos(x)" --q0 1 --p0 0.5
+                   --expected-order 1 --h 0.005 --steps 20000 --modified-order 1)
+vibook_verify_case(verify-order4.txt 0
+                   --ld "h*( ((q1-q0)/h)^2/2*(1 + h^2/12*(cos(q0[1])+cos(q1[1]))) - (V(q0)+V(q1))/2 - h^2/48*(grad(V)(q0)^2 + grad(V)(q1)^2) )"
+                   "--potential=-cos(x)" --q0 1 --p0 0.5 --expected-order 4 --modified-order 2
+                   --h-list 0.2,0.1,0.05,0.025,0.0125,0.00625,0.003125,0.0015625,0.00078125,0.000390625)
 
 # 3. Benchmarks: the table of the last `./build.sh bench` run, or of a run made now when
 #    VIBOOK_BOOK_BENCH is set (./build.sh book sets it; the test build does not).

@@ -3,11 +3,20 @@
 
 #include <CLI/CLI.hpp>
 
+#include <string>
+
 namespace vibook::cli {
 
 /// Exit statuses of the command: 0 success, 1 other failure (e.g. gnuplot missing),
 /// 2 bad argument, 3 numerical failure, 4 an output could not be written.
-enum Exit : int { kOk = 0, kFailure = 1, kBadArgument = 2, kNumerical = 3, kIo = 4 };
+/// Exit statuses, the same for every command (README). kVerdict: `vibook verify` ran to the
+/// end and a verdict failed (the report names which).
+enum Exit : int { kOk = 0, kFailure = 1, kBadArgument = 2, kNumerical = 3, kIo = 4, kVerdict = 5 };
+
+/// The command line as the user typed it (shell-quoted where needed), for reports.
+const std::string& command_line();
+/// Record it (main does, before parsing).
+void set_command_line(int argc, char** argv);
 
 /// Register `vibook run` on the app; the returned function executes it after parsing.
 std::function<int()> add_run_command(CLI::App& app);

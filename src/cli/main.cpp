@@ -215,11 +215,39 @@ constexpr const char* kCommands[] = {"list", "figure",   "figures", "claims",
 
 }  // namespace
 
+namespace vibook::cli {
+namespace {
+std::string& command_line_storage() {
+  static std::string s;
+  return s;
+}
+}  // namespace
+const std::string& command_line() { return command_line_storage(); }
+void set_command_line(int argc, char** argv) {
+  std::string s = "vibook";
+  for (int i = 1; i < argc; ++i) {
+    const std::string a = argv[i];
+    const bool plain = !a.empty() && a.find_first_not_of(
+                                         "abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ"
+                                         "0123456789-_.,/=+:") == std::string::npos;
+    if (plain) {
+      s += " " + a;
+    } else {
+      std::string q = "'";
+      for (char c : a) q += c == '\'' ? std::string("'\\''") : std::string(1, c);
+      s += " " + q + "'";
+    }
+  }
+  command_line_storage() = s;
+}
+}  // namespace vibook::cli
+
 int main(int argc, char** argv) {
+  vibook::cli::set_command_line(argc, argv);
   CLI::App app{
       "vibook — variational integrators, checked against their papers.\n"
       "Exit status: 0 success, 1 other failure (gnuplot missing), 2 bad argument, 3 numerical "
-      "failure, 4 an output could not be written."};
+      "failure, 4 an output could not be written, 5 `vibook verify`: a verdict failed."};
   app.set_version_flag("--version", std::string("vibook ") + VIBOOK_VERSION);
   app.require_subcommand(1);
 

@@ -152,7 +152,13 @@ row 2 "--ld"             "${VF[@]}" --ld '(q1-q0)^2/h - h*V(q0)/0' --potential "
 row 2 "--potential"      "${VF[@]}" --ld "$SIMPSON" --potential 'x^2 + t'
 row 2 "--potential"      "${VF[@]}" --ld "$SIMPSON" --potential 'x^2 +'
 row 2 "--dim"            "${VF[@]}" --ld "$SIMPSON" --potential "$HH" --dim 1
-row 2 "--dim"            "${VF[@]}" --ld "$SIMPSON" --potential "$HH" --dim 4
+row 2 "--dim"            "${VF[@]}" --ld "$SIMPSON" --potential "$HH" --dim 7
+row 2 "--dim"            "${VF[@]}" --ld "$SIMPSON" --potential "$HH" --dim 0
+row 2 "--lagrangian"     "${VF[@]}" --ld "$SIMPSON" --potential "$HH" --lagrangian 'v^2/2 - q0'
+row 2 "--lagrangian"     "${VF[@]}" --ld "$SIMPSON" --potential "$HH" --lagrangian 'v^2/2' --hamiltonian 'p^2/2'
+row 2 "--hamiltonian"    "${VF[@]}" --ld "$SIMPSON" --potential "$HH" --hamiltonian 'p^2/2 - v'
+row 2 "--ld"             "${VF[@]}" --ld '(q1-q0)^2/(2*h) - h*q0[7]' --potential "$HH"
+row 2 "--ld"             "${VF[@]}" --ld '(q1-q0)^2/(2*h) - h*grad(W)(q0)' --potential "$HH"
 row 2 "--q0"             "${VF[@]}" --ld "$SIMPSON" --potential "$HH" --q0 1,2,3
 row 2 "--p0"             "${VF[@]}" --ld "$SIMPSON" --potential "$HH" --p0 1,,2
 row 2 "--h-list"         "${VF[@]}" --ld "$SIMPSON" --potential "$HH" --h-list 0.1,0.05

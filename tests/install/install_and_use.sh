@@ -14,7 +14,9 @@ cmake --install "$build" --prefix "$prefix" >"$tmp/install.log" || { cat "$tmp/i
 for f in include/vibook/mechanics/del_solver.hpp include/vibook/modified/engine.hpp \
          include/vibook/core/precision.hpp include/vibook/verify/verify.hpp \
          lib/libvibook_modified.a lib/cmake/vibook/vibookConfig.cmake \
-         lib/cmake/vibook/vibookConfigVersion.cmake lib/pkgconfig/vibook.pc; do
+         lib/cmake/vibook/vibookConfigVersion.cmake lib/pkgconfig/vibook.pc \
+         share/doc/vibook/README.md share/doc/vibook/08-verify.md \
+         share/doc/vibook/examples/henon_heiles_simpson.cpp share/doc/vibook/examples/CMakeLists.txt; do
   [ -e "$prefix/$f" ] || { echo "FAIL: $f not installed"; exit 1; }
 done
 if find "$prefix/include" -name 'checks.hpp' -o -name 'check_*.hpp' -o -name '*_test.cpp' \
@@ -62,6 +64,13 @@ g++ -std=c++20 $flags $(pkg-config --cflags vibook) "$tmp/core_only.cpp" -o "$tm
     $(pkg-config --libs vibook)
 "$tmp/core_only" || { echo "FAIL: core-only program"; exit 1; }
 pkg-config --exists --print-errors vibook-modified vibook-precision
+# The README's line, in its order (the sources before the libraries), on the example with the
+# engine: it must link.
+# shellcheck disable=SC2046,SC2086
+g++ -std=c++20 $flags "$prefix/share/doc/vibook/examples/henon_heiles_simpson.cpp" \
+    $(pkg-config --cflags --libs vibook-modified) -o "$tmp/example_pc" ||
+  { echo "FAIL: the README's pkg-config line does not build the example"; exit 1; }
+"$tmp/example_pc" >/dev/null || { echo "FAIL: the example built by pkg-config"; exit 1; }
 
 # 3. The installed command, with its scripts under the prefix: a verify report with its figure.
 [ -x "$prefix/bin/vibook" ] && [ -f "$prefix/share/vibook/figures/verify-report.gp" ] ||

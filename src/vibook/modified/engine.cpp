@@ -215,7 +215,11 @@ const std::vector<ex>& Engine::l_disc() {
   }
   SeriesEvaluator eval(J, subs, K_ + 3);
   const Series L = eval(dl_.Ld) / Series::h();
-  if (L.prec < K_ + 1) throw std::logic_error("L_disc expansion lost precision");
+  if (L.prec < K_ + 1)
+    throw std::logic_error("the expansion of h^-1 L_d in h is known only to O(h^" +
+                           std::to_string(L.prec) + "), short of the O(h^" +
+                           std::to_string(K_ + 1) +
+                           ") asked for: L_d has powers of h below h^1 (is L_d ≈ h·L?)");
   if (L.valuation() < 0)
     throw NumericalError(
         "the discrete Lagrangian is not consistent: L_d/h has negative powers of h");
@@ -457,7 +461,10 @@ std::vector<std::vector<ex>> Engine::modified_equation_direct() {
     SeriesEvaluator eb(J, back, K_ + 3), ef(J, fwd, K_ + 3);
     const Series psi = (eb(dl_.Ld.diff(dl_.q1[i])) + ef(dl_.Ld.diff(dl_.q0[i]))) / Series::h();
     if (psi.prec < K_ + 1)
-      throw std::logic_error("discrete Euler–Lagrange expansion lost precision");
+      throw std::logic_error(
+          "the discrete Euler–Lagrange expression's expansion in h is known only to O(h^" +
+          std::to_string(psi.prec) + "), short of the O(h^" + std::to_string(K_ + 1) +
+          ") asked for: L_d has powers of h below h^1");
     if (psi.valuation() < 0)
       throw NumericalError("the discrete Euler–Lagrange expression has negative powers of h");
     for (int k = 0; k <= K_; ++k) E[k][i] = GiNaC::expand(psi.coeff(k));

@@ -61,12 +61,19 @@ GiNaC::numeric parse_rational(const std::string& s, const std::string& argument)
 // term   := unary (('*' | '/') unary)*
 // unary  := ('+' | '-') unary | power
 // power  := primary ('^' unary)?
-// primary:= number | name | name '(' expr ')' | '(' expr ')'
+// primary:= number | name | name '[' integer ']' | name '(' expr ')' | 'grad(V)(' expr ')'
+//         | '[' expr (',' expr)* ']' | '(' expr ')'
 class TypedDiscreteLagrangian::Parser {
  public:
-  Parser(TypedDiscreteLagrangian& owner, const std::string& text, std::string argument,
-         bool potential)
-      : o_(owner), text_(text), arg_(std::move(argument)), potential_(potential) {}
+  enum class Kind { potential, ld, lagrangian, hamiltonian };
+
+  Parser(TypedDiscreteLagrangian& owner, const std::string& text, std::string argument, Kind kind,
+         bool have_potential)
+      : o_(owner),
+        text_(text),
+        arg_(std::move(argument)),
+        kind_(kind),
+        have_potential_(have_potential) {}
 
   int parse() {
     if (text_.find_first_not_of(" \t") == std::string::npos) throw ArgumentError(arg_, "is empty");
@@ -82,11 +89,11 @@ class TypedDiscreteLagrangian::Parser {
     if (pos_ < text_.size()) fail("unexpected '" + std::string(1, text_[pos_]) + "'");
     return root;
   }
-  int used_coordinates() const { return used_; }
-  bool uses(TypedDiscreteLagrangian::Op op) const {
-    return std::any_of(o_.nodes_.begin() + first_, o_.nodes_.end(),
-                       [&](const Node& n) { return n.op == op; });
-  }
+  /// The dimension the text needs (coordinates x, y, z; component indices), 0 if none.
+  int needs() const { return needs_; }
+  /// The lengths of the vectors written out.
+  const std::vector<int>& literal_lengths() const { return literals_; }
+  bool uses_slot(int slot) const { return slots_used_[static_cast<std::size_t>(slot)]; }
 
  private:
   using Op = TypedDiscreteLagrangian::Op;
@@ -107,7 +114,7 @@ class TypedDiscreteLagrangian::Parser {
     }
     return false;
   }
-  const Node& node(int i) const { return o_.nodes_[i]; }
+  const Node& node(int i) const { return o_.nodes_[static_cast<std::size_t>(i)]; }
   int make(Op op, int a, int b, bool vector) {
     Node n;
     n.op = op;
@@ -228,9 +235,36 @@ class TypedDiscreteLagrangian::Parser {
       if (!eat(')')) fail("expected ')'");
       return inner;
     }
+    if (c == '[') return literal();
     if (std::isdigit(static_cast<unsigned char>(c)) || c == '.') return number();
     if (std::isalpha(static_cast<unsigned char>(c)) || c == '_') return name();
     fail("unexpected '" + std::string(1, c) + "'");
+  }
+
+  // [a, b, …]: a vector written out, one scalar per component.
+  int literal() {
+    const std::size_t start = pos_;
+    ++pos_;
+    Node n;
+    n.op = Op::literal;
+    n.vector = true;
+    for (;;) {
+      const int item = expr();
+      if (node(item).vector) {
+        pos_ = start;
+        fail("a written vector [a, b, …] has scalar entries");
+      }
+      n.items.push_back(item);
+      if (eat(',')) continue;
+      if (eat(']')) break;
+      fail("expected ',' or ']'");
+    }
+    if (static_cast<int>(n.items.size()) > kMaxDim) {
+      pos_ = start;
+      fail("a vector has at most " + std::to_string(kMaxDim) + " components");
+    }
+    literals_.push_back(static_cast<int>(n.items.size()));
+    return o_.add_node(n);
   }
 
   int number() {
@@ -265,7 +299,67 @@ class TypedDiscreteLagrangian::Parser {
       pos_ = start;
       fail("'" + token + "' is beyond the range of double");
     }
+    // num/den when both are integers a double holds exactly (|·| < 2^53)
+    const GiNaC::numeric limit("9007199254740992");  // 2^53
+    if (n.exact.is_rational() && abs(n.exact.numer()) < limit && n.exact.denom() < limit) {
+      n.fraction = true;
+      n.num = n.exact.numer().to_double();
+      n.den = n.exact.denom().to_double();
+    }
     return o_.add_node(n);
+  }
+
+  // The vector variables of this text: name → slot.
+  int slot_of(const std::string& id) const {
+    switch (kind_) {
+      case Kind::potential:
+        return id == "q" ? kX : -1;
+      case Kind::ld:
+        return id == "q0" ? kQ0 : id == "q1" ? kQ1 : -1;
+      case Kind::lagrangian:
+        return id == "q" ? kQ : id == "v" ? kV : -1;
+      case Kind::hamiltonian:
+        return id == "q" ? kQ : id == "p" ? kP : -1;
+    }
+    return -1;
+  }
+  std::string symbols() const {
+    switch (kind_) {
+      case Kind::potential:
+        return "the potential is a function of x, y, z, or of the vector q and its components "
+               "q[1], q[2], …";
+      case Kind::ld:
+        return "the discrete Lagrangian is a function of q0, q1 (and q0[1], …), h, V(...) and "
+               "grad(V)(...)";
+      case Kind::lagrangian:
+        return "the Lagrangian is a function of q, v (and q[1], v[1], …), V(...) and "
+               "grad(V)(...)";
+      case Kind::hamiltonian:
+        return "the Hamiltonian is a function of q, p (and q[1], p[1], …), V(...) and "
+               "grad(V)(...)";
+    }
+    return {};
+  }
+
+  // The argument of V(...) or grad(V)(...): a vector.
+  int vector_argument(const std::string& what, std::size_t start) {
+    const int a = expr();
+    if (!eat(')')) fail("expected ')' after the argument of " + what);
+    if (!node(a).vector) {
+      pos_ = start;
+      fail(what + " takes a vector (q0, q1, (q0+q1)/2, …)");
+    }
+    return a;
+  }
+  void need_potential(const std::string& what, std::size_t start) {
+    if (kind_ == Kind::potential) {
+      pos_ = start;
+      fail("unknown function '" + what + "' (sin cos exp log sqrt)");
+    }
+    if (!have_potential_) {
+      pos_ = start;
+      fail(what + " is used but no --potential was given");
+    }
   }
 
   int name() {
@@ -275,23 +369,35 @@ class TypedDiscreteLagrangian::Parser {
       ++pos_;
     const std::string id = text_.substr(start, pos_ - start);
     const std::size_t after = pos_;
+    // grad(V)(u)
+    if (id == "grad") {
+      skip();
+      const bool form = eat('(') && eat('V') && eat(')') && eat('(');
+      if (!form) {
+        pos_ = start;
+        fail("write the gradient of the potential as grad(V)(u)");
+      }
+      need_potential("grad(V)", start);
+      const int a = vector_argument("grad(V)", start);
+      return make(Op::gradient_call, a, -1, true);
+    }
     if (eat('(')) {
       const bool known = id == "sin" || id == "cos" || id == "exp" || id == "log" || id == "sqrt" ||
-                         (id == "V" && !potential_);
+                         (id == "V" && kind_ != Kind::potential);
       if (!known) {
         pos_ = start;
         fail("unknown function '" + id + "' (" +
-             (potential_ ? "sin cos exp log sqrt" : "V, sin cos exp log sqrt") + ")");
+             (kind_ == Kind::potential ? "sin cos exp log sqrt"
+                                       : "V, grad(V), sin cos exp log sqrt") +
+             ")");
+      }
+      if (id == "V") {
+        need_potential("V", start);
+        const int a = vector_argument("V", start);
+        return make(Op::potential_call, a, -1, false);
       }
       const int a = expr();
       if (!eat(')')) fail("expected ')' after the argument of " + id);
-      if (id == "V") {
-        if (!node(a).vector) {
-          pos_ = start;
-          fail("V takes a vector (q0, q1, (q0+q1)/2, …)");
-        }
-        return make(Op::potential_call, a, -1, false);
-      }
       if (node(a).vector) {
         pos_ = start;
         fail(id + " of a vector");
@@ -308,21 +414,51 @@ class TypedDiscreteLagrangian::Parser {
     }
     pos_ = after;
     Node n;
-    if (!potential_ && (id == "q0" || id == "q1")) {
-      n.op = id == "q0" ? Op::q0 : Op::q1;
-      n.vector = true;
-    } else if (!potential_ && id == "h") {
+    if (const int slot = slot_of(id); slot >= 0) {
+      slots_used_[static_cast<std::size_t>(slot)] = true;
+      skip();
+      if (pos_ < text_.size() && text_[pos_] == '[') {  // a component, counted from 1
+        ++pos_;
+        skip();
+        const std::size_t digits = pos_;
+        while (pos_ < text_.size() && std::isdigit(static_cast<unsigned char>(text_[pos_]))) ++pos_;
+        const std::string k = text_.substr(digits, pos_ - digits);
+        if (k.empty() || k.size() > 2 || !eat(']')) {
+          pos_ = digits;
+          fail("a component is written " + id + "[1], " + id + "[2], …");
+        }
+        const int index = std::stoi(k);
+        if (index < 1 || index > kMaxDim) {
+          pos_ = digits;
+          fail("component " + k + " of " + id + ": components are counted from 1 to at most " +
+               std::to_string(kMaxDim));
+        }
+        n.op = Op::component;
+        n.slot = slot;
+        n.index = index - 1;
+        needs_ = std::max(needs_, index);
+      } else {
+        pos_ = after;
+        n.op = Op::var;
+        n.slot = slot;
+        n.vector = true;
+      }
+    } else if (kind_ == Kind::ld && id == "h") {
       n.op = Op::h;
-    } else if (potential_ && (id == "x" || id == "y" || id == "z")) {
-      n.op = Op::coordinate;
+    } else if (kind_ == Kind::potential && (id == "x" || id == "y" || id == "z")) {
+      n.op = Op::component;
+      n.slot = kX;
       n.index = id == "x" ? 0 : id == "y" ? 1 : 2;
-      used_ = std::max(used_, n.index + 1);
+      needs_ = std::max(needs_, n.index + 1);
+    } else if (id == "t") {
+      pos_ = start;
+      fail(
+          "time t: a time-dependent system is not supported yet (the integrator and the "
+          "reference are autonomous); " +
+          symbols() + " are known");
     } else {
       pos_ = start;
-      fail("unknown symbol '" + id + "' (" +
-           (potential_ ? "the potential is a function of x, y, z"
-                       : "the discrete Lagrangian is a function of q0, q1, h and V(...)") +
-           ")");
+      fail("unknown symbol '" + id + "' (" + symbols() + ")");
     }
     return o_.add_node(n);
   }
@@ -330,30 +466,76 @@ class TypedDiscreteLagrangian::Parser {
   TypedDiscreteLagrangian& o_;
   const std::string& text_;
   std::string arg_;
-  bool potential_;
+  Kind kind_;
+  bool have_potential_;
   std::size_t pos_ = 0;
-  int used_ = 0;
-  std::size_t first_ = o_.nodes_.size();
+  int needs_ = 0;
+  std::vector<int> literals_;
+  std::array<bool, kVars> slots_used_{};
 };
 
 TypedDiscreteLagrangian::TypedDiscreteLagrangian(const std::string& ld,
-                                                 const std::string& potential, int dim) {
-  if (dim < 0 || dim > 3)
-    throw ArgumentError("--dim", "must be 1, 2 or 3, got " + std::to_string(dim));
-  Parser pp(*this, potential, "--potential", true);
-  potential_root_ = pp.parse();
-  const int used = std::max(1, pp.used_coordinates());
-  if (dim == 0) dim = used;
-  if (dim < used)
-    throw ArgumentError("--dim", std::to_string(dim) + " is fewer than the potential's " +
-                                     std::to_string(used) + " coordinates");
+                                                 const std::string& potential, int dim)
+    : TypedDiscreteLagrangian(TypedTexts{ld, potential, "", "", dim}) {}
+
+TypedDiscreteLagrangian::TypedDiscreteLagrangian(const TypedTexts& t) { finish(t); }
+
+void TypedDiscreteLagrangian::finish(const TypedTexts& t) {
+  if (t.dim < 0 || t.dim > kMaxDim)
+    throw ArgumentError(
+        "--dim", "must lie in 1.." + std::to_string(kMaxDim) + ", got " + std::to_string(t.dim));
+  if (!t.lagrangian.empty() && !t.hamiltonian.empty())
+    throw ArgumentError("--hamiltonian",
+                        "give the intended system once: --lagrangian or "
+                        "--hamiltonian, not both");
+  const bool have_potential = !t.potential.empty();
+  if (!have_potential && t.lagrangian.empty() && t.hamiltonian.empty())
+    throw ArgumentError("--potential",
+                        "is required: the intended system is L = |v|^2/2 - V(q) unless "
+                        "--lagrangian or --hamiltonian gives it");
+  int needs = 0;
+  std::vector<std::pair<std::string, int>> literals;  // argument, length
+  auto parse = [&](const std::string& text, const char* arg, Parser::Kind kind) {
+    Parser p(*this, text, arg, kind, have_potential);
+    const int root = p.parse();
+    needs = std::max(needs, p.needs());
+    for (int n : p.literal_lengths()) literals.emplace_back(arg, n);
+    if (nodes_[static_cast<std::size_t>(root)].vector)
+      throw ArgumentError(arg, "is a vector, not a scalar (write u^2 for |u|^2)");
+    return std::pair{root, std::move(p)};
+  };
+  if (have_potential)
+    potential_root_ = parse(t.potential, "--potential", Parser::Kind::potential).first;
+  {
+    auto [root, p] = parse(t.ld, "--ld", Parser::Kind::ld);
+    ld_root_ = root;
+    if (!p.uses_slot(kQ0) || !p.uses_slot(kQ1))
+      throw ArgumentError("--ld", "must depend on both q0 and q1");
+  }
+  if (!t.lagrangian.empty()) {
+    auto [root, p] = parse(t.lagrangian, "--lagrangian", Parser::Kind::lagrangian);
+    lagrangian_root_ = root;
+    if (!p.uses_slot(kV)) throw ArgumentError("--lagrangian", "must depend on the velocity v");
+  }
+  if (!t.hamiltonian.empty()) {
+    auto [root, p] = parse(t.hamiltonian, "--hamiltonian", Parser::Kind::hamiltonian);
+    hamiltonian_root_ = root;
+    if (!p.uses_slot(kP)) throw ArgumentError("--hamiltonian", "must depend on the momentum p");
+  }
+  int dim = std::max(1, needs);
+  for (const auto& [arg, n] : literals) dim = std::max(dim, n);
+  if (t.dim != 0) {
+    if (t.dim < dim)
+      throw ArgumentError("--dim", std::to_string(t.dim) + " is fewer than the " +
+                                       std::to_string(dim) + " the expressions use");
+    dim = t.dim;
+  }
+  for (const auto& [arg, n] : literals)
+    if (n != dim)
+      throw ArgumentError(arg, "a written vector has " + std::to_string(n) +
+                                   " components; the system is " + std::to_string(dim) +
+                                   "-dimensional");
   dim_ = dim;
-  Parser pl(*this, ld, "--ld", false);
-  ld_root_ = pl.parse();
-  if (nodes_[ld_root_].vector)
-    throw ArgumentError("--ld", "is a vector, not a scalar (write u^2 for |u|^2)");
-  if (!pl.uses(Op::q0) || !pl.uses(Op::q1))
-    throw ArgumentError("--ld", "must depend on both q0 and q1");
 }
 
 }  // namespace vibook::verify

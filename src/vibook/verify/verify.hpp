@@ -19,6 +19,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <functional>
 #include <limits>
 #include <stdexcept>
@@ -138,6 +139,59 @@ inline WorkPrecision work_precision(const std::vector<NamedStep>& methods,
       w.error.back().push_back((integrate(m.step, z0, h, T) - reference).lpNorm<Eigen::Infinity>());
   }
   return w;
+}
+
+/// An order fitted where the data show the asymptotic range: the points below `floor` (the
+/// reference's error and the round-off of the state, when known) are left out, and then, from
+/// the smallest h upwards, every point whose error falls by less than half the typical rate
+/// (the median of the local slopes of the points above it) — the round-off plateau, found
+/// from the data, never assumed.
+struct PlateauFit {
+  double slope = std::numeric_limits<double>::quiet_NaN();
+  int points = 0;
+  std::vector<bool> used;  ///< per input point: in the fit
+  double floor = 0;        ///< the floor applied before the plateau search
+  int plateau = 0;         ///< points left out as the plateau (beyond the floor)
+};
+
+/// Fit error ≈ C h^p as described at PlateauFit. `floor` < 0: no floor. At least 3 points
+/// must remain, else slope is NaN and points the number that remained.
+inline PlateauFit fit_order_plateau(const std::vector<double>& h, const std::vector<double>& err,
+                                    double floor) {
+  PlateauFit f;
+  f.floor = floor;
+  f.used.assign(h.size(), false);
+  std::vector<std::size_t> idx;
+  for (std::size_t i = 0; i < h.size(); ++i)
+    if (h[i] > 0 && std::isfinite(err[i]) && err[i] > 0 && err[i] > floor) idx.push_back(i);
+  std::sort(idx.begin(), idx.end(), [&](std::size_t a, std::size_t b) { return h[a] > h[b]; });
+  auto local = [&](std::size_t a, std::size_t b) {
+    return std::log(err[a] / err[b]) / std::log(h[a] / h[b]);
+  };
+  while (idx.size() > 3) {
+    const std::size_t m = idx.size();
+    std::vector<double> slopes;
+    for (std::size_t k = 0; k + 2 < m; ++k) slopes.push_back(local(idx[k], idx[k + 1]));
+    std::sort(slopes.begin(), slopes.end());
+    const double median = slopes[slopes.size() / 2];
+    const double last = local(idx[m - 2], idx[m - 1]);
+    if (median > 0.5 && last < 0.5 * median) {
+      idx.pop_back();
+      ++f.plateau;
+    } else {
+      break;
+    }
+  }
+  f.points = static_cast<int>(idx.size());
+  if (idx.size() < 3) return f;
+  std::vector<double> hh, ee;
+  for (std::size_t i : idx) {
+    hh.push_back(h[i]);
+    ee.push_back(err[i]);
+    f.used[i] = true;
+  }
+  f.slope = fit_order(hh, ee, 0.0, 3).slope;
+  return f;
 }
 
 // -------------------------------------------------------------------------------------------
@@ -278,6 +332,105 @@ inline EnergyBehaviour energy_behaviour(const Step& step, const Observable& H, E
     r.bounded = false;
   }
   return r;
+}
+
+/// The verdict on the energy, by magnitude first and then by trend, with the numbers that
+/// decided it. With r = max |H − H₀| / scale over the run of K steps:
+/// - "blows up": r is not finite;
+/// - "conserved to round-off": r ≤ roundoff_factor·√K·u (u the unit round-off of double);
+/// - "large": r > large_bound, whatever the trend;
+/// - "drifts" (envelope exponent β ≥ 0.75) or "grows" (β ≥ 0.25, a random walk above
+///   round-off);
+/// - "bounded": β < 0.25 and, when a second run at h/2 is given, the error shrinks at least like
+///   h^{p − 1/2} (p the expected order); otherwise "bounded, not O(h^p)".
+/// Passed: "conserved to round-off" and "bounded".
+struct EnergyVerdict {
+  std::string verdict;
+  bool passed = false;
+  double relative = 0;        ///< r
+  double scale = 1;           ///< the energy scale r is relative to
+  double roundoff_bound = 0;  ///< roundoff_factor·√K·u
+  double large_bound = 0;
+  double exponent = std::numeric_limits<double>::quiet_NaN();    ///< β
+  double h_exponent = std::numeric_limits<double>::quiet_NaN();  ///< log2(r(h)/r(h/2))
+  std::string why;  ///< one line: the numbers that decided it
+};
+
+inline EnergyVerdict judge_energy(const EnergyBehaviour& e, double scale, double expected_order,
+                                  double half_step_max_error = -1, double roundoff_factor = 64,
+                                  double large_bound = 1e-2) {
+  EnergyVerdict v;
+  v.scale = scale > 0 ? scale : 1;
+  v.relative = e.max_error / v.scale;
+  v.roundoff_bound =
+      roundoff_factor * std::sqrt(double(e.steps)) * std::numeric_limits<double>::epsilon() / 2;
+  v.large_bound = large_bound;
+  v.exponent = e.exponent;
+  char buf[512];
+  if (!std::isfinite(v.relative)) {
+    v.verdict = "blows up";
+    v.why = "the energy error is not finite";
+    return v;
+  }
+  if (v.relative <= v.roundoff_bound) {
+    v.verdict = "conserved to round-off";
+    v.passed = true;
+    std::snprintf(buf, sizeof buf, "relative error %.2e <= %g*sqrt(K)*u = %.2e (K = %lld)",
+                  v.relative, roundoff_factor, v.roundoff_bound, e.steps);
+    v.why = buf;
+    return v;
+  }
+  if (v.relative > large_bound) {
+    v.verdict = "large";
+    std::snprintf(buf, sizeof buf, "relative error %.3g > %g (envelope exponent %.2f)", v.relative,
+                  large_bound, e.exponent);
+    v.why = buf;
+    // Whatever its trend; but say where the bound would be met if the error shrinks with h.
+    if (half_step_max_error > 0 && e.max_error > 0) {
+      v.h_exponent = std::log2(e.max_error / half_step_max_error);
+      if (v.h_exponent > 0.5) {
+        std::snprintf(buf, sizeof buf,
+                      "; it shrinks like h^%.2f from h to h/2, so it would meet the bound near "
+                      "h = %.2g (--h)",
+                      v.h_exponent, e.h * std::pow(large_bound / v.relative, 1 / v.h_exponent));
+        v.why += buf;
+      }
+    }
+    return v;
+  }
+  if (!(e.exponent < 0.25)) {
+    v.verdict = e.exponent >= 0.75 ? "drifts" : "grows";
+    std::snprintf(buf, sizeof buf,
+                  "envelope exponent %.2f (>= %s), relative error %.2e above round-off %.2e",
+                  e.exponent, e.exponent >= 0.75 ? "0.75: a drift" : "0.25: a random walk",
+                  v.relative, v.roundoff_bound);
+    v.why = buf;
+    return v;
+  }
+  if (half_step_max_error > 0 && e.max_error > 0) {
+    v.h_exponent = std::log2(e.max_error / half_step_max_error);
+    if (v.h_exponent < expected_order - 0.5) {
+      v.verdict = "bounded, not O(h^p)";
+      std::snprintf(buf, sizeof buf,
+                    "no trend (exponent %.2f), but the error shrinks like h^%.2f from h to h/2, "
+                    "not h^%g",
+                    e.exponent, v.h_exponent, expected_order);
+      v.why = buf;
+      return v;
+    }
+  }
+  v.verdict = "bounded";
+  v.passed = true;
+  if (std::isfinite(v.h_exponent))
+    std::snprintf(buf, sizeof buf,
+                  "no trend (envelope exponent %.2f < 0.25), relative error %.2e, shrinking like "
+                  "h^%.2f",
+                  e.exponent, v.relative, v.h_exponent);
+  else
+    std::snprintf(buf, sizeof buf, "no trend (envelope exponent %.2f < 0.25), relative error %.2e",
+                  e.exponent, v.relative);
+  v.why = buf;
+  return v;
 }
 
 }  // namespace vibook::verify

@@ -2,6 +2,11 @@
 // and fail one that has not (Störmer–Verlet against explicit Euler on the pendulum).
 #include "vibook/verify/verify.hpp"
 
+#include <limits>
+
+#include "vibook/core/precision.hpp"
+#include "vibook/verify/reference.hpp"
+
 #include <doctest/doctest.h>
 
 #include "vibook/integrators/kernels.hpp"
@@ -87,4 +92,84 @@ TEST_CASE("verify: Störmer–Verlet passes, explicit Euler fails, on the pendul
     CHECK_THROWS_AS(verify::energy_behaviour(sv_step, pendulum_energy, z0, 0.1, 10),
                     std::invalid_argument);
   }
+}
+
+// --- #24: the order fit, the energy verdict and the reference, each with an input that must
+// fail it ---------------------------------------------------------------------------------
+
+TEST_CASE("fit_order_plateau: the round-off plateau is left out, a wrong order is not hidden") {
+  std::vector<double> h, e4, e1;
+  for (int i = 0; i < 10; ++i) {
+    h.push_back(0.2 / std::pow(2.0, i));
+    // C h^4 down to a plateau of 2e-12 (round-off), with a wobble of a few per cent
+    e4.push_back(std::max(4e-2 * std::pow(h.back(), 4) * (1 + 0.03 * ((i % 3) - 1)), 2e-12));
+    e1.push_back(0.3 * h.back());
+  }
+  const auto fit = verify::fit_order_plateau(h, e4, 3.6e-15);
+  CHECK(std::abs(fit.slope - 4) < 0.1);
+  CHECK(fit.plateau >= 2);
+  CHECK_FALSE(fit.used.back());
+  // without the plateau search the same data give a slope far from 4 (what #24 saw: 1.8)
+  double sx = 0, sy = 0, sxx = 0, sxy = 0;
+  for (std::size_t i = 0; i < h.size(); ++i) {
+    const double x = std::log(h[i]), y = std::log(e4[i]);
+    sx += x, sy += y, sxx += x * x, sxy += x * y;
+  }
+  const double n = double(h.size()), naive = (n * sxy - sx * sy) / (n * sxx - sx * sx);
+  CHECK(std::abs(naive - 4) > 0.5);
+  // a first-order error is fitted as first order, whatever the floor
+  const auto f1 = verify::fit_order_plateau(h, e1, 3.6e-15);
+  CHECK(std::abs(f1.slope - 1) < 0.01);
+  CHECK(f1.plateau == 0);
+}
+
+TEST_CASE("judge_energy: conserved to round-off, bounded, drifts, large, by the numbers") {
+  verify::EnergyBehaviour e;
+  e.steps = 100000;
+  e.h = 0.05;
+  e.exponent = 0.4;  // a random walk of round-off
+  e.max_error = 3.5e-14;
+  auto v = verify::judge_energy(e, 1.0, 2);
+  CHECK(v.verdict == "conserved to round-off");
+  CHECK(v.passed);
+  // the same walk at 1e-9 is not round-off: a growth
+  e.max_error = 1e-9;
+  v = verify::judge_energy(e, 1.0, 2);
+  CHECK(v.verdict == "grows");
+  CHECK_FALSE(v.passed);
+  // a 98 % error is large whatever its trend (Störmer–Verlet at ωh = 1.98)
+  e.exponent = 0.0;
+  e.max_error = 0.98;
+  v = verify::judge_energy(e, 1.0, 2, 0.98 / 4);
+  CHECK(v.verdict == "large");
+  CHECK_FALSE(v.passed);
+  CHECK(v.why.find("h^2.00") != std::string::npos);
+  // bounded and O(h^2): passes; bounded but O(h) when order 2 is claimed: fails
+  e.max_error = 1e-4;
+  CHECK(verify::judge_energy(e, 1.0, 2, 1e-4 / 4).verdict == "bounded");
+  v = verify::judge_energy(e, 1.0, 2, 1e-4 / 2);
+  CHECK(v.verdict == "bounded, not O(h^p)");
+  CHECK_FALSE(v.passed);
+  // a linear drift
+  e.exponent = 1.0;
+  CHECK(verify::judge_energy(e, 1.0, 2).verdict == "drifts");
+  e.max_error = std::numeric_limits<double>::infinity();
+  CHECK(verify::judge_energy(e, 1.0, 2).verdict == "blows up");
+}
+
+TEST_CASE("reference_solution: GBS in double-double against the exact harmonic oscillator") {
+  // y = (q, p), q' = p, p' = -q; q(5) = cos 5 from q(0) = 1, p(0) = 0.
+  const verify::Field<dd_real> f = [](const std::vector<dd_real>& y) {
+    return std::vector<dd_real>{y[1], -y[0]};
+  };
+  const auto r = verify::reference_solution<dd_real>(f, {dd_real(1), dd_real(0)}, 5.0);
+  const dd_real q_exact = cos(dd_real(5));
+  CHECK(std::abs(to_double(r.y[0] - q_exact)) < 1e-28);
+  CHECK(r.error < 1e-25);
+  // a field with a singularity on the way: an error, not a number
+  const verify::Field<dd_real> blow = [](const std::vector<dd_real>& y) {
+    return std::vector<dd_real>{y[0] * y[0]};  // y' = y², y(0) = 1: y = 1/(1 − t)
+  };
+  CHECK_THROWS_AS(verify::reference_solution<dd_real>(blow, {dd_real(1)}, 2.0, 1e-26, 0, 1L << 10),
+                  NumericalError);
 }

@@ -1,0 +1,136 @@
+#!/usr/bin/env bash
+# `vibook verify` never certifies a wrong method (#24). Each row is a discrete Lagrangian whose
+# right answer was worked out by hand: the wrong ones must fail the verdict that should fail,
+# with its one-line reason; the right ones (orders 1, 2 and 4, one of them with --h-list
+# reaching the round-off plateau) must pass. Each row checks the exit status, lines of the
+# text report and the JSON verdict. Usage: verify_verdicts.sh path/to/vibook
+set -u
+V=$1
+tmp=$(mktemp -d)
+trap 'rm -rf "$tmp"' EXIT
+pass=0 fail=0
+ok() { pass=$((pass + 1)); }
+bad() { fail=$((fail + 1)); echo "FAIL: $*"; }
+
+# case NAME STATUS 'FAILED-CHECKS' 'REGEX...' -- ARGS: exit status (0 passes, 5 a verdict
+# failed, with one stderr line naming which), the JSON verdict's failed checks (comma-separated,
+# "" when it passes) and each regex among the report's lines.
+case_() {
+  local name=$1 want=$2 failed=$3; shift 3
+  local pats=()
+  while [ "$1" != "--" ]; do pats+=("$1"); shift; done
+  shift
+  "$V" verify "$@" --json-out "$tmp/v.json" >"$tmp/out" 2>"$tmp/err"
+  local got=$?
+  if [ "$got" != "$want" ]; then
+    bad "$name: exit $got, expected $want: $(cat "$tmp/err") $(cat "$tmp/out")"; return
+  fi
+  if [ "$want" = 0 ]; then
+    [ -s "$tmp/err" ] && { bad "$name: stderr not empty: $(cat "$tmp/err")"; return; }
+  elif [ "$(wc -l <"$tmp/err")" != 1 ] || ! grep -q "^vibook: " "$tmp/err"; then
+    bad "$name: want one stderr line, got: $(cat "$tmp/err")"; return
+  fi
+  for p in "${pats[@]}"; do
+    grep -Eq -- "$p" "$tmp/out" || { bad "$name: report lacks /$p/: $(cat "$tmp/out")"; return; }
+  done
+  python3 - "$tmp/v.json" "$failed" <<'PY' || { bad "$name: JSON verdict"; return; }
+import json, sys
+j = json.load(open(sys.argv[1]))
+want = [w for w in sys.argv[2].split(",") if w]
+v = j["verdict"]
+assert v["failed"] == want and v["passed"] == (not want), (v, want)
+# every phase that ran is in the JSON with its status
+assert all(p["status"] in ("ok", "failed", "skipped") for p in j["phases"]), j["phases"]
+PY
+  ok
+}
+
+SIMPSON='h*((q1-q0)^2/(2*h^2) - (V(q0)+4*V((q0+q1)/2)+V(q1))/6)'
+HH='x^2/2+y^2/2+x^2*y-y^3/3'
+HHARGS=(--potential "$HH" --q0 0,0.1 --p0 0.35,0 --steps 20000)
+
+# --- wrong discrete Lagrangians: the verdict that should fail does ----------------------------
+# Kinetic term doubled (mass 2): inconsistent with the intended L, so no order against the
+# reference of L, and an energy of ½|p|² + V far from conserved.
+case_ "kinetic doubled" 5 "consistency,order,energy" \
+  "consistency .*NO, the kinetic part \(terms in v\) is v1\^2\+v2\^2, expected 1/2\*v1\^2\+1/2\*v2\^2" \
+  "order .*: NO" "energy .*: large \(relative error" "verdict  *FAIL \(consistency, order, energy\)" -- \
+  --ld 'h*((q1-q0)^2/h^2 - (V(q0)+4*V((q0+q1)/2)+V(q1))/6)' "${HHARGS[@]}"
+# The potential's sign reversed on the pendulum.
+case_ "potential sign" 5 "consistency,order,energy" \
+  "consistency .*NO, the part without v \(minus the potential\) is -cos\(x\), expected cos\(x\)" \
+  "order .*: NO" "energy .*: large" -- \
+  --ld 'h*((q1-q0)^2/(2*h^2) + (V(q0)+V(q1))/2)' --potential='-cos(x)' --q0 1 --p0 0.5 --steps 4096
+# A position-dependent mass typed while the default ½|v|² − V is intended: inconsistent.
+PDM='h*( (1+((q0+q1)/2)^2)*((q1-q0)/h)^2/2 - (V(q0)+V(q1))/2 )'
+case_ "mass not intended" 5 "consistency,order,energy" "consistency .*NO, the kinetic part" -- \
+  --ld "$PDM" --potential 'x^2/2+y^2/2' --q0 0.3,0.1 --p0 0.2,0.1 --steps 4096
+# A first-order method claimed to be second order: the order fails, and so does the energy,
+# whose error shrinks like h^1, not h^2.
+SE='h*( ((q1-q0)/h)^2/2 - V(q1) )'
+case_ "order claimed too high" 5 "order,energy" "order  *1\.0[0-9]* .*expected 2 .*: NO" \
+  "energy .*bounded, not O\(h\^p\)" -- \
+  --ld "$SE" --potential='-cos(x)' --q0 1 --p0 0.5 --h 0.005 --steps 20000
+# Störmer–Verlet at ωh = 1.98: stable, but a 98 % energy error is "large" whatever its trend.
+case_ "energy large" 5 "energy" \
+  "energy .*h = 1.98.*: large \(relative error 0.98 > 0.01.*shrinks like h\^2" -- \
+  --ld 'h*(((q1-q0)/h)^2/2 - (V(q0)+V(q1))/2)' --potential 'x^2/2' --q0 1 --p0 0 --h 1.98
+# Symplectic Euler declared symmetric: its reversibility becomes part of the verdict.
+case_ "not symmetric" 5 "reversibility" "time-reversible .*: NO$" -- \
+  --ld "$SE" --potential='-cos(x)' --q0 1 --p0 0.5 --expected-order 1 --h 0.005 --steps 20000 \
+  --symmetric
+
+# --- right ones pass -------------------------------------------------------------------------
+# Order 2, Simpson on Hénon–Heiles (the README's example), symmetric.
+case_ "order 2" 0 "" "order  *(1\.99|2\.00)[0-9]* .*: yes" "symplectic .*: yes" \
+  "time-reversible .*: yes$" "energy .*: bounded" "verdict  *PASS" -- \
+  --ld "$SIMPSON" "${HHARGS[@]}" --symmetric
+# Order 1: symplectic Euler, and its modified Hamiltonian's h^1 term +p sin(x)/2 (for this
+# variant, q1 = q0 + h p0, p1 = p0 − h V'(q1); checked by hand against a numerical run).
+case_ "order 1" 0 "" "order  *(0\.99|1\.0)[0-9]* .*: yes" "time-reversible .*: NO \(reported only" \
+  "H_1 = 1/2\*p1\*sin\(x1\)" "verdict  *PASS" -- \
+  --ld "$SE" --potential='-cos(x)' --q0 1 --p0 0.5 --expected-order 1 --h 0.005 --steps 20000
+# Order 4 (a modified-potential Störmer–Verlet, the components and grad(V) of the language),
+# with --h-list reaching the round-off plateau: the plateau is left out of the fit.
+L4='h*( ((q1-q0)/h)^2/2*(1 + h^2/12*(cos(q0[1])+cos(q1[1]))) - (V(q0)+V(q1))/2 - h^2/48*(grad(V)(q0)^2 + grad(V)(q1)^2) )'
+case_ "order 4" 0 "" "order  *(3\.9|4\.0)[0-9]* over .*plateau points left out.*: yes" \
+  "verdict  *PASS" -- \
+  --ld "$L4" --potential='-cos(x)' --q0 1 --p0 0.5 --expected-order 4 --steps 20000 \
+  --h-list 0.2,0.1,0.05,0.025,0.0125,0.00625,0.003125,0.0015625,0.00078125,0.000390625
+# Position-dependent mass, the Lagrangian it was meant for: energy is its Legendre transform.
+case_ "mass intended" 0 "" "consistency .*: yes" "energy .*Legendre transform of L: bounded" -- \
+  --ld "$PDM" --lagrangian '(1+q^2)*v^2/2 - V(q)' --potential 'x^2/2+y^2/2' --q0 0.3,0.1 \
+  --p0 0.2,0.1 --steps 20000
+# The implicit midpoint rule conserves a quadratic energy to round-off: on the harmonic
+# oscillator and on a stiff one (ω = 100, ωh = 5 at the energy test's step), the verdict is
+# "conserved to round-off", not a drift of 1e-13.
+MID='h*(((q1-q0)/h)^2/2 - V((q0+q1)/2))'
+case_ "midpoint harmonic" 0 "" "energy .*: conserved to round-off" -- \
+  --ld "$MID" --potential 'x^2/2' --q0 1 --p0 0
+case_ "midpoint stiff" 0 "" "energy .*h = 0.05.*: conserved to round-off" -- \
+  --ld "$MID" --potential '5000*x^2' --q0 0.1 --p0 0 --h-list 0.002,0.001,0.0005 --t-end 1
+# ...and with the default --h-list, which does not resolve ω, the order fails with the hint.
+case_ "midpoint stiff, unresolved" 5 "order" "order .*: NO \(ω = 100 at q0: ωh runs from 20" -- \
+  --ld "$MID" --potential '5000*x^2' --q0 0.1 --p0 0 --steps 4096
+
+# --- nothing lost ------------------------------------------------------------------------------
+# The symbolic engine fails on an L_d with powers of h below h^1 (|v|^4/h^3-type kinetic term):
+# the numerical verdicts are still printed and written, the failure named.
+case_ "symbolic failure" 5 "consistency,order,energy" "reference .*GBS" "symplectic .*defect" \
+  "modified equation  *FAILED \(error\): the expansion of h\^-1 L_d" -- \
+  --ld '(q1-q0)^4/h^3 - h*(V(q0)+V(q1))/2' --potential 'x^2/2+x^4/4' --q0 0.5 --p0 0.3 --steps 2048
+python3 - "$tmp/v.json" <<'PY' && ok || bad "symbolic failure: JSON keeps the numerics"
+import json, sys
+j = json.load(open(sys.argv[1]))
+assert j["order"]["h"] and j["symplecticity"]["defect"] >= 0 and j["energy"]["verdict"], j
+ph = {p["phase"]: p for p in j["phases"]}
+assert ph["modified"]["status"] == "failed" and "h^-1 L_d" in ph["modified"]["reason"], ph
+PY
+# A step that fails names the phase, step, time and state (exit 3), and past ωh = 2 says so.
+"$V" verify --ld 'h*(((q1-q0)/h)^2/2 - (V(q0)+V(q1))/2)' --potential 'sqrt(x)' --q0 1 --p0 0.1 \
+  --steps 2048 >"$tmp/out" 2>"$tmp/err"
+[ $? = 3 ] && grep -Eq "energy  *FAILED \(numerical\): energy run, h = 0.05: step [0-9]+ at t = [0-9.]+ from q = \(" "$tmp/out" &&
+  [ "$(wc -l <"$tmp/err")" = 1 ] && grep -q "^vibook: error: verify: reference: " "$tmp/err" && ok || bad "step failure: $(cat "$tmp/out") $(cat "$tmp/err")"
+
+echo "verify verdicts: $pass passed, $fail failed"
+[ "$fail" = 0 ]
