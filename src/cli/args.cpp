@@ -34,8 +34,10 @@ long long parse_integer(const std::string& arg, const std::string& text) {
   long long v = 0;
   const auto [ptr, ec] = std::from_chars(text.data(), text.data() + text.size(), v);
   require(!text.empty(), arg, "expects an integer, got an empty value");
+  require(ec != std::errc::result_out_of_range, arg, fmt::format("'{}' is out of range", text));
+  // Base 10, whole: "010" is ten (never octal), and "0x2", " 2", "+2", "2x" are refused.
   require(ec == std::errc() && ptr == text.data() + text.size(), arg,
-          fmt::format("'{}' is not an integer", text));
+          fmt::format("'{}' is not an integer (digits in base 10, an optional leading '-')", text));
   return v;
 }
 

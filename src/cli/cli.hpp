@@ -13,6 +13,10 @@ namespace vibook::cli {
 /// end and a verdict failed (the report names which).
 enum Exit : int { kOk = 0, kFailure = 1, kBadArgument = 2, kNumerical = 3, kIo = 4, kVerdict = 5 };
 
+/// One message to standard error that never throws and never aborts: a closed or full stderr
+/// loses the message but not the exit status (every error path of the command goes through it).
+void eprint(const std::string& text);
+
 /// The command line as the user typed it (shell-quoted where needed), for reports.
 const std::string& command_line();
 /// Record it (main does, before parsing).

@@ -1,4 +1,6 @@
 // The `vibook` command: list, figure, figures, claims, run.
+#include <csignal>
+#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
@@ -84,7 +86,7 @@ int cmd_figures(std::vector<std::string> ids, const fs::path& out) {
       fmt::print("{:<16} wrote {}/{{{}.svg,{}.png,claims.json,*.csv}}\n", o.id, o.dir.string(),
                  o.id, o.id);
     } else {
-      fmt::print(stderr, "vibook: {}: not rendered: {}\n", o.id, o.render_error);
+      vibook::cli::eprint(fmt::format("vibook: {}: not rendered: {}\n", o.id, o.render_error));
       rc = cli::kFailure;
     }
   }
@@ -223,6 +225,12 @@ std::string& command_line_storage() {
 }
 }  // namespace
 const std::string& command_line() { return command_line_storage(); }
+void eprint(const std::string& text) {
+  // fwrite on a closed descriptor sets the error flag and returns; nothing is thrown.
+  (void)std::fwrite(text.data(), 1, text.size(), stderr);
+  (void)std::fflush(stderr);
+  std::clearerr(stderr);
+}
 void set_command_line(int argc, char** argv) {
   std::string s = "vibook";
   for (int i = 1; i < argc; ++i) {
@@ -242,7 +250,20 @@ void set_command_line(int argc, char** argv) {
 }
 }  // namespace vibook::cli
 
+// Help and version text must have arrived too (`vibook --help > /dev/full` is status 4).
+int help_exit(int rc) {
+  try {
+    vibook::check_standard_output();
+  } catch (const std::exception& e) {
+    vibook::cli::eprint(std::string("vibook: I/O error: ") + e.what() + "\n");
+    return vibook::cli::kIo;
+  }
+  return rc;
+}
+
 int main(int argc, char** argv) {
+  // A closed pipe (`vibook … | head -1`) is a write error, status 4, not death by SIGPIPE.
+  std::signal(SIGPIPE, SIG_IGN);
   vibook::cli::set_command_line(argc, argv);
   CLI::App app{
       "vibook — variational integrators, checked against their papers.\n"
@@ -302,10 +323,10 @@ int main(int argc, char** argv) {
     bool known = false;
     for (const char* c : kCommands) known = known || word == c;
     if (!known) {
-      fmt::print(stderr,
-                 "vibook: error: unknown command '{}' (commands: list, figure, figures, claims, "
-                 "run, modified, verify, displays; see `vibook --help`)\n",
-                 word);
+      vibook::cli::eprint(fmt::format(
+          "vibook: error: unknown command '{}' (commands: list, figure, figures, claims, "
+          "run, modified, verify, displays; see `vibook --help`)\n",
+          word));
       return cli::kBadArgument;
     }
     // An unknown option is named before CLI11 would complain about a missing required one.
@@ -316,26 +337,26 @@ int main(int argc, char** argv) {
         continue;  // a value: "-", "-0.1"
       const std::string name(tok.substr(0, tok.find('=')));
       if (name == "-h" || name == "--help" || sub->get_option_no_throw(name) != nullptr) continue;
-      fmt::print(stderr,
-                 "vibook: error: unknown option '{}' of `vibook {}` (see `vibook {} --help`)\n",
-                 name, word, word);
+      vibook::cli::eprint(fmt::format(
+          "vibook: error: unknown option '{}' of `vibook {}` (see `vibook {} --help`)\n", name,
+          word, word));
       return cli::kBadArgument;
     }
   }
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {
-    return app.exit(e);
+    return help_exit(app.exit(e));
   } catch (const CLI::CallForAllHelp& e) {
-    return app.exit(e);
+    return help_exit(app.exit(e));
   } catch (const CLI::CallForVersion& e) {
-    return app.exit(e);
+    return help_exit(app.exit(e));
   } catch (const CLI::ParseError& e) {
     std::string msg = e.what();
     for (auto& c : msg) {
       if (c == '\n') c = ' ';
     }
-    fmt::print(stderr, "vibook: error: {} (see `vibook --help`)\n", msg);
+    vibook::cli::eprint(fmt::format("vibook: error: {} (see `vibook --help`)\n", msg));
     return cli::kBadArgument;
   }
 
@@ -361,19 +382,19 @@ int main(int argc, char** argv) {
     check_standard_output();
     return rc;
   } catch (const ArgumentError& e) {
-    fmt::print(stderr, "vibook: error: {}\n", e.what());
+    vibook::cli::eprint(fmt::format("vibook: error: {}\n", e.what()));
     return cli::kBadArgument;
   } catch (const NumericalError& e) {
-    fmt::print(stderr, "vibook: numerical failure: {}\n", e.what());
+    vibook::cli::eprint(fmt::format("vibook: numerical failure: {}\n", e.what()));
     return cli::kNumerical;
   } catch (const IoError& e) {
-    fmt::print(stderr, "vibook: I/O error: {}\n", e.what());
+    vibook::cli::eprint(fmt::format("vibook: I/O error: {}\n", e.what()));
     return cli::kIo;
   } catch (const std::system_error& e) {  // fmt's and std::filesystem's write errors
-    fmt::print(stderr, "vibook: I/O error: {}\n", e.what());
+    vibook::cli::eprint(fmt::format("vibook: I/O error: {}\n", e.what()));
     return cli::kIo;
   } catch (const std::exception& e) {
-    fmt::print(stderr, "vibook: error: {}\n", e.what());
+    vibook::cli::eprint(fmt::format("vibook: error: {}\n", e.what()));
     return cli::kFailure;
   }
 }

@@ -8,6 +8,7 @@
 
 #include <fmt/format.h>
 
+#include "args.hpp"
 #include "cli.hpp"
 #include "vibook/modified/engine.hpp"
 #include "vibook/verify/expression.hpp"
@@ -17,6 +18,7 @@ namespace vibook::cli {
 namespace {
 struct ModifiedOptions {
   std::string method, potential = "generic", what = "equation", format = "text", alpha;
+  std::string dim_text, order_text;  // parsed whole, in base 10 (parse_integer)
   int dim = 0, order = -1;
   bool cross_check = false, dim_given = false, alpha_given = false;
 };
@@ -30,8 +32,12 @@ void collect_symbols(const GiNaC::ex& e, std::set<std::string>& out) {
   for (std::size_t k = 0; k < e.nops(); ++k) collect_symbols(e.op(k), out);
 }
 
-int run_modified(const ModifiedOptions& o) {
+int run_modified(ModifiedOptions o) {
   using namespace modified;
+  o.order =
+      static_cast<int>(std::clamp<long long>(parse_integer("--order", o.order_text), -1, 1000));
+  if (o.dim_given)
+    o.dim = static_cast<int>(std::clamp<long long>(parse_integer("--dim", o.dim_text), 0, 1000));
   const Method m = parse_method(o.method);
   const Potential p = parse_potential(o.potential);
   const Format f = parse_format(o.format);
@@ -155,8 +161,9 @@ std::function<int()> add_modified_command(CLI::App& app) {
   c->add_option("--potential", o->potential,
                 "generic (derivatives U, U_1, U_11, … as symbols), kepler (2-D), pendulum, "
                 "harmonic (default generic)");
-  c->add_option("--dim", o->dim, "degrees of freedom of a generic potential, 1 to 3 (default 1)");
-  c->add_option("--order", o->order,
+  c->add_option("--dim", o->dim_text,
+                "degrees of freedom of a generic potential, 1 to 3 (default 1)");
+  c->add_option("--order", o->order_text,
                 fmt::format("highest power of h, 0 to {}", modified::max_order))
       ->required();
   c->add_option("--what", o->what,

@@ -993,12 +993,12 @@ int run_verify(const VerifyOptions& o, const verify::TypedDiscreteLagrangian& dl
     if (ph.status == "failed" && ph.exit == rc) {
       std::string reason = ph.reason;
       std::replace(reason.begin(), reason.end(), '\n', ' ');
-      fmt::print(stderr, "vibook: error: verify: {}: {}\n", ph.name, reason);
+      eprint(fmt::format("vibook: error: verify: {}: {}\n", ph.name, reason));
       break;
     }
   if (rc == kVerdict)
-    fmt::print(stderr, "vibook: verify: FAIL ({}); the report above says why\n",
-               fmt::join(failed_checks, ", "));
+    eprint(fmt::format("vibook: verify: FAIL ({}); the report above says why\n",
+                       fmt::join(failed_checks, ", ")));
   if (o.json_given) write_output_file(o.json_out, js.dump(2) + "\n", "--json-out");
   if (!o.report_given) return rc;
 
@@ -1187,7 +1187,7 @@ int run_verify(const VerifyOptions& o, const verify::TypedDiscreteLagrangian& dl
   }
   std::cout << "report: " << (final_dir / "index.html").string() << '\n';
   if (!rendered && rc == kOk) {
-    fmt::print(stderr, "vibook: --report: figure not drawn: {}\n", render_error);
+    eprint(fmt::format("vibook: --report: figure not drawn: {}\n", render_error));
     return kFailure;
   }
   return rc;

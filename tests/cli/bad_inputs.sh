@@ -175,6 +175,34 @@ row 2 "--report"         "${VF[@]}" --ld "$SIMPSON" --potential "$HH" --report .
 row 2 "--report"         "${VF[@]}" --ld "$SIMPSON" --potential "$HH" --report ""
 # A discrete Lagrangian without the velocity coupling D1 D2 L_d: degenerate, status 3.
 row 3 "degenerate"       "${VF[@]}" --ld 'q0^2 + q1^2 - h*V(q0)' --potential "$HH"
+# --- integers: whole, base 10 (#27: "010" was octal, "0x2", " 2", "+2" and "" were accepted) --
+row 2 "--order"          modified --method sv --order 0x2
+row 2 "--order"          modified --method sv --order ' 2'
+row 2 "--order"          modified --method sv --order +2
+row 2 "--order"          modified --method sv --order ''
+row 2 "out of range"     modified --method sv --order 99999999999999999999
+row 2 "--dim"            modified --method sv --order 1 --dim 0x1
+# --- a closed or full standard error never turns an error into a crash (#27: SIGABRT, 134) ------
+for args in "run --problem kepler --method sv --h 0" "bogus" "modified --method sv --order x"; do
+  # shellcheck disable=SC2086
+  "$V" $args 2>&- >/dev/null; st=$?
+  [ "$st" = 2 ] && pass=$((pass + 1)) || bad "vibook $args 2>&-: status $st, want 2"
+  if [ -w /dev/full ]; then
+    # shellcheck disable=SC2086
+    "$V" $args 2>/dev/full >/dev/null; st=$?
+    [ "$st" = 2 ] && pass=$((pass + 1)) || bad "vibook $args 2>/dev/full: status $st, want 2"
+  fi
+done
+# A closed pipe is an output that could not be written: status 4, not SIGPIPE (141).
+"$V" run --problem kepler --method sv --t-end 200 --csv - 2>/dev/null | head -1 >/dev/null
+st=${PIPESTATUS[0]}
+[ "$st" = 4 ] && pass=$((pass + 1)) || bad "run --csv - | head -1: status $st, want 4"
+"$V" run --problem kepler --method sv --csv - >&- 2>&-; st=$?
+[ "$st" = 4 ] && pass=$((pass + 1)) || bad "run --csv - with stdout and stderr closed: $st"
+if [ -w /dev/full ]; then
+  "$V" --help >/dev/full 2>/dev/null; st=$?
+  [ "$st" = 4 ] && pass=$((pass + 1)) || bad "--help > /dev/full: status $st, want 4"
+fi
 # --- standard output that cannot be written: status 4 ------------------------------------------
 if [ -w /dev/full ]; then
   "$V" run --problem kepler --method sv --csv - >/dev/full 2>stderr
