@@ -1,4 +1,6 @@
 // The `vibook` command: list, figure, figures, claims, run.
+#include <sys/stat.h>
+
 #include <csignal>
 #include <cstdio>
 #include <filesystem>
@@ -73,6 +75,22 @@ int cmd_figures(std::vector<std::string> ids, const fs::path& out) {
     }
   }
   ensure_writable_dir(out);
+  // Before any work: --out itself must not be a symbolic link (followed silently, it would
+  // write elsewhere), and OUT/ID, where it exists, must be a directory.
+  {
+    struct stat st {};
+    std::string bare = out.string();  // "link/" would follow the link
+    while (bare.size() > 1 && bare.back() == '/') bare.pop_back();
+    if (::lstat(bare.c_str(), &st) == 0 && S_ISLNK(st.st_mode))
+      throw ArgumentError(
+          "--out", "'" + out.string() + "' is a symbolic link; give the directory it points to");
+    for (const auto* c : todo) {
+      const fs::path d = out / c->id;
+      if (::lstat(d.c_str(), &st) == 0 && !S_ISDIR(st.st_mode))
+        throw ArgumentError(
+            "--out", "'" + d.string() + "' exists and is not a directory; move it away first");
+    }
+  }
   // Figures are independent: one thread per figure, at most one per core.
   std::vector<figures::FigureOutput> outputs(todo.size());
   parallel_for(todo.size(), 0,

@@ -256,6 +256,22 @@ expect 0 "" -- figure vermeeren-fig1 --out "$tmp/f"
 for f in vermeeren-fig1.svg vermeeren-fig1.png claims.json discrete.csv curves.csv; do
   [ -s "$tmp/f/vermeeren-fig1/$f" ] && ok || bad "figure file $f"
 done
+# A file of the user's in an output directory is left alone (#27: it was deleted); our own
+# files are replaced. A --out that is a symbolic link, or OUT/ID that is a file, is refused
+# before any work.
+echo "my notes" >"$tmp/f/vermeeren-fig1/notes.txt"
+expect 0 "" -- figure vermeeren-fig1 --out "$tmp/f"
+grep -q "my notes" "$tmp/f/vermeeren-fig1/notes.txt" && [ -s "$tmp/f/vermeeren-fig1/discrete.csv" ] &&
+  ok || bad "figure --out deleted a user's file"
+ln -s "$tmp/f" "$tmp/flink"
+expect 2 "--out" -- figure vermeeren-fig1 --out "$tmp/flink/"
+mkdir -p "$tmp/g2" && touch "$tmp/g2/vermeeren-fig1"
+expect 2 "--out" -- figure vermeeren-fig1 --out "$tmp/g2"
+echo "my notes" >"$tmp/rep1/notes.txt"
+(cd "$tmp" && "$V" verify --ld '(q1-q0)^2/(2*h) - h*(V(q0)+V(q1))/2' --potential 'x^2/2+x^4/4' \
+   --q0 0.5 --p0 0 --steps 4096 --report rep1 >/dev/null 2>&1) &&
+  grep -q "my notes" "$tmp/rep1/notes.txt" && [ -s "$tmp/rep1/index.html" ] && ok ||
+  bad "verify --report onto an earlier report deleted a user's file"
 # list says what there is without running anything (statuses are `claims`' business).
 expect 0 "" -- list
 grep -q "S-F1" "$tmp/out" && grep -q "check-v-ex1" "$tmp/out" && ok || bad "list shows every check and claim"

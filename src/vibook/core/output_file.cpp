@@ -4,6 +4,8 @@
 #include <fcntl.h>
 #include <sys/stat.h>
 #include <unistd.h>
+#include <algorithm>
+#include <vector>
 
 #include <cerrno>
 #include <cstdio>
@@ -224,20 +226,42 @@ fs::path temporary_directory_for(const fs::path& final_dir) {
 void commit_directory(const fs::path& tmp_dir, const fs::path& final_dir) {
   struct stat st {};
   std::error_code ec;
-  if (::lstat(final_dir.c_str(), &st) == 0) {
-    if (!S_ISDIR(st.st_mode))
-      throw IoError(quoted(final_dir) +
-                    " exists and is not a directory (or is a link); the new "
-                    "output is in " +
-                    quoted(tmp_dir));
-    fs::remove_all(final_dir, ec);
-    if (ec)
-      throw IoError("cannot remove the old " + quoted(final_dir) + ": " + ec.message() +
-                    "; the new output is in " + quoted(tmp_dir));
+  if (::lstat(final_dir.c_str(), &st) != 0) {
+    if (::rename(tmp_dir.c_str(), final_dir.c_str()) != 0)
+      throw IoError("cannot rename the new output onto " + quoted(final_dir) + ": " + last_error());
+    return;
   }
-  if (::rename(tmp_dir.c_str(), final_dir.c_str()) != 0)
-    throw IoError("cannot rename " + quoted(tmp_dir) + " to " + quoted(final_dir) + ": " +
-                  last_error());
+  if (!S_ISDIR(st.st_mode))
+    throw IoError(quoted(final_dir) +
+                  " exists and is not a directory (or is a link); nothing was written there");
+  // An existing directory: each of our entries replaces its namesake (a file by rename, so
+  // atomically); anything else in it is the user's and stays. Entries in sorted order, so a
+  // failure part-way is reproducible.
+  std::vector<fs::path> ours;
+  for (const auto& e : fs::directory_iterator(tmp_dir)) ours.push_back(e.path());
+  std::sort(ours.begin(), ours.end());
+  for (const auto& from : ours) {
+    const fs::path to = final_dir / from.filename();
+    struct stat ft {
+    }, tt{};
+    if (::lstat(from.c_str(), &ft) != 0)
+      throw IoError("cannot read the new output " + quoted(from) + ": " + last_error());
+    if (::lstat(to.c_str(), &tt) == 0) {
+      const bool same_kind = S_ISDIR(ft.st_mode) ? S_ISDIR(tt.st_mode) : S_ISREG(tt.st_mode);
+      if (!same_kind)
+        throw IoError(quoted(to) + " exists and is not a " +
+                      (S_ISDIR(ft.st_mode) ? "directory" : "regular file") +
+                      " (a link, a device, or the other kind); it was left alone and the new " +
+                      "output was not written");
+      if (S_ISDIR(tt.st_mode)) {
+        fs::remove_all(to, ec);
+        if (ec) throw IoError("cannot replace " + quoted(to) + ": " + ec.message());
+      }
+    }
+    if (::rename(from.c_str(), to.c_str()) != 0)
+      throw IoError("cannot write " + quoted(to) + ": " + last_error());
+  }
+  fs::remove(tmp_dir, ec);
 }
 
 }  // namespace vibook

@@ -67,8 +67,10 @@ void check_standard_output();
 /// A fresh directory beside `final_dir` (same parent, hidden name), for outputs that consist
 /// of several files: fill it, then `commit_directory` renames it onto `final_dir`.
 std::filesystem::path temporary_directory_for(const std::filesystem::path& final_dir);
-/// Replaces `final_dir` (absent, or a directory vibook may remove) by `tmp_dir`. A symbolic
-/// link or a non-directory at `final_dir` is refused (IoError); nothing is removed then.
+/// Moves `tmp_dir`'s entries into `final_dir`: renames it when absent; into an existing
+/// directory, each entry replaces its namesake and every other entry (a user's notes) is left
+/// alone. A symbolic link or a non-directory at `final_dir`, or at one of our names an entry
+/// of another kind, is refused (IoError) and left alone.
 void commit_directory(const std::filesystem::path& tmp_dir, const std::filesystem::path& final_dir);
 
 }  // namespace vibook
