@@ -69,8 +69,13 @@ int cmd_figures(std::vector<std::string> ids, const fs::path& out) {
   } else {
     for (const auto& id : ids) {
       const auto* c = figures::find(id);
-      if (!c || !c->is_figure)
-        throw ArgumentError("ID", fmt::format("unknown figure '{}' (see `vibook list`)", id));
+      if (c && !c->is_figure)
+        throw ArgumentError("ID", fmt::format("'{}' is a check without a figure: `vibook claims "
+                                              "--check {}` runs it",
+                                              id, id));
+      if (!c) throw ArgumentError("ID", fmt::format("unknown figure '{}' (see `vibook list`)", id));
+      if (std::find(todo.begin(), todo.end(), c) != todo.end())
+        throw ArgumentError("ID", fmt::format("'{}' is given twice", id));
       todo.push_back(c);
     }
   }

@@ -141,6 +141,12 @@ Plan check(const VerifyOptions& o, const verify::TypedDiscreteLagrangian& dl) {
   for (double h : p.hs)
     if (!(h > 0) || !(h <= p.t_end) || p.t_end / h > 1e8)
       throw ArgumentError("--h-list", fmt::format("{} is not a step size in (T/1e8, T]", h));
+  {
+    std::vector<double> sorted_hs = p.hs;
+    std::sort(sorted_hs.begin(), sorted_hs.end());
+    if (std::adjacent_find(sorted_hs.begin(), sorted_hs.end()) != sorted_hs.end())
+      throw ArgumentError("--h-list", "gives a step size twice; an order needs distinct steps");
+  }
   p.expected = parse_number("--expected-order", o.expected);
   if (!(p.expected > 0 && p.expected <= 12))
     throw ArgumentError("--expected-order", "must lie in (0, 12]");
@@ -167,6 +173,17 @@ Plan check(const VerifyOptions& o, const verify::TypedDiscreteLagrangian& dl) {
     throw ArgumentError("--format", "verify prints text or latex");
   if (o.json_given) check_output_path(o.json_out, "--json-out", true);
   if (o.report_given) check_report_dir(o.report);
+  if (o.json_given && o.report_given) {
+    // The JSON file may not be the report directory, nor lie inside it (the report replaces
+    // its own entries).
+    const auto j = std::filesystem::absolute(o.json_out).lexically_normal();
+    const auto r = std::filesystem::absolute(report_path(o.report)).lexically_normal();
+    const auto rel = j.lexically_relative(r);
+    if (j == r || (!rel.empty() && *rel.begin() != ".."))
+      throw ArgumentError("--json-out", "'" + o.json_out +
+                                            "' is the --report directory or in it; "
+                                            "the report holds verify.json already");
+  }
   return p;
 }
 

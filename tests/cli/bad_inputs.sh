@@ -175,6 +175,10 @@ row 2 "--report"         "${VF[@]}" --ld "$SIMPSON" --potential "$HH" --report .
 row 2 "--report"         "${VF[@]}" --ld "$SIMPSON" --potential "$HH" --report ""
 # A discrete Lagrangian without the velocity coupling D1 D2 L_d: degenerate, status 3.
 row 3 "degenerate"       "${VF[@]}" --ld 'q0^2 + q1^2 - h*V(q0)' --potential "$HH"
+row 2 "twice"            verify --ld "$SIMPSON" --potential "$HH" --h-list 0.1,0.1,0.1
+row 2 "--json-out"       "${VF[@]}" --ld "$SIMPSON" --potential "$HH" --report rr --json-out rr/v.json
+row 2 "claims --check"   figure check-modified
+row 2 "given twice"      figure vermeeren-fig1 vermeeren-fig1
 # --- integers: whole, base 10 (#27: "010" was octal, "0x2", " 2", "+2" and "" were accepted) --
 row 2 "--order"          modified --method sv --order 0x2
 row 2 "--order"          modified --method sv --order ' 2'
