@@ -407,6 +407,9 @@ int main(int argc, char** argv) {
   } catch (const ArgumentError& e) {
     vibook::cli::eprint(fmt::format("vibook: error: {}\n", e.what()));
     return cli::kBadArgument;
+  } catch (const cli::Interrupted& e) {
+    vibook::cli::eprint(fmt::format("vibook: {}\n", e.what()));
+    return 128 + e.signal();
   } catch (const NumericalError& e) {
     vibook::cli::eprint(fmt::format("vibook: numerical failure: {}\n", e.what()));
     return cli::kNumerical;

@@ -1,5 +1,6 @@
 // `vibook run`: integrate one problem with one method and stream the trajectory as CSV.
 #include <unistd.h>
+#include <csignal>
 
 #include <charconv>
 #include <chrono>
@@ -97,10 +98,49 @@ void require_finite_row(const Row& row, const std::vector<std::string>& cols) {
       throw NumericalError(fmt::format("the output column {} is not finite ({})", cols[i], row[i]));
 }
 
+// SIGINT, SIGTERM and SIGHUP during an integration: the handler only records the signal; the
+// step loop sees it at its next step (Progress::update) and stops like a failed step, keeping
+// the rows written so far in FILE.partial. Installed for the integration only, so every other
+// phase (and every other command) keeps the default action.
+volatile std::sig_atomic_t g_signal = 0;
+extern "C" void record_signal(int s) { g_signal = s; }
+
+class SignalGuard {
+ public:
+  SignalGuard() {
+    struct sigaction sa {};
+    sa.sa_handler = record_signal;
+    sigemptyset(&sa.sa_mask);
+    for (int i = 0; i < 3; ++i) ::sigaction(kSignals[i], &sa, &old_[i]);
+  }
+  ~SignalGuard() {
+    for (int i = 0; i < 3; ++i) ::sigaction(kSignals[i], &old_[i], nullptr);
+  }
+  SignalGuard(const SignalGuard&) = delete;
+  SignalGuard& operator=(const SignalGuard&) = delete;
+
+ private:
+  static constexpr int kSignals[3] = {SIGINT, SIGTERM, SIGHUP};
+  struct sigaction old_[3]{};
+};
+
+// A failure of the step loop, rethrown with its place and what was kept: an interruption stays
+// an interruption (exit 128 + signal), anything else is a numerical failure (exit 3).
+[[noreturn]] void rethrow_with(const NumericalError& e, const std::string& message) {
+  if (const auto* i = dynamic_cast<const Interrupted*>(&e)) throw Interrupted(i->signal(), message);
+  throw NumericalError(message);
+}
+
 class Progress {
  public:
   explicit Progress(long long total) : total_(total), tty_(::isatty(STDERR_FILENO) != 0) {}
   void update(long long k) {
+    if (g_signal != 0) {
+      const int s = g_signal;
+      throw Interrupted(s, fmt::format("interrupted by {}", s == SIGINT    ? "SIGINT"
+                                                            : s == SIGTERM ? "SIGTERM"
+                                                                           : "SIGHUP"));
+    }
     if (!tty_ || (k & 0x3fff) != 0) return;
     const auto now = std::chrono::steady_clock::now();
     if (now - start_ < std::chrono::seconds(2) || now - last_ < std::chrono::milliseconds(500))
@@ -238,7 +278,7 @@ int integrate(const Problem& P, Stepper stepper, bool implicit, const RunOptions
         k == 0 ? fmt::format("the initial state, {}", state_text(s.q.data(), s.p.data(), N))
                : fmt::format("step {} (t = {:.17g}), from {}", k, double(k - 1) * o.h,
                              state_text(before.q.data(), before.p.data(), N));
-    throw NumericalError(fmt::format("{} at {}; {}", e.what(), where, csv.keep_partial()));
+    rethrow_with(e, fmt::format("{} at {}; {}", e.what(), where, csv.keep_partial()));
   }
   rec.finish();
   csv.commit();
@@ -286,11 +326,10 @@ int integrate_relativistic(const relativistic::Problem& P, Method method, const 
     }
   } catch (const NumericalError& e) {
     rec.finish();
-    throw NumericalError(
-        fmt::format("{} at step {} (tau = {:.17g}), from x = ({:.17g}, {:.17g}), "
-                    "u = ({:.17g}, {:.17g}); {}",
-                    e.what(), k, double(std::max(k - 1, 0LL)) * o.h, before.x(0), before.x(1),
-                    before.u(0), before.u(1), out.keep_partial()));
+    rethrow_with(e, fmt::format("{} at step {} (tau = {:.17g}), from x = ({:.17g}, {:.17g}), "
+                                "u = ({:.17g}, {:.17g}); {}",
+                                e.what(), k, double(std::max(k - 1, 0LL)) * o.h, before.x(0),
+                                before.x(1), before.u(0), before.u(1), out.keep_partial()));
   }
   rec.finish();
   out.commit();
@@ -448,7 +487,7 @@ int integrate_adaptive_kepler(const RunOptions& o) {
             ? fmt::format("(step {})", k + 1)
             : fmt::format("at step {} (t = {:.17g}), from {}", k + 1, t_before,
                           state_text(q_before.data(), p_before.data(), N));
-    throw NumericalError(fmt::format("{} {}; {}", what, where, csv.keep_partial()));
+    rethrow_with(e, fmt::format("{} {}; {}", what, where, csv.keep_partial()));
   }
   rec.finish();
   csv.commit();
@@ -651,11 +690,13 @@ std::function<int()> add_run_command(CLI::App& app) {
               "relativistic-kepler runs in proper time: use --tau-end");
       require(!o->e, "--e", "does not apply to relativistic-kepler; give --q0 and --p0");
       const relativistic::Problem P(*o->c);  // c <= 0: ArgumentError naming --c
+      const SignalGuard signals;
       if (o->method == "k-symplectic")
         return integrate_relativistic(P, relativistic::KSymplectic{P}, *o);
       if (o->method == "vi") return integrate_relativistic(P, relativistic::Vi322{P}, *o);
       return integrate_relativistic(P, relativistic::Vi2{P}, *o);
     }
+    const SignalGuard signals;  // from here on, an interruption keeps FILE.partial
     require(!o->c, "--c", "only applies to --problem relativistic-kepler");
     require(!o->tau_end, "--tau-end", "only applies to --problem relativistic-kepler");
     if (o->problem == "harmonic") return dispatch_method(HarmonicOscillator{}, *o);

@@ -207,6 +207,19 @@ if [ -w /dev/full ]; then
   "$V" --help >/dev/full 2>/dev/null; st=$?
   [ "$st" = 4 ] && pass=$((pass + 1)) || bad "--help > /dev/full: status $st, want 4"
 fi
+# --- a signal during a run: 128 + signal, the rows kept in FILE.partial, nothing hidden left ----
+for sig in INT TERM; do
+  rm -rf sg && mkdir sg
+  (cd sg && exec "$V" run --problem kepler --method sv --h 0.0001 --t-end 100000 --csv long.csv \
+     2>../sg.err) & pid=$!
+  sleep 1
+  kill -"$sig" "$pid"; wait "$pid"; st=$?
+  want=$((128 + $(kill -l "$sig")))
+  [ "$st" = "$want" ] && [ -s sg/long.csv.partial ] && [ "$(ls -A sg)" = "long.csv.partial" ] &&
+    grep -q "interrupted by SIG$sig at step .*long.csv.partial" sg.err && pass=$((pass + 1)) ||
+    bad "SIG$sig during run: status $st (want $want), left $(ls -A sg), said $(cat sg.err)"
+done
+rm -rf sg sg.err
 # --- standard output that cannot be written: status 4 ------------------------------------------
 if [ -w /dev/full ]; then
   "$V" run --problem kepler --method sv --csv - >/dev/full 2>stderr
