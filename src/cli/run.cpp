@@ -195,6 +195,16 @@ int integrate(const Problem& P, Stepper stepper, bool implicit, const RunOptions
     s.p = o.p0.empty() ? Vec<double, N>::Zero() : vector_arg<N>(o.p0, "--p0");
   }
 
+  // The initial state, checked before any output: a finite state with a finite energy (the
+  // Kepler problem is singular at q = 0; 1e308 overflows the energy).
+  {
+    const double H0 = energy(P, s.q, s.p);
+    if (!s.q.allFinite() || !s.p.allFinite() || !std::isfinite(H0))
+      throw ArgumentError("--q0/--p0",
+                          fmt::format("the initial state {} has no finite energy (H = {})",
+                                      state_text(s.q.data(), s.p.data(), N), H0));
+  }
+
   // End time.
   double T = 0;
   if (o.periods) {

@@ -118,7 +118,7 @@ row 2 "--figures-dir"    claims --figures-dir nodir
 row 2 "ID"               figure no-such-figure --out f
 # --- numerical failures: status 3, where and from which state ----------------------------------
 row 3 "at step 1"        run --problem kepler --method del-generic --q0 1,0 --p0 0,1.4 --h 2 --t-end 100 --csv d.csv
-row 3 "not finite"       run --problem harmonic --method sv --q0 1e300 --csv a.csv
+row 2 "--q0/--p0"        run --problem harmonic --method sv --q0 1e300 --csv a.csv  # H = inf: before any work (#27)
 row 3 "step"             run --problem kepler --method avi1 --e 0.99 --csv a.csv
 row 3 "no admissible time step" run --problem kepler --method epavi --e 0.99 --h0 0.001 --csv a.csv
 # --- the symbolic engine -----------------------------------------------------------------------
@@ -179,6 +179,10 @@ row 2 "twice"            verify --ld "$SIMPSON" --potential "$HH" --h-list 0.1,0
 row 2 "--json-out"       "${VF[@]}" --ld "$SIMPSON" --potential "$HH" --report rr --json-out rr/v.json
 row 2 "claims --check"   figure check-modified
 row 2 "given twice"      figure vermeeren-fig1 vermeeren-fig1
+# The initial state is checked before any output (#27: these exited 3 after the CSV header).
+row 2 "--q0/--p0"        run --problem kepler --method sv --q0 0,0 --p0 1,0 --csv out.csv
+row 2 "--q0/--p0"        run --problem kepler --method sv --q0 1e308,0 --p0 1e308,0 --csv out.csv
+row 2 "--q0/--p0"        run --problem pendulum --method sv --q0 1e308 --p0 1e308 --csv out.csv
 # --- integers: whole, base 10 (#27: "010" was octal, "0x2", " 2", "+2" and "" were accepted) --
 row 2 "--order"          modified --method sv --order 0x2
 row 2 "--order"          modified --method sv --order ' 2'
