@@ -974,27 +974,19 @@ int run_verify(const VerifyOptions& o, const verify::TypedDiscreteLagrangian& dl
   // The verdict: consistency with the intended system, the order against the independent
   // reference, symplecticity and the energy, each as measured above (reversibility only when
   // the method is declared symmetric and the intended system is reversible).
-  std::vector<std::string> failed_checks;
-  auto require = [&](const json& j, const char* name) {
-    if (!j.is_object() || !j.value("passed", false)) failed_checks.emplace_back(name);
-  };
-  require(jcons, "consistency");
-  require(jorder, "order");
-  require(jsym, "symplecticity");
-  if (o.symmetric && system_reversible) require(jrev, "reversibility");
-  require(jen, "energy");
+  std::vector<std::pair<std::string, const json*>> required = {
+      {"consistency", &jcons}, {"order", &jorder}, {"symplecticity", &jsym}, {"energy", &jen}};
+  if (o.symmetric && system_reversible) required.emplace_back("reversibility", &jrev);
+  std::vector<std::string> required_names, failed_checks;
+  for (const auto& [name, j] : required) {
+    required_names.push_back(name);
+    if (!j->is_object() || !j->value("passed", false)) failed_checks.push_back(name);
+  }
   js["verdict"] = {
-      {"passed", failed_checks.empty()},
-      {"failed", failed_checks},
-      {"required",
-       o.symmetric && system_reversible
-           ? std::vector<std::string>{"consistency", "order", "symplecticity", "reversibility",
-                                      "energy"}
-           : std::vector<std::string>{"consistency", "order", "symplecticity", "energy"}}};
-  line("verdict", failed_checks.empty()
-                      ? std::string("PASS (consistency, order, symplecticity, energy") +
-                            (o.symmetric && system_reversible ? ", reversibility)" : ")")
-                      : fmt::format("FAIL ({})", fmt::join(failed_checks, ", ")));
+      {"passed", failed_checks.empty()}, {"failed", failed_checks}, {"required", required_names}};
+  line("verdict",
+       fmt::format("{} ({})", failed_checks.empty() ? "PASS" : "FAIL",
+                   fmt::join(failed_checks.empty() ? required_names : failed_checks, ", ")));
   // A failed verdict outranks a symbolic part that failed (status 1); a numerical failure (3)
   // outranks both, since a verdict after it was not measured.
   if ((rc == kOk || rc == kFailure) && !failed_checks.empty()) rc = kVerdict;

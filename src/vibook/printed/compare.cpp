@@ -122,6 +122,21 @@ Differences differences(const std::vector<Token>& tokens, const std::map<std::si
                         const Spec& spec, const std::vector<Case>& cases, bool describe,
                         bool stop = false) {
   Differences out;
+  // One difference: kept; with `stop`, a non-vanishing one ends the work (true); with
+  // `describe`, the first non-vanishing one is described, `where` naming its place. Whether it
+  // vanishes (a normal form, possibly of radicals) is decided once.
+  auto record = [&](const ex& printed, const ex& ours, const auto& where) {
+    const ex diff = printed - ours;
+    out.d.push_back(diff);
+    if (!stop && !(describe && out.first.empty())) return false;
+    if (modified::vanishes(diff)) return false;
+    if (stop) {
+      out.failed = true;
+      return true;
+    }
+    out.first = where() + describe_difference(printed, ours);
+    return false;
+  };
   for (const Case& c : cases) {
     const Reading r = read(tokens, *c.notation, factors);
     std::vector<std::size_t> members = spec.members;
@@ -152,15 +167,10 @@ Differences differences(const std::vector<Token>& tokens, const std::map<std::si
             printed = c.target.reduce(printed);
             ours = c.target.reduce(ours);
           }
-          const ex diff = printed - ours;
-          out.d.push_back(diff);
-          if (stop && !modified::vanishes(diff)) {
-            out.failed = true;
+          if (record(printed, ours, [&] {
+                return where + (comps > 1 ? fmt::format("component {}: ", i + 1) : "");
+              }))
             return out;
-          }
-          if (describe && out.first.empty() && !modified::vanishes(diff))
-            out.first = where + (comps > 1 ? fmt::format("component {}: ", i + 1) : "") +
-                        describe_difference(printed, ours);
         }
         continue;
       }
@@ -196,16 +206,11 @@ Differences differences(const std::vector<Token>& tokens, const std::map<std::si
           const auto& tc = c.target.series[i];
           const ex ours =
               k >= 0 && k < static_cast<int>(tc.size()) ? tc[static_cast<std::size_t>(k)] : ex(0);
-          const ex diff = printed - ours;
-          out.d.push_back(diff);
-          if (stop && !modified::vanishes(diff)) {
-            out.failed = true;
+          if (record(printed, ours, [&] {
+                return fmt::format("{}h^{}{}: ", where, k,
+                                   comps > 1 ? fmt::format(" of component {}", i + 1) : "");
+              }))
             return out;
-          }
-          if (describe && out.first.empty() && !modified::vanishes(diff))
-            out.first = fmt::format("{}h^{}{}: ", where, k,
-                                    comps > 1 ? fmt::format(" of component {}", i + 1) : "") +
-                        describe_difference(printed, ours);
         }
       }
     }
