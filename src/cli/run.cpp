@@ -369,6 +369,19 @@ int integrate_adaptive_kepler(const RunOptions& o) {
       throw ArgumentError("--q0/--p0", e.what());
     }
   }();
+  // The start-up step comes from the exact orbit; a first step that carries the body past the
+  // pericentre distance in one go cannot resolve the orbit (with e = 0.999999 and h0 = 0.01
+  // the run "succeeded" while H jumped from -0.5 to +14.5). Time scale of the pericentre
+  // passage: r_p / v_p with r_p = a(1 - e), v_p = sqrt((1 + e) / (a(1 - e))) (mu = 1).
+  {
+    const double a = orbit.semi_major_axis(), ecc = orbit.eccentricity();
+    const double rp = a * (1 - ecc), vp = std::sqrt((1 + ecc) / rp);
+    require(h0 * vp <= rp, o.h0 ? "--h0" : "--h",
+            fmt::format("the first step {:.3g} moves the body {:.3g} at the pericentre, farther "
+                        "than its distance {:.3g} from the centre (e = {:.9g}): take a first "
+                        "step below {:.3g}",
+                        h0, h0 * vp, rp, ecc, rp / vp));
+  }
   const double Tend = o.periods ? *o.periods * (from_state ? orbit.period() : 2 * std::numbers::pi)
                                 : o.t_end.value_or(10.0);
   require(std::isfinite(Tend) && Tend > 0, o.periods ? "--periods" : "--t-end",
@@ -633,7 +646,10 @@ std::function<int()> add_run_command(CLI::App& app) {
     if (given("--every")) o->every = parse_integer("--every", o->every_text);
     if (given("--digits")) {
       const long long d = parse_integer("--digits", o->digits_text);
-      require(d >= 1 && d <= 100000, "--digits", fmt::format("{}: give 1 to 100000 digits", d));
+      require(d >= kMpfrMinDigits && d <= kMpfrMaxDigits, "--digits",
+              fmt::format("must lie in [{}, {}], got {} (the solvers' tolerances are doubles, "
+                          "which end near 1e-308)",
+                          kMpfrMinDigits, kMpfrMaxDigits, d));
       o->digits = static_cast<unsigned>(d);
     }
     o->plan_arg = given("--h0")  ? "--h0"
@@ -667,8 +683,21 @@ std::function<int()> add_run_command(CLI::App& app) {
     require(!o->digits || o->precision == "mpfr", "--digits", "applies to --precision mpfr only");
     require(o->method == "del-generic" || !given("--discrete-lagrangian"), "--discrete-lagrangian",
             "applies to --method del-generic only");
-    if (o->tol)
+    if (o->tol) {
       require(std::isfinite(*o->tol) && *o->tol > 0, "--tol", "must be a positive number");
+      // The range ExtendedDelIntegrator accepts, checked here so that no output starts first.
+      const double u =
+          with_precision(parse_precision(o->precision), o->digits.value_or(18), [](auto zero) {
+            using T = decltype(zero);
+            return to_double(unit_roundoff<T>());
+          });
+      require(*o->tol >= u && *o->tol < 1e-2, "--tol",
+              fmt::format("must lie in [{:.3g}, 1e-2) (the round-off of --precision {} up to "
+                          "1e-2), got {:.3g}",
+                          u, o->precision, *o->tol));
+    }
+    require(!(given("--h") && given("--h0")), "--h0",
+            "give --h0 or --h (the first step of an adaptive method), not both");
     if (o->c) {
       require(std::isfinite(*o->c) && *o->c > 0, "--c", "the speed of light must be positive");
       // c² and c⁴ occur in the energy and the exact orbit: they must be finite numbers.

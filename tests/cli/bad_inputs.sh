@@ -30,6 +30,10 @@ row() {
   if [ "$lines" != 1 ] || ! grep -qF -- "$word" stderr; then
     bad "vibook $*: want one stderr line naming '$word', got $lines: $(cat stderr)"; return
   fi
+  if [ "$want" = 2 ] && [ -s stdout ]; then
+    bad "vibook $*: status 2 must come before any output, but stdout has: $(head -c 200 stdout)"
+    return
+  fi
   local extra; extra=$(comm -13 <(echo "$before") <(echo "$after"))
   if [ -n "$extra" ] && { [ "$want" != 3 ] || echo "$extra" | grep -qv '\.partial$'; }; then
     bad "vibook $*: left files behind: $extra"; return
@@ -89,6 +93,18 @@ row 2 "--solver"         "${R[@]}" --solver generic --csv a.csv
 row 2 "--precision"      "${R[@]}" --precision quad --csv a.csv
 row 2 "--digits"         run --problem kepler --method epavi --digits 30 --csv a.csv
 row 2 "--digits"         run --problem kepler --method epavi --precision mpfr --digits x --csv a.csv
+# Ranges that depend on the precision are checked before the CSV header (--csv -: stdout).
+E=(run --problem kepler --method epavi --periods 0.01 --csv -)
+row 2 "--digits"         "${E[@]}" --precision mpfr --digits 1
+row 2 "--digits"         "${E[@]}" --precision mpfr --digits 2
+row 2 "--digits"         "${E[@]}" --precision mpfr --digits 301
+row 2 "--digits"         "${E[@]}" --precision mpfr --digits 100000
+row 2 "--tol"            "${E[@]}" --tol 1
+row 2 "--tol"            "${E[@]}" --tol 1e-30
+row 2 "--tol"            "${E[@]}" --precision mpfr --digits 30 --tol 1e-40
+row 2 "--h0"             "${E[@]}" --h 0.01 --h0 0.02
+row 2 "--h"              "${E[@]}" --e 0.999999
+row 2 "--h0"             "${E[@]}" --e 0.99 --h0 0.01
 row 2 "--alpha"          "${R[@]}" --alpha 0.5 --csv a.csv
 row 2 "--alpha"          run --problem kepler --method vi1 --alpha "" --csv a.csv
 row 2 "--alpha"          run --problem kepler --method vi1 --alpha 1.5 --csv a.csv
@@ -119,8 +135,8 @@ row 2 "ID"               figure no-such-figure --out f
 # --- numerical failures: status 3, where and from which state ----------------------------------
 row 3 "at step 1"        run --problem kepler --method del-generic --q0 1,0 --p0 0,1.4 --h 2 --t-end 100 --csv d.csv
 row 2 "--q0/--p0"        run --problem harmonic --method sv --q0 1e300 --csv a.csv  # H = inf: before any work (#27)
-row 3 "step"             run --problem kepler --method avi1 --e 0.99 --csv a.csv
-row 3 "no admissible time step" run --problem kepler --method epavi --e 0.99 --h0 0.001 --csv a.csv
+row 3 "step"             run --problem kepler --method avi1 --e 0.99 --h0 0.0005 --csv a.csv
+row 3 "no admissible time step" run --problem kepler --method epavi --e 0.99 --h0 0.0005 --csv a.csv
 # --- the symbolic engine -----------------------------------------------------------------------
 M=(modified --method sv)
 row 2 "--order"          "${M[@]}"

@@ -50,11 +50,18 @@ using mpfr_real = boost::multiprecision::number<boost::multiprecision::mpfr_floa
 /// Sets the precision (decimal digits) of mpfr_real values created while the object lives;
 /// restores the previous precision afterwards. In Boost 1.74 this default is process-wide, not
 /// per thread: set it before starting threads that create mpfr_real values, never inside them.
+/// The decimal digits `--precision mpfr` accepts. Below 8 the round-off (above 1e-8) cannot
+/// resolve the solvers' default tolerance of 4 units; above 300 it falls below what a double
+/// represents, and the solvers' tolerances (Options::tol, Newton's step_rel) are doubles.
+inline constexpr unsigned kMpfrMinDigits = 8, kMpfrMaxDigits = 300;
+
 class MpfrDigits {
  public:
   explicit MpfrDigits(unsigned digits) : previous_(mpfr_real::default_precision()) {
-    if (digits < 2 || digits > 10000)
-      throw ArgumentError("--digits", "must lie in [2, 10000], got " + std::to_string(digits));
+    if (digits < kMpfrMinDigits || digits > kMpfrMaxDigits)
+      throw ArgumentError("--digits", "must lie in [" + std::to_string(kMpfrMinDigits) + ", " +
+                                          std::to_string(kMpfrMaxDigits) + "], got " +
+                                          std::to_string(digits));
     mpfr_real::default_precision(digits);
   }
   ~MpfrDigits() { mpfr_real::default_precision(previous_); }
