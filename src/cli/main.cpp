@@ -9,11 +9,13 @@
 #include <map>
 #include <string_view>
 #include <system_error>
+#include <vector>
 
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
 #include "cli.hpp"
+#include "signals.hpp"
 #include "vibook/claims/ledger.hpp"
 #include "vibook/core/errors.hpp"
 #include "vibook/core/output_file.hpp"
@@ -47,10 +49,19 @@ int cmd_list() {
 
 void ensure_writable_dir(const fs::path& dir, const char* arg = "--out") {
   std::error_code ec;
+  // The levels this call creates are recorded: a signal before anything is written there
+  // removes them again (they are still empty), so an interrupted command leaves no trace.
+  std::vector<fs::path> created;
+  for (fs::path p = fs::absolute(dir, ec).lexically_normal(); !p.empty() && !fs::exists(p, ec);
+       p = p.parent_path()) {
+    created.push_back(p);
+    if (p == p.parent_path()) break;
+  }
   fs::create_directories(dir, ec);
   if (ec || !fs::is_directory(dir)) {
     throw ArgumentError(arg, fmt::format("cannot create directory '{}'", dir.string()));
   }
+  for (auto it = created.rbegin(); it != created.rend(); ++it) track_created_directory(*it);
   const fs::path probe = dir / ".vibook-write-test";
   std::ofstream f(probe);
   if (!f) throw ArgumentError(arg, fmt::format("directory '{}' is not writable", dir.string()));
@@ -287,6 +298,8 @@ int help_exit(int rc) {
 int main(int argc, char** argv) {
   // A closed pipe (`vibook … | head -1`) is a write error, status 4, not death by SIGPIPE.
   std::signal(SIGPIPE, SIG_IGN);
+  // SIGINT, SIGTERM, SIGHUP: temporaries removed, status 128 + N (before any thread starts).
+  vibook::cli::start_signal_thread();
   vibook::cli::set_command_line(argc, argv);
   CLI::App app{
       "vibook — variational integrators, checked against their papers.\n"

@@ -17,6 +17,7 @@
 
 #include "args.hpp"
 #include "cli.hpp"
+#include "signals.hpp"
 #include "vibook/avi/avi.hpp"
 #include "vibook/core/angle.hpp"
 #include "vibook/core/errors.hpp"
@@ -98,31 +99,10 @@ void require_finite_row(const Row& row, const std::vector<std::string>& cols) {
       throw NumericalError(fmt::format("the output column {} is not finite ({})", cols[i], row[i]));
 }
 
-// SIGINT, SIGTERM and SIGHUP during an integration: the handler only records the signal; the
-// step loop sees it at its next step (Progress::update) and stops like a failed step, keeping
-// the rows written so far in FILE.partial. Installed for the integration only, so every other
-// phase (and every other command) keeps the default action.
-volatile std::sig_atomic_t g_signal = 0;
-extern "C" void record_signal(int s) { g_signal = s; }
-
-class SignalGuard {
- public:
-  SignalGuard() {
-    struct sigaction sa {};
-    sa.sa_handler = record_signal;
-    sigemptyset(&sa.sa_mask);
-    for (int i = 0; i < 3; ++i) ::sigaction(kSignals[i], &sa, &old_[i]);
-  }
-  ~SignalGuard() {
-    for (int i = 0; i < 3; ++i) ::sigaction(kSignals[i], &old_[i], nullptr);
-  }
-  SignalGuard(const SignalGuard&) = delete;
-  SignalGuard& operator=(const SignalGuard&) = delete;
-
- private:
-  static constexpr int kSignals[3] = {SIGINT, SIGTERM, SIGHUP};
-  struct sigaction old_[3]{};
-};
+// SIGINT, SIGTERM and SIGHUP during an integration are deferred to the step loop
+// (signals.hpp): it sees them at its next step (Progress::update) and stops like a failed
+// step, keeping the rows written so far in FILE.partial. Every other phase (and every other
+// command) ends at once, with its temporaries removed.
 
 // A failure of the step loop, rethrown with its place and what was kept: an interruption stays
 // an interruption (exit 128 + signal), anything else is a numerical failure (exit 3).
@@ -135,12 +115,8 @@ class Progress {
  public:
   explicit Progress(long long total) : total_(total), tty_(::isatty(STDERR_FILENO) != 0) {}
   void update(long long k) {
-    if (g_signal != 0) {
-      const int s = g_signal;
-      throw Interrupted(s, fmt::format("interrupted by {}", s == SIGINT    ? "SIGINT"
-                                                            : s == SIGTERM ? "SIGTERM"
-                                                                           : "SIGHUP"));
-    }
+    if (const int s = pending_signal(); s != 0)
+      throw Interrupted(s, fmt::format("interrupted by {}", signal_name(s)));
     if (!tty_ || (k & 0x3fff) != 0) return;
     const auto now = std::chrono::steady_clock::now();
     if (now - start_ < std::chrono::seconds(2) || now - last_ < std::chrono::milliseconds(500))
@@ -729,13 +705,13 @@ std::function<int()> add_run_command(CLI::App& app) {
               "relativistic-kepler runs in proper time: use --tau-end");
       require(!o->e, "--e", "does not apply to relativistic-kepler; give --q0 and --p0");
       const relativistic::Problem P(*o->c);  // c <= 0: ArgumentError naming --c
-      const SignalGuard signals;
+      const DeferSignals signals;
       if (o->method == "k-symplectic")
         return integrate_relativistic(P, relativistic::KSymplectic{P}, *o);
       if (o->method == "vi") return integrate_relativistic(P, relativistic::Vi322{P}, *o);
       return integrate_relativistic(P, relativistic::Vi2{P}, *o);
     }
-    const SignalGuard signals;  // from here on, an interruption keeps FILE.partial
+    const DeferSignals signals;  // from here on, an interruption keeps FILE.partial
     require(!o->c, "--c", "only applies to --problem relativistic-kepler");
     require(!o->tau_end, "--tau-end", "only applies to --problem relativistic-kepler");
     if (o->problem == "harmonic") return dispatch_method(HarmonicOscillator{}, *o);

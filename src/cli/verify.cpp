@@ -1190,8 +1190,7 @@ int run_verify(const VerifyOptions& o, const verify::TypedDiscreteLagrangian& dl
     write_output_file((tmp / "index.html").string(), html.str(), "--report");
     commit_directory(tmp, final_dir);
   } catch (...) {
-    std::error_code ec;
-    fs::remove_all(tmp, ec);
+    discard_temporary_directory(tmp);
     throw;
   }
   std::cout << "report: " << (final_dir / "index.html").string() << '\n';

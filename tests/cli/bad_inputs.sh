@@ -240,6 +240,38 @@ for sig in INT TERM; do
     bad "SIG$sig during run: status $st (want $want), left $(ls -A sg), said $(cat sg.err)"
 done
 rm -rf sg sg.err
+# --- a signal during figures or claims: 128 + signal, no hidden temporary left, and a directory
+# the command created (still empty) removed; what the user had stays ---------------------------
+for sig in INT TERM HUP; do
+  rm -rf sg && mkdir -p sg/D && echo mine > sg/D/notes.txt
+  (cd sg && exec "$V" figures --out D 2>../sg.err) & pid=$!
+  sleep 2
+  kill -"$sig" "$pid"; wait "$pid"; st=$?
+  want=$((128 + $(kill -l "$sig")))
+  hidden=$(find sg -name '.*' | head -3)
+  [ "$st" = "$want" ] && [ -z "$hidden" ] && [ "$(cat sg/D/notes.txt)" = mine ] &&
+    [ "$(wc -l <sg.err)" = 1 ] && grep -q "interrupted by SIG$sig" sg.err && pass=$((pass + 1)) ||
+    bad "SIG$sig during figures: status $st (want $want), hidden: $hidden, said $(cat sg.err)"
+  rm -rf sg && mkdir sg
+  (cd sg && exec "$V" claims --html-dir new/H 2>../sg.err) & pid=$!
+  sleep 2
+  kill -"$sig" "$pid"; wait "$pid"; st=$?
+  [ "$st" = "$want" ] && [ -z "$(ls -A sg)" ] && pass=$((pass + 1)) ||
+    bad "SIG$sig during claims --html-dir: status $st (want $want), left $(ls -A sg)"
+done
+rm -rf sg sg.err
+# --- a gnuplot that never returns is stopped after VIBOOK_GNUPLOT_TIMEOUT seconds -----------------
+mkdir -p slow && printf '#!/bin/sh\nexec sleep 600\n' > slow/gnuplot && chmod +x slow/gnuplot
+start=$(date +%s)
+PATH="$PWD/slow:$PATH" VIBOOK_GNUPLOT_TIMEOUT=2 "$V" figure vermeeren-fig1 --out gp >/dev/null 2>stderr
+st=$?
+took=$(($(date +%s) - start))
+[ "$st" = 1 ] && [ "$took" -lt 60 ] && grep -q "did not finish .* within 2 s" stderr &&
+  pass=$((pass + 1)) || bad "hanging gnuplot: status $st after ${took}s: $(cat stderr)"
+PATH="$PWD/slow:$PATH" VIBOOK_GNUPLOT_TIMEOUT=x "$V" figure vermeeren-fig1 --out gp >/dev/null 2>stderr
+[ $? = 1 ] && grep -q "VIBOOK_GNUPLOT_TIMEOUT='x'" stderr && pass=$((pass + 1)) ||
+  bad "VIBOOK_GNUPLOT_TIMEOUT=x: $(cat stderr)"
+rm -rf slow gp
 # --- standard output that cannot be written: status 4 ------------------------------------------
 if [ -w /dev/full ]; then
   "$V" run --problem kepler --method sv --csv - >/dev/full 2>stderr

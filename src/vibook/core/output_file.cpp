@@ -25,6 +25,33 @@ namespace {
 
 std::string quoted(const fs::path& p) { return "'" + p.string() + "'"; }
 
+// The temporaries that exist now (remove_temporaries, called when a signal ends the process).
+struct Temporaries {
+  std::mutex mutex;
+  std::vector<fs::path> paths;         // temporary files and directories: removed whole
+  std::vector<fs::path> created_dirs;  // output directories we created: removed when empty
+};
+Temporaries& temporaries() {
+  static Temporaries t;
+  return t;
+}
+void track(const fs::path& p) {
+  auto& t = temporaries();
+  const std::lock_guard lock(t.mutex);
+  t.paths.push_back(p);
+}
+void untrack(const fs::path& p) {
+  auto& t = temporaries();
+  const std::lock_guard lock(t.mutex);
+  std::erase(t.paths, p);
+}
+// Removes a temporary file or directory and forgets it.
+void discard(const fs::path& p) {
+  std::error_code ec;
+  fs::remove_all(p, ec);
+  untrack(p);
+}
+
 std::string last_error() { return std::strerror(errno); }
 
 fs::path parent_of(const fs::path& p) {
@@ -101,27 +128,28 @@ OutputFile::OutputFile(const std::string& path, std::string arg, bool allow_stdo
   if (fd < 0)
     throw IoError("cannot create a temporary file beside " + quoted(final_) + ": " + last_error());
   tmp_ = tmpl;
+  track(tmp_);
   struct stat st {};
   const mode_t mode =
       ::stat(final_.c_str(), &st) == 0 ? (st.st_mode & 07777) : (0666 & ~process_umask());
   if (::fchmod(fd, mode) != 0 || ::close(fd) != 0) {
-    std::error_code ec;
-    fs::remove(tmp_, ec);
+    discard(tmp_);
     throw IoError("cannot prepare " + quoted(tmp_) + ": " + last_error());
   }
   file_.open(tmp_, std::ios::out | std::ios::trunc | std::ios::binary);
   if (!file_) {
-    std::error_code ec;
-    fs::remove(tmp_, ec);
+    discard(tmp_);
     throw IoError("cannot open " + quoted(tmp_) + " for writing: " + last_error());
   }
 }
 
 OutputFile::~OutputFile() {
-  if (done_ || kind_ != OutputKind::replace) return;
-  file_.close();
-  std::error_code ec;
-  fs::remove(tmp_, ec);
+  if (kind_ != OutputKind::replace) return;
+  if (!done_) {
+    file_.close();
+    discard(tmp_);
+  }
+  untrack(tmp_);
 }
 
 std::ostream& OutputFile::stream() {
@@ -143,22 +171,21 @@ void OutputFile::commit() {
     if (failed) throw IoError("cannot write " + quoted(final_) + ": " + why);
     return;
   }
-  std::error_code ec;
   if (failed) {
-    fs::remove(tmp_, ec);
+    discard(tmp_);
     throw IoError("cannot write " + quoted(final_) + ": " + why + " (nothing was replaced)");
   }
   // The final name must still be a regular file or absent: never rename over anything else.
   struct stat st {};
   if (::lstat(final_.c_str(), &st) == 0 && !S_ISREG(st.st_mode)) {
-    fs::remove(tmp_, ec);
+    discard(tmp_);
     throw IoError(quoted(final_) +
                   " stopped being a regular file while vibook ran; nothing was "
                   "replaced");
   }
   if (::rename(tmp_.c_str(), final_.c_str()) != 0) {
     const std::string e = last_error();
-    fs::remove(tmp_, ec);
+    discard(tmp_);
     throw IoError("cannot rename " + quoted(tmp_) + " to " + quoted(final_) + ": " + e);
   }
 }
@@ -173,7 +200,6 @@ std::string OutputFile::keep_partial() {
   file_.close();
   if (kind_ == OutputKind::write_through)
     return "the rows before it were written to " + quoted(final_);
-  std::error_code ec;
   fs::path partial = final_;
   partial += ".partial";
   bool kept = false;
@@ -185,7 +211,7 @@ std::string OutputFile::keep_partial() {
     kept = false;
   }
   if (kept) return "the rows before it are in " + quoted(partial) + " (incomplete)";
-  fs::remove(tmp_, ec);
+  discard(tmp_);
   return "no partial output was kept";
 }
 
@@ -215,9 +241,10 @@ fs::path temporary_directory_for(const fs::path& final_dir) {
   if (::mkdtemp(tmpl.data()) == nullptr)
     throw IoError("cannot create a temporary directory in " + quoted(parent) + ": " + last_error());
   // mkdtemp makes it private (0700); the final directory gets the usual mode.
+  track(tmpl);
   if (::chmod(tmpl.c_str(), 0777 & ~process_umask()) != 0) {
     const std::string e = last_error();
-    fs::remove(tmpl, ec);
+    discard(tmpl);
     throw IoError("cannot set the mode of " + quoted(fs::path(tmpl)) + ": " + e);
   }
   return tmpl;
@@ -229,6 +256,7 @@ void commit_directory(const fs::path& tmp_dir, const fs::path& final_dir) {
   if (::lstat(final_dir.c_str(), &st) != 0) {
     if (::rename(tmp_dir.c_str(), final_dir.c_str()) != 0)
       throw IoError("cannot rename the new output onto " + quoted(final_dir) + ": " + last_error());
+    untrack(tmp_dir);
     return;
   }
   if (!S_ISDIR(st.st_mode))
@@ -261,7 +289,26 @@ void commit_directory(const fs::path& tmp_dir, const fs::path& final_dir) {
     if (::rename(from.c_str(), to.c_str()) != 0)
       throw IoError("cannot write " + quoted(to) + ": " + last_error());
   }
-  fs::remove(tmp_dir, ec);
+  discard(tmp_dir);
+}
+
+void discard_temporary_directory(const fs::path& tmp_dir) { discard(tmp_dir); }
+
+void track_created_directory(const fs::path& dir) {
+  auto& t = temporaries();
+  const std::lock_guard lock(t.mutex);
+  t.created_dirs.push_back(dir);
+}
+
+void remove_temporaries() noexcept {
+  auto& t = temporaries();
+  const std::lock_guard lock(t.mutex);
+  std::error_code ec;
+  for (const auto& p : t.paths) fs::remove_all(p, ec);
+  t.paths.clear();
+  // Deepest first; rmdir removes only an empty directory, so nothing anyone put there goes.
+  for (auto it = t.created_dirs.rbegin(); it != t.created_dirs.rend(); ++it) ::rmdir(it->c_str());
+  t.created_dirs.clear();
 }
 
 }  // namespace vibook

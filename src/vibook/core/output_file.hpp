@@ -73,4 +73,17 @@ std::filesystem::path temporary_directory_for(const std::filesystem::path& final
 /// of another kind, is refused (IoError) and left alone.
 void commit_directory(const std::filesystem::path& tmp_dir, const std::filesystem::path& final_dir);
 
+/// Removes a directory from temporary_directory_for that will not be committed (after a
+/// failure).
+void discard_temporary_directory(const std::filesystem::path& tmp_dir);
+
+/// Records an output directory this process created (empty so far): remove_temporaries
+/// removes it again while it is still empty.
+void track_created_directory(const std::filesystem::path& dir);
+
+/// Removes every temporary file and directory that exists now (written but not yet renamed
+/// onto its final name), and the created output directories that are still empty. For a
+/// signal that ends the process: the command line calls it from its signal thread.
+void remove_temporaries() noexcept;
+
 }  // namespace vibook

@@ -92,8 +92,7 @@ FigureOutput make_figure(const Check& check, const std::filesystem::path& out_ro
     }
     commit_directory(tmp, out.dir);
   } catch (...) {
-    std::error_code ec;
-    std::filesystem::remove_all(tmp, ec);
+    discard_temporary_directory(tmp);
     throw;
   }
   return out;

@@ -5,9 +5,13 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <chrono>
+#include <cmath>
+#include <csignal>
 #include <cstdlib>
 #include <fstream>
 #include <sstream>
+#include <thread>
 #include <vector>
 
 extern char** environ;
@@ -43,6 +47,17 @@ std::filesystem::path scripts_dir() {
   return VIBOOK_FIGURES_DIR;
 }
 
+double gnuplot_timeout_seconds() {
+  if (const char* env = std::getenv("VIBOOK_GNUPLOT_TIMEOUT"); env && *env) {
+    char* end = nullptr;
+    const double t = std::strtod(env, &end);
+    if (end != env && *end == '\0' && std::isfinite(t) && t > 0) return t;
+    throw PlotError(std::string("VIBOOK_GNUPLOT_TIMEOUT='") + env +
+                    "' is not a positive number of seconds");
+  }
+  return 120;
+}
+
 void render(const std::string& id, const std::filesystem::path& data_dir) {
   const auto gnuplot = find_on_path("gnuplot");
   if (gnuplot.empty()) {
@@ -67,12 +82,39 @@ void render(const std::string& id, const std::filesystem::path& data_dir) {
                                    0644);
   posix_spawn_file_actions_adddup2(&fa, STDOUT_FILENO, STDERR_FILENO);
   posix_spawn_file_actions_addopen(&fa, STDIN_FILENO, "/dev/null", O_RDONLY, 0);
+  // gnuplot starts with no signal blocked and SIGPIPE at its default action, whatever the
+  // command line set for itself (it blocks SIGINT/SIGTERM/SIGHUP for its signal thread and
+  // ignores SIGPIPE; both would otherwise be inherited through exec).
+  posix_spawnattr_t attr;
+  posix_spawnattr_init(&attr);
+  sigset_t none, pipe;
+  sigemptyset(&none);
+  sigemptyset(&pipe);
+  sigaddset(&pipe, SIGPIPE);
+  posix_spawnattr_setsigmask(&attr, &none);
+  posix_spawnattr_setsigdefault(&attr, &pipe);
+  posix_spawnattr_setflags(&attr, POSIX_SPAWN_SETSIGMASK | POSIX_SPAWN_SETSIGDEF);
   pid_t pid = 0;
-  const int rc = posix_spawn(&pid, gnuplot.c_str(), &fa, nullptr, argv.data(), environ);
+  const int rc = posix_spawn(&pid, gnuplot.c_str(), &fa, &attr, argv.data(), environ);
   posix_spawn_file_actions_destroy(&fa);
+  posix_spawnattr_destroy(&attr);
   if (rc != 0) throw PlotError("could not start gnuplot for " + id);
+  // A gnuplot that never returns must not hang the command: it is killed after the timeout.
+  const double timeout = gnuplot_timeout_seconds();
+  const auto deadline = std::chrono::steady_clock::now() + std::chrono::duration<double>(timeout);
   int status = 0;
-  if (waitpid(pid, &status, 0) < 0 || !WIFEXITED(status) || WEXITSTATUS(status) != 0) {
+  pid_t done = 0;
+  while ((done = waitpid(pid, &status, WNOHANG)) == 0) {
+    if (std::chrono::steady_clock::now() >= deadline) {
+      ::kill(pid, SIGKILL);
+      waitpid(pid, &status, 0);
+      throw PlotError("gnuplot did not finish " + script.string() + " within " +
+                      std::to_string(static_cast<long>(timeout)) +
+                      " s and was stopped (VIBOOK_GNUPLOT_TIMEOUT sets the limit in seconds)");
+    }
+    std::this_thread::sleep_for(std::chrono::milliseconds(20));
+  }
+  if (done < 0 || !WIFEXITED(status) || WEXITSTATUS(status) != 0) {
     std::ifstream in(log);
     std::stringstream msg;
     msg << in.rdbuf();

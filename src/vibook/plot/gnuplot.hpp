@@ -28,8 +28,13 @@ std::filesystem::path installed_path(const std::string& relative);
 /// source tree's figures/ (compiled in).
 std::filesystem::path scripts_dir();
 
+/// How long one gnuplot run may take before it is killed: `$VIBOOK_GNUPLOT_TIMEOUT` seconds
+/// if set (PlotError if it is not a positive number), else 120.
+double gnuplot_timeout_seconds();
+
 /// Render figure `id` from the CSV files in `data_dir` to `data_dir/ID.svg` and `.png`.
-/// gnuplot's own messages go to data_dir/gnuplot.log. Throws PlotError.
+/// gnuplot's own messages go to data_dir/gnuplot.log. Throws PlotError, also when gnuplot
+/// runs longer than gnuplot_timeout_seconds() (it is then killed).
 void render(const std::string& id, const std::filesystem::path& data_dir);
 
 }  // namespace vibook::plot

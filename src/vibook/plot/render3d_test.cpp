@@ -1,5 +1,7 @@
 // Doctest of the off-screen 3-D renderer (the backend this build links: OSMesa here).
 #include <cmath>
+#include <stdexcept>
+#include <string>
 
 #include <doctest/doctest.h>
 
@@ -28,4 +30,20 @@ TEST_CASE("3-D render: a worldline-like helix is drawn, not blank, identical acr
   CHECK(blue > 2000);                    // the curve is there
   CHECK(white > a.rgba.size() / 4 / 2);  // on a white background
   CHECK(a.rgba == b.rgba);               // deterministic
+}
+
+TEST_CASE("write_png: a write that fails (a full device) is one exception naming the file") {
+  Image img;
+  img.width = img.height = 64;
+  img.rgba.assign(std::size_t(64) * 64 * 4, 128);
+  // /dev/full accepts the open and fails every write with ENOSPC, as a full disk does; the
+  // error reaches the caller as one message (libpng's own handler printed a second line).
+  try {
+    write_png("/dev/full", img);
+    FAIL("writing to /dev/full succeeded");
+  } catch (const std::runtime_error& e) {
+    const std::string what = e.what();
+    CHECK(what.find("cannot write /dev/full") != std::string::npos);
+    CHECK(what.find('\n') == std::string::npos);
+  }
 }
