@@ -190,11 +190,11 @@ int cmd_claims(bool json, const std::string& json_out, const std::string& html_d
       }
     }
   }
-  if (json) {
+  // The ledger is printed whatever else was written (--json-out and --html-dir write "also").
+  if (json)
     std::cout << ledger.to_json().dump(2) << '\n';
-  } else if (json_out.empty() && html_dir.empty()) {
+  else
     std::cout << ledger.to_table();
-  }
   return cli::kOk;
 }
 
@@ -329,7 +329,8 @@ int main(int argc, char** argv) {
   cl->add_option("--check", cl_only,
                  "run only these checks (IDs of `vibook list`, repeatable); the other claims are "
                  "reported pending");
-  cl->add_option("--json-out", cl_json_out, "also write the JSON ledger to this file");
+  cl->add_option("--json-out", cl_json_out,
+                 "also write the JSON ledger to this file (the ledger is still printed)");
   cl->add_option("--html-dir", cl_html_dir,
                  "also write the book's HTML claims tables into this directory");
   cl->add_option("--figures-dir", cl_figures_dir,

@@ -369,12 +369,26 @@ int run_verify(const VerifyOptions& o, const verify::TypedDiscreteLagrangian& dl
         const double det = d.D12.determinant();
         const double scale = std::pow(d.D12.cwiseAbs().maxCoeff(), N);
         jreg = {{"det_D1D2", std::isfinite(det) ? json(det) : json(nullptr)}, {"h", p.h}};
-        if (!std::isfinite(det) || !(std::abs(det) > 1e-12 * scale))
+        // Not finite is not degenerate: say which value failed, and where.
+        const auto where = [&] {
+          return fmt::format("q0 = q(0) = {}, q1 = q(0) + h p(0) = {}, h = {:g}", vec_text(qa),
+                             vec_text(qb), p.h);
+        };
+        if (!std::isfinite(d.value))
+          throw NumericalError(fmt::format(
+              "the discrete Lagrangian is not finite at the initial state: L_d = {:g} at {} "
+              "(a logarithm or root of a negative number, a division by zero or an overflow)",
+              d.value, where()));
+        if (!d.D1.allFinite() || !d.D2.allFinite() || !std::isfinite(det))
+          throw NumericalError(fmt::format(
+              "the derivatives of the discrete Lagrangian are not finite at the initial state "
+              "(L_d = {:g}, det D1 D2 L_d = {:g}) at {}",
+              d.value, det, where()));
+        if (!(std::abs(det) > 1e-12 * scale))
           throw NumericalError(fmt::format(
               "the discrete Lagrangian is degenerate at the initial state: det D1 D2 L_d = {:.3g} "
-              "at q0 = q(0), q1 = q(0) + h p(0), h = {:g} (its discrete Euler-Lagrange equations "
-              "cannot be solved for q1)",
-              det, p.h));
+              "at {} (its discrete Euler-Lagrange equations cannot be solved for q1)",
+              det, where()));
       }))
     failed_line("regularity");
   js["regularity"] = jreg;

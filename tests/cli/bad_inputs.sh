@@ -191,6 +191,9 @@ row 2 "--report"         "${VF[@]}" --ld "$SIMPSON" --potential "$HH" --report .
 row 2 "--report"         "${VF[@]}" --ld "$SIMPSON" --potential "$HH" --report ""
 # A discrete Lagrangian without the velocity coupling D1 D2 L_d: degenerate, status 3.
 row 3 "degenerate"       "${VF[@]}" --ld 'q0^2 + q1^2 - h*V(q0)' --potential "$HH"
+row 3 "not finite"       "${VF[@]}" --ld 'h*((q1-q0)^2/(2*h^2) - log(-q0^2))' --potential "$HH"
+row 3 "not finite"       "${VF[@]}" --ld 'h*((q1-q0)^2/(2*h^2) - V(1e300*q0))' --potential "$HH"
+row 2 "divides by zero"  "${VF[@]}" --ld 'h*((q1-q0)^2/(2*h^2) - 0^(-1)*V(q0))' --potential "$HH"
 row 2 "twice"            verify --ld "$SIMPSON" --potential "$HH" --h-list 0.1,0.1,0.1
 row 2 "--json-out"       "${VF[@]}" --ld "$SIMPSON" --potential "$HH" --report rr --json-out rr/v.json
 row 2 "claims --check"   figure check-modified
@@ -286,6 +289,18 @@ fi
 # A link is refused and left alone; its target is not created.
 mkdir -p lk && ln -sf target.csv lk/l.csv && "$V" "${R[@]}" --csv lk/l.csv 2>/dev/null
 [ -L lk/l.csv ] && [ ! -e lk/target.csv ] && pass=$((pass + 1)) || bad "symlink replaced"
+
+# --- claims --figures-dir with a claims.json vibook did not write: status 2 naming the file --------
+mkdir -p fdir/vermeeren-fig1 && printf '{bad' > fdir/vermeeren-fig1/claims.json
+row 2 "fdir/vermeeren-fig1/claims.json" claims --figures-dir ../fdir
+printf '{"claims": []}\n' > fdir/vermeeren-fig1/claims.json
+row 2 "does not hold claim" claims --figures-dir ../fdir
+rm -rf fdir
+# claims --json-out writes the JSON *and* prints the ledger, as its help says.
+"$V" claims --check check-s-eq39 --json-out cj.json >stdout 2>stderr &&
+  grep -q "S-" stdout && [ -s cj.json ] && pass=$((pass + 1)) ||
+  bad "claims --json-out: the ledger was not printed: $(head -3 stdout) $(cat stderr)"
+rm -f cj.json
 
 echo "bad inputs: $pass passed, $fail failed"
 [ "$fail" = 0 ]

@@ -4,6 +4,7 @@
 #include <fstream>
 #include <stdexcept>
 
+#include "vibook/core/errors.hpp"
 #include "vibook/core/output_file.hpp"
 #include "vibook/core/parallel.hpp"
 #include "vibook/epavi/checks.hpp"
@@ -133,8 +134,27 @@ claims::Ledger measure_all(unsigned jobs, const std::optional<std::filesystem::p
   auto take = [&](const Check& c) {
     const auto file = figures_dir ? *figures_dir / c.id / "claims.json" : std::filesystem::path();
     if (figures_dir && c.is_figure && std::filesystem::exists(file)) {
-      std::ifstream f(file);
-      reused.push_back(claims::results_from_json(nlohmann::json::parse(f)));
+      // Read back, and refused (naming the file and the option) unless it is what `vibook
+      // figures` writes for this check: every claim the check measures, with a status.
+      std::vector<claims::ClaimResult> rs;
+      try {
+        std::ifstream f(file);
+        if (!f) throw std::runtime_error("cannot be read");
+        rs = claims::results_from_json(nlohmann::json::parse(f));
+      } catch (const std::exception& e) {
+        throw ArgumentError(
+            "--figures-dir",
+            "'" + file.string() + "' is not a claims.json of `vibook figures`: " + e.what());
+      }
+      for (const auto& id : c.claims)
+        if (std::none_of(rs.begin(), rs.end(), [&](const claims::ClaimResult& r) {
+              return r.id == id && r.status != claims::Status::pending;
+            }))
+          throw ArgumentError("--figures-dir", "'" + file.string() + "' does not hold claim " + id +
+                                                   " of " + c.id +
+                                                   " (written by another build? rerun `vibook "
+                                                   "figures`)");
+      reused.push_back(std::move(rs));
     } else {
       all.push_back(&c);
     }

@@ -189,6 +189,11 @@ class TypedDiscreteLagrangian::Parser {
       pos_ = exponent_at;
       fail("the exponent must be a nonzero integer or half-integer constant up to 32");
     }
+    GiNaC::numeric b;
+    if (k < 0 && constant_value(base, b) && b.is_zero()) {
+      pos_ = at;
+      fail("divides by zero (zero to a negative power)");
+    }
     Node n;
     n.op = Op::power;
     n.a = base;

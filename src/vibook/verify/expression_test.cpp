@@ -104,6 +104,8 @@ TEST_CASE("typed discrete Lagrangian: every malformed text is refused, naming it
   refused("(q1-q0)^2/h - sin()", kHenonHeiles, 0, "--ld", "unexpected ')'");
   refused("(q1-q0)^2/h - V(q0)/q1", kHenonHeiles, 0, "--ld", "divides by a vector");
   refused("(q1-q0)^2/h - V(q0)/(1-1)", kHenonHeiles, 0, "--ld", "divides by zero");
+  refused("(q1-q0)^2/h - V(q0)*0^(-1)", kHenonHeiles, 0, "--ld", "divides by zero");
+  refused("(q1-q0)^2/h - V(q0)*(2-2)^(-1/2)", kHenonHeiles, 0, "--ld", "divides by zero");
   refused("(q1-q0)^2/h - h^h", kHenonHeiles, 0, "--ld", "exponent must be");
   refused("(q1-q0)^2/h - V(q0)", "x^2 + q0", 0, "--potential", "unknown symbol 'q0'");
   refused("(q1-q0)^2/h - V(q0)", "V(x)", 0, "--potential", "unknown function 'V'");
