@@ -12,6 +12,7 @@
 #include "cli.hpp"
 #include "vibook/modified/engine.hpp"
 #include "vibook/verify/expression.hpp"
+#include "watchdog.hpp"
 
 namespace vibook::cli {
 
@@ -19,6 +20,9 @@ namespace {
 struct ModifiedOptions {
   std::string method, potential = "generic", what = "equation", format = "text", alpha;
   std::string dim_text, order_text;  // parsed whole, in base 10 (parse_integer)
+  std::string max_seconds_text;
+  double max_seconds = 0;
+  bool progress = false;
   int dim = 0, order = -1;
   bool cross_check = false, dim_given = false, alpha_given = false;
 };
@@ -71,6 +75,13 @@ int run_modified(ModifiedOptions o) {
   if (o.order < 0 || o.order > max_order)
     throw ArgumentError("--order",
                         fmt::format("{}: supported orders are 0 to {}", o.order, max_order));
+  if (!o.max_seconds_text.empty()) {
+    o.max_seconds = parse_number("--max-seconds", o.max_seconds_text);
+    if (!(o.max_seconds > 0 && o.max_seconds <= 1e7))
+      throw ArgumentError("--max-seconds", "must be a positive number of seconds, at most 1e7");
+  }
+  // Every argument checked: from here on the derivation shows its stage and keeps its limit.
+  const Watchdog watchdog("modified", o.max_seconds, o.progress);
   Engine E(make_discrete_lagrangian(m, p, dim, alpha), o.order);
   const JetSpace& J = E.jets();
   const std::string comment = f == Format::latex ? "%" : "#";
@@ -173,6 +184,10 @@ std::function<int()> add_modified_command(CLI::App& app) {
   c->add_option("--alpha", o->alpha,
                 "vi1, vi1-adjoint, vi2 with a concrete potential: the split φ^[1] = αU (default: "
                 "symbolic α)");
+  c->add_option("--max-seconds", o->max_seconds_text,
+                "stop with status 3, naming the stage reached, if the derivation takes longer");
+  c->add_flag("--progress", o->progress,
+              "show the stage on standard error also when it is not a terminal (every 5 s)");
   c->add_flag("--cross-check", o->cross_check,
               "equation: also derive it from the discrete Euler–Lagrange equation (Vermeeren "
               "§3.2) and require term-by-term agreement");

@@ -49,6 +49,8 @@ struct RunOptions {
   double h = 0.01;
   std::optional<double> t_end, periods, e, c, tau_end, h0, tol, alpha;
   std::optional<unsigned> digits;
+  double max_seconds = 0;  ///< 0: no limit
+  std::string max_seconds_text;
   std::vector<double> q0, p0;
   long long every = 1;
   std::string plan_arg = "--h";  ///< named when the step plan is impossible
@@ -113,12 +115,17 @@ void require_finite_row(const Row& row, const std::vector<std::string>& cols) {
 
 class Progress {
  public:
-  explicit Progress(long long total) : total_(total), tty_(::isatty(STDERR_FILENO) != 0) {}
+  Progress(long long total, double max_seconds)
+      : total_(total), max_seconds_(max_seconds), tty_(::isatty(STDERR_FILENO) != 0) {}
   void update(long long k) {
     if (const int s = pending_signal(); s != 0)
       throw Interrupted(s, fmt::format("interrupted by {}", signal_name(s)));
-    if (!tty_ || (k & 0x3fff) != 0) return;
+    if ((k & 0x3ff) != 0 || (!tty_ && max_seconds_ == 0)) return;
     const auto now = std::chrono::steady_clock::now();
+    // --max-seconds: the run stops like a failed step (status 3, rows kept in FILE.partial).
+    if (max_seconds_ > 0 && std::chrono::duration<double>(now - start_).count() >= max_seconds_)
+      throw NumericalError(fmt::format("stopped by --max-seconds {:g}", max_seconds_));
+    if (!tty_ || (k & 0x3fff) != 0) return;
     if (now - start_ < std::chrono::seconds(2) || now - last_ < std::chrono::milliseconds(500))
       return;
     last_ = now;
@@ -132,6 +139,7 @@ class Progress {
 
  private:
   long long total_;
+  double max_seconds_;
   bool tty_, shown_ = false;
   std::chrono::steady_clock::time_point start_ = std::chrono::steady_clock::now(), last_ = start_;
 };
@@ -243,7 +251,7 @@ int integrate(const Problem& P, Stepper stepper, bool implicit, const RunOptions
     rec.offer(k, row);
   };
 
-  Progress progress(steps);
+  Progress progress(steps, o.max_seconds);
   long long k = 0;
   State<N> before = s;  // the state a failing step started from
   try {
@@ -297,7 +305,7 @@ int integrate_relativistic(const relativistic::Problem& P, Method method, const 
     require_finite_row(row, cols);
     rec.offer(k, row);
   };
-  Progress progress(steps);
+  Progress progress(steps, o.max_seconds);
   long long k = 0;
   RelState before = s;
   try {
@@ -400,7 +408,7 @@ int integrate_adaptive_kepler(const RunOptions& o) {
     require_finite_row(row, cols);
     rec.offer(k, row);
   };
-  Progress progress(static_cast<long long>(Tend / h0));
+  Progress progress(static_cast<long long>(Tend / h0), o.max_seconds);
   long long k = 0;
   // The state the current step starts from, in double, for the message if it fails.
   double t_before = 0;
@@ -598,6 +606,8 @@ std::function<int()> add_run_command(CLI::App& app) {
                   "relativistic-kepler: final proper time (default 40)");
   run->add_option("--every", o->every_text, "write every K-th state (first and last always)");
   run->add_option("--csv", o->csv, "output file (default '-': standard output)");
+  run->add_option("--max-seconds", o->max_seconds_text,
+                  "stop with status 3 after this many seconds, keeping the rows in FILE.partial");
 
   return [o, run]() -> int {
     if (!*run) return -1;
@@ -620,6 +630,11 @@ std::function<int()> add_run_command(CLI::App& app) {
     if (given("--q0")) o->q0 = parse_list("--q0", o->q0_text);
     if (given("--p0")) o->p0 = parse_list("--p0", o->p0_text);
     if (given("--every")) o->every = parse_integer("--every", o->every_text);
+    if (given("--max-seconds")) {
+      o->max_seconds = parse_number("--max-seconds", o->max_seconds_text);
+      require(o->max_seconds > 0 && o->max_seconds <= 1e7, "--max-seconds",
+              "must be a positive number of seconds, at most 1e7");
+    }
     if (given("--digits")) {
       const long long d = parse_integer("--digits", o->digits_text);
       require(d >= kMpfrMinDigits && d <= kMpfrMaxDigits, "--digits",

@@ -30,6 +30,7 @@
 #include "cli.hpp"
 #include "vibook/core/output_file.hpp"
 #include "vibook/core/precision.hpp"
+#include "vibook/core/progress.hpp"
 #include "vibook/mechanics/del_solver.hpp"
 #include "vibook/mechanics/discrete_lagrangian.hpp"
 #include "vibook/modified/canonical.hpp"
@@ -40,6 +41,7 @@
 #include "vibook/verify/reference.hpp"
 #include "vibook/verify/verify.hpp"
 #include "vibook_book_stylesheet.hpp"
+#include "watchdog.hpp"
 
 namespace vibook::cli {
 
@@ -50,8 +52,10 @@ using nlohmann::json;
 struct VerifyOptions {
   std::string ld, potential, lagrangian, hamiltonian, dim, q0, p0,
       t_end = "5", h_list = "0.2,0.1,0.05,0.025,0.0125", expected = "2", order_tol = "0.1",
-      h = "0.05", steps = "100000", modified_order = "2", format = "text", json_out, report, floor;
-  bool json_given = false, report_given = false, timings = false, symmetric = false;
+      h = "0.05", steps = "100000", modified_order = "2", format = "text", json_out, report, floor,
+      max_seconds;
+  bool json_given = false, report_given = false, timings = false, symmetric = false,
+       progress = false;
 };
 
 struct Plan {
@@ -246,6 +250,7 @@ int run_verify(const VerifyOptions& o, const verify::TypedDiscreteLagrangian& dl
   auto run = [&](const std::string& name, auto&& body) {
     Phase ph;
     ph.name = name;
+    progress::set_stage(name);
     const auto t0 = Clock::now();
     try {
       body();
@@ -1216,6 +1221,15 @@ int run_verify(const VerifyOptions& o, const verify::TypedDiscreteLagrangian& dl
 }
 
 int run(const VerifyOptions& o) {
+  double max_seconds = 0;
+  if (!o.max_seconds.empty()) {
+    max_seconds = parse_number("--max-seconds", o.max_seconds);
+    if (!(max_seconds > 0 && max_seconds <= 1e7))
+      throw ArgumentError("--max-seconds", "must be a positive number of seconds, at most 1e7");
+  }
+  // The typed expressions' derivatives are derived symbolically: the limit covers that too.
+  const Watchdog watchdog("verify", max_seconds, o.progress);
+  progress::set_stage("reading the expressions and deriving L_d's derivatives");
   const int dim = o.dim.empty() ? 0 : static_cast<int>(parse_integer("--dim", o.dim));
   if (!o.dim.empty() && (dim < 1 || dim > verify::kMaxDim))
     throw ArgumentError("--dim", fmt::format("must lie in 1..{}", verify::kMaxDim));
@@ -1287,6 +1301,10 @@ std::function<int()> add_verify_command(CLI::App& app) {
   c->add_flag("--symmetric", o->symmetric,
               "the method is meant to be symmetric (its own adjoint): its time-reversibility "
               "becomes part of the verdict (otherwise it is reported only)");
+  c->add_option("--max-seconds", o->max_seconds,
+                "stop with status 3, naming the part reached, if verify takes longer");
+  c->add_flag("--progress", o->progress,
+              "show the part being measured on standard error also when it is not a terminal");
   c->add_flag("--timings", o->timings,
               "print the time of each part (and put it in the report, which then differs from "
               "run to run)");

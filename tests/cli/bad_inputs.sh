@@ -290,6 +290,15 @@ fi
 mkdir -p lk && ln -sf target.csv lk/l.csv && "$V" "${R[@]}" --csv lk/l.csv 2>/dev/null
 [ -L lk/l.csv ] && [ ! -e lk/target.csv ] && pass=$((pass + 1)) || bad "symlink replaced"
 
+# --- --max-seconds: status 3 naming the limit and the stage reached (run keeps FILE.partial) ------
+row 3 "--max-seconds 0.5 in: " modified --method sv --dim 3 --order 8 --max-seconds 0.5
+row 3 "stopped by --max-seconds" run --problem kepler --method sv --h 1e-6 --t-end 1e6 --csv a.csv --max-seconds 0.5
+row 3 "--max-seconds 0.5 in: " verify --ld "$SIMPSON" --potential "$HH" --steps 100000000 --max-seconds 0.5
+for bad_limit in 0 -1 x 1e9 nan; do
+  row 2 "--max-seconds" modified --method sv --order 2 --max-seconds "$bad_limit"
+done
+row 2 "--max-seconds" run --problem kepler --method sv --csv a.csv --max-seconds 0
+row 2 "--max-seconds" verify --ld "$SIMPSON" --potential "$HH" --max-seconds -2
 # --- claims --figures-dir with a claims.json vibook did not write: status 2 naming the file --------
 mkdir -p fdir/vermeeren-fig1 && printf '{bad' > fdir/vermeeren-fig1/claims.json
 row 2 "fdir/vermeeren-fig1/claims.json" claims --figures-dir ../fdir

@@ -14,6 +14,7 @@
 #include <iostream>
 #include <mutex>
 #include <system_error>
+#include <type_traits>
 
 #include "vibook/core/errors.hpp"
 
@@ -35,10 +36,21 @@ Temporaries& temporaries() {
   static Temporaries t;
   return t;
 }
-void track(const fs::path& p) {
+// Creates a temporary (mkstemp or mkdtemp on `tmpl`) and records it in one step under the
+// registry's lock, so that remove_temporaries never misses one created while it runs.
+template <class Create>
+auto create_tracked(std::string& tmpl, Create create) {
   auto& t = temporaries();
   const std::lock_guard lock(t.mutex);
-  t.paths.push_back(p);
+  const auto result = create(tmpl.data());
+  const bool ok = [&] {
+    if constexpr (std::is_pointer_v<decltype(result)>)
+      return result != nullptr;
+    else
+      return result >= 0;
+  }();
+  if (ok) t.paths.emplace_back(tmpl);
+  return result;
 }
 void untrack(const fs::path& p) {
   auto& t = temporaries();
@@ -124,11 +136,10 @@ OutputFile::OutputFile(const std::string& path, std::string arg, bool allow_stdo
   // A unique hidden name in the same directory (so that rename is atomic), with the mode the
   // final file will have: the existing file's, or the usual one for a new file.
   std::string tmpl = (parent_of(final_) / ("." + final_.filename().string() + ".XXXXXX")).string();
-  const int fd = ::mkstemp(tmpl.data());
+  const int fd = create_tracked(tmpl, ::mkstemp);
   if (fd < 0)
     throw IoError("cannot create a temporary file beside " + quoted(final_) + ": " + last_error());
   tmp_ = tmpl;
-  track(tmp_);
   struct stat st {};
   const mode_t mode =
       ::stat(final_.c_str(), &st) == 0 ? (st.st_mode & 07777) : (0666 & ~process_umask());
@@ -238,10 +249,9 @@ fs::path temporary_directory_for(const fs::path& final_dir) {
   std::error_code ec;
   fs::create_directories(parent, ec);
   std::string tmpl = (parent / ("." + final_dir.filename().string() + ".tmp-XXXXXX")).string();
-  if (::mkdtemp(tmpl.data()) == nullptr)
+  if (create_tracked(tmpl, ::mkdtemp) == nullptr)
     throw IoError("cannot create a temporary directory in " + quoted(parent) + ": " + last_error());
   // mkdtemp makes it private (0700); the final directory gets the usual mode.
-  track(tmpl);
   if (::chmod(tmpl.c_str(), 0777 & ~process_umask()) != 0) {
     const std::string e = last_error();
     discard(tmpl);
@@ -302,13 +312,22 @@ void track_created_directory(const fs::path& dir) {
 
 void remove_temporaries() noexcept {
   auto& t = temporaries();
-  const std::lock_guard lock(t.mutex);
-  std::error_code ec;
-  for (const auto& p : t.paths) fs::remove_all(p, ec);
+  // Locked for good: the process ends next, and no thread may create a temporary after this.
+  t.mutex.lock();
+  for (const auto& p : t.paths) {
+    // Another thread (or gnuplot) may still be writing into a temporary directory: retry
+    // until it is gone, for at most about a second.
+    std::error_code ec;
+    for (int attempt = 0; attempt < 50; ++attempt) {
+      fs::remove_all(p, ec);
+      if (!fs::exists(fs::symlink_status(p, ec))) break;
+      ::usleep(20000);
+    }
+  }
   t.paths.clear();
   // Deepest first; rmdir removes only an empty directory, so nothing anyone put there goes.
   for (auto it = t.created_dirs.rbegin(); it != t.created_dirs.rend(); ++it) ::rmdir(it->c_str());
   t.created_dirs.clear();
-}
+}  // t.mutex stays locked (see above)
 
 }  // namespace vibook

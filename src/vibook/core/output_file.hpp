@@ -83,7 +83,9 @@ void track_created_directory(const std::filesystem::path& dir);
 
 /// Removes every temporary file and directory that exists now (written but not yet renamed
 /// onto its final name), and the created output directories that are still empty. For a
-/// signal that ends the process: the command line calls it from its signal thread.
+/// signal that ends the process: the command line calls it from its signal thread. The
+/// registry stays locked afterwards (a thread creating a temporary then waits until the
+/// process ends): call it only right before the process ends.
 void remove_temporaries() noexcept;
 
 }  // namespace vibook

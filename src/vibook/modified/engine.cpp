@@ -7,6 +7,7 @@
 #include <cstdio>
 #include <sstream>
 
+#include "vibook/core/progress.hpp"
 #include "vibook/integrators/splitting.hpp"
 #include "vibook/kepler/kepler.hpp"
 #include "vibook/mechanics/discrete_lagrangian.hpp"
@@ -200,6 +201,7 @@ GiNaC::numeric Engine::mesh_coefficient(int i) {
 // V (13): x(t ∓ h/2) expanded around the midpoint t, then L_disc = L_d / h.
 const std::vector<ex>& Engine::l_disc() {
   if (!ldisc_.empty()) return ldisc_;
+  progress::set_stage("L_disc: expanding L_d in h to h^" + std::to_string(K_));
   const JetSpace& J = *dl_.jets;
   const int P0 = K_ + 4;
   SubsMap subs;
@@ -236,6 +238,7 @@ const std::vector<ex>& Engine::l_mesh() {
   std::vector<std::vector<ex>> Dl(K_ + 1);
   for (int k = 0; k <= K_; ++k) Dl[k].push_back(l[k]);
   for (int k = 0; k <= K_; ++k) {
+    progress::set_stage("L_mesh: h^" + std::to_string(k) + " of h^" + std::to_string(K_));
     ex m = 0;
     for (int i = 0; 2 * i <= k; ++i) {
       auto& row = Dl[k - 2 * i];
@@ -297,6 +300,8 @@ std::vector<std::vector<Series>> Engine::jets_along(const std::vector<Series>& F
   std::vector<std::vector<Series>> out(std::max(top, 2) + 1);
   out[2] = F;
   for (int l = 3; l <= top; ++l) {
+    progress::set_stage("derivatives of order " + std::to_string(l) + " of " + std::to_string(top) +
+                        " along the modified equation");
     out[l].resize(ns);
     for (int i = 0; i < ns; ++i) {
       // D along ẍ = F: ∂/∂x · ẋ (with the chain rule) + ∂/∂ẋ · F for the solved degrees of
@@ -429,7 +434,15 @@ std::vector<std::vector<ex>> Engine::solve_for_acceleration(const std::vector<st
 }
 
 const std::vector<std::vector<ex>>& Engine::modified_equation() {
-  if (f_.empty()) f_ = solve_for_acceleration(euler_lagrange(l_mesh()), K_);
+  if (f_.empty()) {
+    const auto& lm = l_mesh();
+    progress::set_stage("modified equation to h^" + std::to_string(K_) +
+                        ": Euler-Lagrange equations");
+    const auto E = euler_lagrange(lm);
+    progress::set_stage("modified equation to h^" + std::to_string(K_) +
+                        ": solving for the acceleration");
+    f_ = solve_for_acceleration(E, K_);
+  }
   return f_;
 }
 
@@ -554,7 +567,9 @@ const std::vector<ex>& Engine::l_mod() {
   int top = 2;
   for (const ex& e : m)
     for (int d : S) top = std::max(top, J.max_order(e, d));
-  const Series L = along(m, jets_along(F, top, K_ + 1), K_ + 1);
+  const auto jets = jets_along(F, top, K_ + 1);
+  progress::set_stage("L_mod to h^" + std::to_string(K_) + ": L_mesh along the modified equation");
+  const Series L = along(m, jets, K_ + 1);
   for (int k = 0; k <= K_; ++k) lmod_.push_back(GiNaC::expand(L.coeff(k)));
   return lmod_;
 }
@@ -564,6 +579,7 @@ std::vector<ex> Engine::h_mod() {
   if (solved().size() != static_cast<std::size_t>(dl_.jets->dofs()))
     throw ArgumentError("--what", "the modified Hamiltonian needs every degree of freedom solved");
   const auto& L = l_mod();
+  progress::set_stage("H_mod to h^" + std::to_string(K_) + ": Legendre transform");
   const JetSpace& J = *dl_.jets;
   const int n = J.dofs();
   std::vector<std::vector<ex>> P(L.size(), std::vector<ex>(n));
