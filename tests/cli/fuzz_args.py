@@ -55,9 +55,30 @@ def mutate(r, text):
     return "".join(t)
 
 
+FUNCS = ["sin", "cos", "exp", "log", "sqrt", "V", "tanh", "abs"]
+
+
+def nested(r, depth):
+    # A random scalar expression in q0, q1, h: nested functions, powers, V and grad(V) terms.
+    if depth == 0 or r.random() < 0.2:
+        return r.choice(["q0[1]", "q1[1]", "h", "(q1-q0)^2", "q0^2", "2", "1/3", "0.5",
+                         "V(q0)", "V((q0+q1)/2)", "grad(V)(q0)*(q1-q0)"])
+    k = r.random()
+    if k < 0.45:
+        f = r.choice(FUNCS)
+        inner = nested(r, depth - 1)
+        return f"V([{inner}, {inner}, {inner}])" if f == "V" and r.random() < 0.3 else f"{f}({inner})"
+    if k < 0.75:
+        return f"({nested(r, depth - 1)}){r.choice('+-*/')}({nested(r, depth - 1)})"
+    return f"({nested(r, depth - 1)})^{r.choice(['2', '3', '-1', '1/2', '-3/2', '32', '33', '0'])}"
+
+
 def verify_case(r):
     args = ["verify"]
-    if r.random() < 0.97:
+    if r.random() < 0.25:
+        # A consistent kinetic part plus a nested remainder: deep trees, every function, big powers.
+        args += ["--ld", f"h*((q1-q0)^2/(2*h^2) - {nested(r, r.randint(1, 8))})"]
+    elif r.random() < 0.97:
         args += ["--ld", mutate(r, r.choice(LDS)) if r.random() < 0.8 else r.choice(GARBAGE)]
     if r.random() < 0.97:
         args += ["--potential", mutate(r, r.choice(POTENTIALS)) if r.random() < 0.8 else r.choice(GARBAGE)]
@@ -73,9 +94,12 @@ def verify_case(r):
         "--expected-order": [["1", "2"], NUMBERS, GARBAGE],
         "--json-out": [["out.json"], ["", ".", "nodir/x.json"]],
         "--report": [["rep"], ["", ".", "nodir/rep", "rep/"]],
+        "--max-seconds": [["30", "2"], ["0", "-1", "1e9"], GARBAGE],
     }
     for name in r.sample(sorted(opts), r.choice([0, 1, 1, 2, 3])):
         args += [name, pick(r, *opts[name])]
+    if "--max-seconds" not in args:
+        args += ["--max-seconds", "40"]  # every case answers (status 3 past it), never hangs
     return args
 
 
@@ -121,17 +145,24 @@ def run_case(r):
                                            "vi1-adjoint", "vi2", "rk4", ""])]
         opts = {
             "--potential": [["generic", "kepler", "pendulum", "harmonic"], GARBAGE],
-            "--dim": [["1", "2"], ["0", "4", "-1"], GARBAGE],
+            "--dim": [["1", "2", "3"], ["0", "4", "-1", "03", "+2", " 2", "0x2", "2.0"], GARBAGE],
             "--what": [["equation", "lagrangian", "hamiltonian", "meshed", "disc"], GARBAGE],
             "--format": [["text", "latex", "python"], GARBAGE],
             "--alpha": [["1/2", "0.3", "1/3", "0", "1", "2.5e-1"], GARBAGE, NUMBERS],
+            "--max-seconds": [["30", "1"], ["0", "-1", "1e9", "1e-400"], GARBAGE],
         }
         if r.random() < 0.9:
-            args += ["--order", pick(r, ["0", "1", "2"], ["-1", "11", "1.5"], GARBAGE)]
+            args += ["--order", pick(r, ["0", "1", "2", "4"],
+                                     ["-1", "11", "1.5", "010", "011", "0x2", " 2", "+2", "",
+                                      "2 ", "08", "1e1", "99999999999999999999"], GARBAGE)]
         for name in r.sample(sorted(opts), r.choice([0, 1, 2, 2, 3])):
             args += [name, pick(r, *opts[name])]
         if r.random() < 0.3:
             args.append("--cross-check")
+        if r.random() < 0.2:
+            args.append("--progress")
+        if "--max-seconds" not in args:
+            args += ["--max-seconds", "40"]  # a large --dim/--order answers with status 3
     if r.random() < 0.05:
         args.insert(r.randint(1, len(args)), r.choice(["--nosuch", "-x", "--h=", "--"]))
     return args
