@@ -24,7 +24,7 @@ struct ModifiedOptions {
   double max_seconds = 0;
   bool progress = false;
   int dim = 0, order = -1;
-  bool cross_check = false, dim_given = false, alpha_given = false;
+  bool cross_check = false, reference = false, dim_given = false, alpha_given = false;
 };
 
 // Every symbol in the expressions, for the Python header (sorted by name, h first).
@@ -83,6 +83,7 @@ int run_modified(ModifiedOptions o) {
   // Every argument checked: from here on the derivation shows its stage and keeps its limit.
   const Watchdog watchdog("modified", o.max_seconds, o.progress);
   Engine E(make_discrete_lagrangian(m, p, dim, alpha), o.order);
+  E.use_reference_path(o.reference);
   const JetSpace& J = E.jets();
   const std::string comment = f == Format::latex ? "%" : "#";
   // Derive first, print after: the Python header lists every symbol that occurs.
@@ -188,6 +189,9 @@ std::function<int()> add_modified_command(CLI::App& app) {
                 "stop with status 3, naming the stage reached, if the derivation takes longer");
   c->add_flag("--progress", o->progress,
               "show the stage on standard error also when it is not a terminal (every 5 s)");
+  c->add_flag("--reference", o->reference,
+              "derive on the engine's slow reference path (GiNaC diff symbol by symbol, no early "
+              "truncation), to check the fast path's output against");
   c->add_flag("--cross-check", o->cross_check,
               "equation: also derive it from the discrete Euler–Lagrange equation (Vermeeren "
               "§3.2) and require term-by-term agreement");

@@ -290,11 +290,27 @@ std::vector<int> Engine::solved() const {
   return all;
 }
 
-std::vector<std::vector<Series>> Engine::jets_along(const std::vector<Series>& F, int top,
+std::vector<std::vector<Series>> Engine::jets_along(const std::vector<Series>& F,
+                                                    const std::vector<std::vector<ex>>& uses,
                                                     int cap) const {
   const JetSpace& J = *dl_.jets;
   const std::vector<int> S = solved();
   const int ns = static_cast<int>(S.size());
+  // first[ℓ]: the first power k of h whose expressions contain x^{(ℓ)}; it enters the sum
+  // multiplied by h^k, so O(h^{cap−k}) of it is all that is ever used. Truncating there keeps
+  // the high derivatives short (their series swell fastest: dimension 2–3, order 6–8).
+  int top = 2;
+  std::vector<int> first;
+  for (std::size_t k = 0; k < uses.size(); ++k)
+    for (const ex& e : uses[k])
+      for (int d : S) {
+        const int o = J.max_order(e, d);
+        if (o > top) top = o;
+        if (static_cast<int>(first.size()) <= o) first.resize(o + 1, cap);
+        for (int l = 2; l <= o; ++l) first[l] = std::min(first[l], static_cast<int>(k));
+      }
+  first.resize(std::max(top, 2) + 1, cap);
+  const auto level_cap = [&](int l) { return reference_ ? cap : std::max(1, cap - first[l]); };
   std::vector<bool> is_solved(J.dofs(), false);
   for (int d : S) is_solved[d] = true;
   std::vector<std::vector<Series>> out(std::max(top, 2) + 1);
@@ -303,10 +319,11 @@ std::vector<std::vector<Series>> Engine::jets_along(const std::vector<Series>& F
     progress::set_stage("derivatives of order " + std::to_string(l) + " of " + std::to_string(top) +
                         " along the modified equation");
     out[l].resize(ns);
+    const int lcap = level_cap(l);
     for (int i = 0; i < ns; ++i) {
       // D along ẍ = F: ∂/∂x · ẋ (with the chain rule) + ∂/∂ẋ · F for the solved degrees of
       // freedom; Σ_ℓ ∂/∂x^{(ℓ)} · x^{(ℓ+1)} for the free ones.
-      const Series& Sl = out[l - 1][i];
+      const Series Sl = out[l - 1][i].truncated(lcap);
       Series A;
       A.prec = Sl.prec;
       A.low = Sl.low;
@@ -316,19 +333,12 @@ std::vector<std::vector<Series>> Engine::jets_along(const std::vector<Series>& F
         B[j].low = Sl.low;
       }
       for (const ex& c : Sl.c) {
-        ex a = 0;
-        for (int d = 0; d < J.dofs(); ++d) {
-          a += J.partial(c, 0, d) * J.x(1, d);
-          if (!is_solved[d])
-            for (int r = 1; r <= std::max(J.max_order(c, d), 0); ++r)
-              a += c.diff(J.x(r, d)) * J.x(r + 1, d);
-        }
-        A.c.push_back(GiNaC::expand(a));
+        A.c.push_back(GiNaC::expand(J.total_except(c, is_solved)));
         for (int j = 0; j < ns; ++j) B[j].c.push_back(GiNaC::expand(c.diff(J.x(1, S[j]))));
       }
       Series r = A;
-      for (int j = 0; j < ns; ++j) r = r + (B[j] * F[j]).truncated(cap);
-      out[l][i] = r.truncated(cap);
+      for (int j = 0; j < ns; ++j) r = r + (B[j] * F[j].truncated(lcap)).truncated(lcap);
+      out[l][i] = r.truncated(lcap);
     }
   }
   return out;
@@ -345,9 +355,11 @@ SubsMap jet_subs(const JetSpace& J, const std::vector<int>& S,
 
 // Σ_k h^k (e[k] evaluated with subs), truncated at cap.
 Series shifted_sum(const JetSpace& J, const std::vector<ex>& e, const SubsMap& subs, int cap) {
-  SeriesEvaluator eval(J, subs, cap);
   Series out = Series::constant(0).truncated(cap);
   for (int k = 0; k < static_cast<int>(e.size()) && k < cap; ++k) {
+    // e[k] enters with h^k: O(h^{cap−k}) of it is enough (and all the jets hold, see
+    // jets_along).
+    SeriesEvaluator eval(J, subs, J.reference() ? cap : cap - k);
     Series term = eval(e[k]);
     Series hk = Series::constant(1);
     for (int r = 0; r < k; ++r) hk = hk * Series::h();
@@ -406,11 +418,10 @@ std::vector<std::vector<ex>> Engine::solve_for_acceleration(const std::vector<st
   for (int m = 1; m <= order; ++m) {
     if (m >= static_cast<int>(E.size())) throw std::logic_error("Euler–Lagrange series too short");
     const int cap = m + 1;
-    int top = 2;
+    std::vector<std::vector<ex>> uses(m + 1);
     for (int k = 0; k <= m; ++k)
-      for (int i : S)
-        for (int d : S) top = std::max(top, J.max_order(E[k][i], d));
-    const auto jets = jets_along(F, top, cap);
+      for (int i : S) uses[k].push_back(E[k][i]);
+    const auto jets = jets_along(F, uses, cap);
     std::vector<ex> r(n);
     for (int i = 0; i < n; ++i) {
       std::vector<ex> col;
@@ -499,20 +510,26 @@ std::vector<Series> Engine::interior_node(const SubsMap& subs, int cap) const {
   std::vector<Series> m(n);
   for (int i = 0; i < n; ++i)
     m[i] = (subs.at(dl_.q0[i]) + subs.at(dl_.q1[i])) * Series::constant(numeric(1, 2));
-  auto residual = [&](SubsMap& s, std::vector<Series>& g, std::vector<std::vector<Series>>* hess) {
+  auto residual = [&](SubsMap& s, std::vector<Series>& g, std::vector<std::vector<Series>>* hess,
+                      int at) {
     for (int i = 0; i < n; ++i) s[dl_.qm[i]] = m[i];
-    SeriesEvaluator eval(J, s, cap + 2);
+    SeriesEvaluator eval(J, s, at + 2);
     for (int i = 0; i < n; ++i) {
       g[i] = eval(G[i]);
       if (hess)
         for (int j = 0; j < n; ++j) (*hess)[i][j] = eval(H[i][j]);
     }
   };
-  for (int iter = 0; iter < 8; ++iter) {
+  // Newton's method on series doubles the number of correct terms per step, so the early
+  // steps are taken at a precision that doubles too (4, 8, … up to cap); at full precision
+  // it stops when a correction vanishes. (Eight steps at full precision, as before, cost
+  // 8× the two or three that are needed: 3-D, vi2.)
+  int at = reference_ ? cap : std::min(cap, 4);
+  for (int iter = 0; iter < (reference_ ? 8 : 12); ++iter) {
     SubsMap s = subs;
     std::vector<Series> g(n);
     std::vector<std::vector<Series>> hm(n, std::vector<Series>(n));
-    residual(s, g, &hm);
+    residual(s, g, &hm, at);
     // δ = −H⁻¹ g by cofactors (n ≤ 3).
     Series det;
     std::vector<std::vector<Series>> adj(n, std::vector<Series>(n));
@@ -531,15 +548,27 @@ std::vector<Series> Engine::interior_node(const SubsMap& subs, int cap) const {
       for (int r = 0; r < 3; ++r)
         for (int c = 0; c < 3; ++c) adj[c][r] = cof(r, c);
     }
+    bool moved = false;
     for (int i = 0; i < n; ++i) {
       Series d = Series::constant(0);
       for (int j = 0; j < n; ++j) d = d + adj[i][j] * g[j];
-      m[i] = (m[i] - d / det).truncated(cap);
+      // The correction to O(h^at), applied as a polynomial: m stays a polynomial in h that
+      // the next, more precise step refines.
+      Series step = (d / det).truncated(at);
+      for (int k = step.valuation(); k < step.prec; ++k)
+        if (!vanishes(step.coeff(k))) {
+          moved = true;
+          break;
+        }
+      step.prec = Series::exact;
+      m[i] = (m[i] - step).truncated(cap);
     }
+    if (at == cap && !moved && !reference_) break;
+    at = std::min(cap, 2 * at);
   }
   SubsMap s = subs;
   std::vector<Series> g(n);
-  residual(s, g, nullptr);
+  residual(s, g, nullptr, cap);
   for (int i = 0; i < n; ++i)
     for (int k = g[i].valuation(); k < std::min(g[i].prec, cap - 1); ++k)
       if (!vanishes(g[i].coeff(k)))
@@ -555,19 +584,16 @@ const std::vector<ex>& Engine::l_mod() {
   if (!lmod_.empty()) return lmod_;
   const auto& m = l_mesh();
   const auto& f = modified_equation();
-  const JetSpace& J = *dl_.jets;
-  const std::vector<int> S = solved();
-  const int n = static_cast<int>(S.size());
+  const int n = static_cast<int>(solved().size());
   // The modified equation truncated after h^{K−1} (a polynomial in h): what it leaves out
   // enters L_mesh at h^{K+1} at the earliest.
   const int terms = std::max(K_, 1);
   std::vector<Series> F(n);
   for (int i = 0; i < n; ++i)
     for (int k = 0; k < terms; ++k) F[i].c.push_back(f[k][i]);
-  int top = 2;
-  for (const ex& e : m)
-    for (int d : S) top = std::max(top, J.max_order(e, d));
-  const auto jets = jets_along(F, top, K_ + 1);
+  std::vector<std::vector<ex>> uses;
+  for (const ex& e : m) uses.push_back({e});
+  const auto jets = jets_along(F, uses, K_ + 1);
   progress::set_stage("L_mod to h^" + std::to_string(K_) + ": L_mesh along the modified equation");
   const Series L = along(m, jets, K_ + 1);
   for (int k = 0; k <= K_; ++k) lmod_.push_back(GiNaC::expand(L.coeff(k)));

@@ -172,6 +172,15 @@ class Engine {
   Engine(SymbolicDL dl, int order);
 
   int order() const { return K_; }
+  /// Derive on the reference path: the original algorithms, kept to check the fast ones
+  /// against (`vibook modified --reference`, tests/cli/modified_reference.sh). Derivatives
+  /// by GiNaC's diff symbol by symbol (JetSpace::set_reference), every jet series carried to
+  /// the full precision, eight Newton steps at full precision for an interior node. Set
+  /// before the first derivation.
+  void use_reference_path(bool on) {
+    reference_ = on;
+    dl_.jets->set_reference(on);
+  }
   const JetSpace& jets() const { return *dl_.jets; }
   const SymbolicDL& discrete_lagrangian() const { return dl_; }
 
@@ -203,13 +212,18 @@ class Engine {
  private:
   SymbolicDL dl_;
   int K_;
+  bool reference_ = false;
   std::vector<ex> ldisc_, lmesh_, lmod_;
   std::vector<std::vector<ex>> f_;
   /// The solved degrees of freedom (SymbolicDL::solve_for, or all).
   std::vector<int> solved() const;
   /// Series of x^{(ℓ)}, ℓ = 2…top, of the solved degrees of freedom on solutions of ẍ = F
-  /// (F and the result indexed by position in solved()).
-  std::vector<std::vector<Series>> jets_along(const std::vector<Series>& F, int top, int cap) const;
+  /// (F and the result indexed by position in solved()), for evaluating Σ_k h^k e[k] to
+  /// O(h^cap) with `along`: top is the highest derivative in the e[k], and x^{(ℓ)} is kept only
+  /// to O(h^{cap − k_ℓ}), k_ℓ the first k whose e[k] contains it (more is never used).
+  std::vector<std::vector<Series>> jets_along(const std::vector<Series>& F,
+                                              const std::vector<std::vector<ex>>& uses,
+                                              int cap) const;
   /// Three-point L_d: the interior node as a series, from ∂L_d/∂qm = 0 with q0, q1 (and h)
   /// given as series in `subs` (Newton's method on series, started at the mean of q0, q1).
   std::vector<Series> interior_node(const std::map<ex, Series, GiNaC::ex_is_less>& subs,

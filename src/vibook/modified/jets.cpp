@@ -78,6 +78,7 @@ void JetSpace::ensure_order(int order) const {
         tex = k == 2 ? "\\ddot{x}" + sub : "{x" + sub + "^{(" + std::to_string(k) + ")}}";
       }
       row.emplace_back(name, tex);
+      jet_index_.emplace(row.back(), std::make_pair(k, i));
     }
     jets_.push_back(std::move(row));
   }
@@ -119,39 +120,120 @@ GiNaC::symbol JetSpace::derivative(int family, std::vector<int> index) const {
   }
   GiNaC::symbol s(name, "{" + tex + "}");  // braced: safe under a power's superscript
   deriv_.emplace(key, s);
-  deriv_list_.emplace_back(s, key);
+  deriv_index_.emplace(s, key);
   return s;
 }
 
-ex JetSpace::partial(const ex& e, int order, int i) const {
-  ex out = e.diff(x(order, i));
-  if (order != 0) return out;
-  // Chain rule: ∂/∂x_i U_I(x) = U_{I+i}(x). Iterate over a copy: derivative() may append.
-  const auto list = deriv_list_;
-  for (const auto& [s, key] : list) {
-    if (!e.has(s)) continue;
-    const auto& dofs = families_.at(key.family).dofs;
-    for (std::size_t a = 0; a < dofs.size(); ++a) {
-      if (dofs[a] != i) continue;
-      std::vector<int> idx = key.index;
-      idx.push_back(static_cast<int>(a));
-      out += e.diff(s) * derivative(key.family, idx);
+namespace {
+// δe = Σ_s ∂e/∂s · δs over the symbols s of e, one GiNaC diff each.
+template <class Rule>
+ex chain_rule(const ex& e, const Rule& rule) {
+  GiNaC::exset symbols;
+  for (auto it = e.preorder_begin(); it != e.preorder_end(); ++it)
+    if (GiNaC::is_a<GiNaC::symbol>(*it)) symbols.insert(*it);
+  ex out = 0;
+  for (const ex& s : symbols) {
+    const ex d = rule(s);
+    if (!d.is_zero()) out += e.diff(GiNaC::ex_to<GiNaC::symbol>(s)) * d;
+  }
+  return out;
+}
+}  // namespace
+
+template <class Rule>
+ex JetSpace::derive(const ex& top, const Rule& rule) const {
+  if (reference_) return chain_rule(top, rule);
+  // Powers and other non-polynomial nodes recur across the terms of a sum: memoized per call.
+  std::map<ex, ex, GiNaC::ex_is_less> memo;
+  const auto walk = [&](const auto& self, const ex& e) -> ex {
+    if (GiNaC::is_a<GiNaC::numeric>(e)) return 0;
+    if (GiNaC::is_a<GiNaC::symbol>(e)) return rule(e);
+    if (GiNaC::is_a<GiNaC::add>(e)) {
+      GiNaC::exvector terms;
+      terms.reserve(e.nops());
+      for (std::size_t k = 0; k < e.nops(); ++k) {
+        ex d = self(self, e.op(k));
+        if (!d.is_zero()) terms.push_back(std::move(d));
+      }
+      return GiNaC::add(terms);
     }
+    if (GiNaC::is_a<GiNaC::mul>(e)) {
+      GiNaC::exvector factors;
+      for (std::size_t k = 0; k < e.nops(); ++k) factors.push_back(e.op(k));
+      GiNaC::exvector terms;
+      for (std::size_t k = 0; k < factors.size(); ++k) {
+        ex d = self(self, factors[k]);
+        if (d.is_zero()) continue;
+        GiNaC::exvector f = factors;
+        f[k] = d;
+        terms.push_back(GiNaC::mul(f));
+      }
+      return GiNaC::add(terms);
+    }
+    if (auto it = memo.find(e); it != memo.end()) return it->second;
+    ex out = 0;
+    if (GiNaC::is_a<GiNaC::power>(e) && GiNaC::is_a<GiNaC::numeric>(e.op(1))) {
+      const ex d = self(self, e.op(0));
+      if (!d.is_zero()) out = e.op(1) * GiNaC::pow(e.op(0), e.op(1) - 1) * d;
+    } else {
+      // Any other node (functions, symbolic exponents): the chain rule over its symbols.
+      out = chain_rule(e, rule);
+    }
+    memo.emplace(e, out);
+    return out;
+  };
+  return walk(walk, top);
+}
+
+ex JetSpace::space_rule(const ex& s, int i) const {
+  if (auto j = jet_index_.find(s); j != jet_index_.end())
+    return j->second.first == 0 && j->second.second == i ? ex(1) : ex(0);
+  const auto d = deriv_index_.find(s);
+  if (d == deriv_index_.end()) return 0;
+  const Key key = d->second;  // copied: derivative() may insert into the index
+  const auto& dofs = families_.at(key.family).dofs;
+  ex out = 0;
+  for (std::size_t a = 0; a < dofs.size(); ++a) {
+    if (dofs[a] != i) continue;
+    std::vector<int> idx = key.index;
+    idx.push_back(static_cast<int>(a));
+    out += derivative(key.family, idx);
   }
   return out;
 }
 
-ex JetSpace::total(const ex& e) const {
-  const int top = std::max(max_order(e), 0);
+ex JetSpace::time_rule(const ex& s, const std::vector<bool>* frozen) const {
+  if (auto j = jet_index_.find(s); j != jet_index_.end()) {
+    const auto [k, i] = j->second;
+    if (k >= 1 && frozen && (*frozen)[i]) return 0;
+    return x(k + 1, i);
+  }
+  const auto d = deriv_index_.find(s);
+  if (d == deriv_index_.end()) return 0;
+  const Key key = d->second;
+  const auto& dofs = families_.at(key.family).dofs;
   ex out = 0;
-  for (int k = 0; k <= top; ++k)
-    for (int i = 0; i < n_; ++i) {
-      if (k == 0)
-        out += partial(e, 0, i) * x(1, i);
-      else
-        out += e.diff(x(k, i)) * x(k + 1, i);
-    }
+  for (std::size_t a = 0; a < dofs.size(); ++a) {
+    std::vector<int> idx = key.index;
+    idx.push_back(static_cast<int>(a));
+    out += derivative(key.family, idx) * x(1, dofs[a]);
+  }
   return out;
+}
+
+ex JetSpace::partial(const ex& e, int order, int i) const {
+  if (order != 0) return e.diff(x(order, i));
+  // Chain rule: ∂/∂x_i U_I(x) = U_{I+i}(x).
+  return derive(e, [&](const ex& s) { return space_rule(s, i); });
+}
+
+ex JetSpace::total(const ex& e) const {
+  return derive(e, [&](const ex& s) { return time_rule(s, nullptr); });
+}
+
+ex JetSpace::total_except(const ex& e, const std::vector<bool>& frozen) const {
+  if (static_cast<int>(frozen.size()) != n_) throw std::invalid_argument("total_except: frozen");
+  return derive(e, [&](const ex& s) { return time_rule(s, &frozen); });
 }
 
 int JetSpace::max_order(const ex& e, int dof) const {

@@ -54,10 +54,20 @@ class JetSpace {
   ex partial(const ex& e, int order, int i) const;
   /// The total time derivative D e, on the free jets (every x^{(ℓ)} independent).
   ex total(const ex& e) const;
+  /// The total time derivative with x_d^{(ℓ)}, ℓ ≥ 1, held fixed for every d with
+  /// frozen[d]: the part of D e that does not come from ẍ_d, x_d^{(3)}, … (the engine adds
+  /// it along a modified equation that gives ẍ_d).
+  ex total_except(const ex& e, const std::vector<bool>& frozen) const;
   /// Highest jet order that occurs in e (0 if none beyond x; −1 if e has no x at all).
   int max_order(const ex& e) const;
   /// The same for one degree of freedom.
   int max_order(const ex& e, int dof) const;
+  /// The reference path: partial, total and total_except as the chain rule over every
+  /// symbol of e with one GiNaC diff each (the engine's original algorithm, slow once the
+  /// derivative symbols number in the hundreds) instead of the one-walk derivation. For
+  /// checking the fast path (`vibook modified --reference`); the results are equal.
+  void set_reference(bool on) const { reference_ = on; }
+  bool reference() const { return reference_; }
   /// Highest jet order created so far.
   int created_order() const { return static_cast<int>(jets_.size()) - 1; }
 
@@ -79,8 +89,22 @@ class JetSpace {
     }
   };
   mutable std::map<Key, GiNaC::symbol> deriv_;
-  mutable std::vector<std::pair<GiNaC::symbol, Key>> deriv_list_;
+  // Reverse look-up of the jet and derivative symbols: (order, dof) and Key.
+  mutable std::map<ex, std::pair<int, int>, GiNaC::ex_is_less> jet_index_;
+  mutable std::map<ex, Key, GiNaC::ex_is_less> deriv_index_;
+  mutable bool reference_ = false;
   void ensure_order(int order) const;
+  /// A derivation δ of e (δ(a + b) = δa + δb, δ(ab) = a δb + b δa, δ(a^n) = n a^{n−1} δa,
+  /// and the chain rule through GiNaC's diff for any other node) in one walk over the
+  /// expression tree, with δ of each symbol from `rule` .
+  /// One walk replaces one GiNaC diff per symbol, which dominated the engine's time once the
+  /// derivative symbols number in the hundreds (dimension 3, order 6).
+  template <class Rule>
+  ex derive(const ex& e, const Rule& rule) const;
+  /// δ of a jet or derivative symbol for the time derivative D (frozen: see total_except).
+  ex time_rule(const ex& s, const std::vector<bool>* frozen) const;
+  /// δ of a symbol for ∂/∂x_i (x_i → 1, U_I → Σ U_{I+a} over the arguments a of dof i).
+  ex space_rule(const ex& s, int i) const;
 };
 
 }  // namespace vibook::modified
