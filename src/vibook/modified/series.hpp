@@ -70,6 +70,7 @@ class SeriesEvaluator {
   std::map<ex, Series, GiNaC::ex_is_less> subs_;
   int cap_;
   std::map<ex, Series, GiNaC::ex_is_less> memo_;
+  bool symbol_keys_ = true;  // every key of subs_ a symbol: depends() in one walk
   bool depends(const ex& e) const;
   Series eval(const ex& e);
   Series unary(const ex& e, const Series& arg);
