@@ -131,6 +131,46 @@ if eng:
             parts.append(f"L_disc to h^{k}: GiNaC series() / engine = {g / e:.1f}")
     print("<p>Targets, evaluated on this run: " + "; ".join(parts) + ".</p>")
 
+# The engine's cost with dimension and order (#28): L_mod,K of Störmer–Verlet, generic U.
+cost = {}
+for k, v in eng.items():
+    if k.startswith("engine_cost/"):
+        _, d, o = k.split("/")
+        cost[(int(d), int(o))] = v
+if cost:
+    orders = sorted({o for _, o in cost})
+    print("<table class=\"vibook-bench\">")
+    print("<tr><th>L_mod to h^K, Störmer–Verlet, generic U</th>" +
+          "".join(f"<th>K = {o}</th>" for o in orders) + "</tr>")
+    for d in sorted({d for d, _ in cost}):
+        cells = "".join(f"<td>{cost[(d, o)]:.3g} s</td>" if (d, o) in cost else "<td>&mdash;</td>"
+                        for o in orders)
+        print(f"<tr><td>{d} degree(s) of freedom</td>{cells}</tr>")
+    print("</table>")
+    names = ["sv", "se", "se-adjoint", "midpoint", "vi1", "vi1-adjoint", "vi2"]
+    per_method = {names[int(k.split("/")[1])]: v for k, v in eng.items()
+                  if k.startswith("engine_method_3d/") and int(k.split("/")[1]) < len(names)}
+    if per_method:
+        print("<table class=\"vibook-bench\">")
+        print("<tr><th>H_mod to h⁴ in 3-D (with the equation and L_mod)</th>" +
+              "".join(f"<th>{m}</th>" for m in per_method) + "</tr>")
+        print("<tr><td>time</td>" + "".join(f"<td>{v:.3g} s</td>" for v in per_method.values()) +
+              "</tr>")
+        print("</table>")
+    targets = [((3, 6), 4.0), ((2, 10), 6.0), ((3, 8), 18.0)]
+    parts = [f"{d}-D to h^{o} within {t:g} s &mdash; {verdict(cost[(d, o)] <= t)} "
+             f"({cost[(d, o)]:.3g} s)" for (d, o), t in targets if (d, o) in cost]
+    k8 = eng.get("engine_sv_kepler/8")
+    if k8 is not None:
+        parts.append(f"Kepler 2-D to h⁸ within 30 s &mdash; {verdict(k8 <= 30)} ({k8:.3g} s)")
+    if per_method:
+        worst = max(per_method, key=per_method.get)
+        parts.append(f"every method to h⁴ in 3-D within 5 s &mdash; "
+                     f"{verdict(per_method[worst] <= 5)} (slowest {worst}, "
+                     f"{per_method[worst]:.3g} s)")
+    print("<p>Targets of the engine's cost (#28), evaluated on this run: " + "; ".join(parts) +
+          ". One iteration per repetition.</p>")
+
 # Work-precision against wall-clock time (Shen & Sun methods): table, and the CSV of the diagram
 # when a second argument names it.
 if wp:
