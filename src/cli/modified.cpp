@@ -2,6 +2,7 @@
 // Shen & Sun 2025 §4).
 #include <algorithm>
 #include <memory>
+#include <mutex>
 #include <optional>
 #include <set>
 #include <string>
@@ -18,13 +19,14 @@ namespace vibook::cli {
 
 namespace {
 struct ModifiedOptions {
-  std::string method, potential = "generic", what = "equation", format = "text", alpha;
+  std::string method, potential = "generic", what = "equation", format = "text", alpha, ld;
   std::string dim_text, order_text;  // parsed whole, in base 10 (parse_integer)
   std::string max_seconds_text;
   double max_seconds = 0;
   bool progress = false;
   int dim = 0, order = -1;
   bool cross_check = false, reference = false, dim_given = false, alpha_given = false;
+  bool method_given = false, potential_given = false, ld_given = false;
 };
 
 // Every symbol in the expressions, for the Python header (sorted by name, h first).
@@ -42,9 +44,17 @@ int run_modified(ModifiedOptions o) {
       static_cast<int>(std::clamp<long long>(parse_integer("--order", o.order_text), -1, 1000));
   if (o.dim_given)
     o.dim = static_cast<int>(std::clamp<long long>(parse_integer("--dim", o.dim_text), 0, 1000));
-  const Method m = parse_method(o.method);
-  const Potential p = parse_potential(o.potential);
+  // Either a method of the library (--method, a named --potential) or the user's own discrete
+  // Lagrangian typed as in `vibook verify` (--ld, with --potential an expression).
+  if (o.ld_given && o.method_given)
+    throw ArgumentError("--ld", "give either --method or --ld (your own discrete Lagrangian)");
+  if (!o.ld_given && !o.method_given)
+    throw ArgumentError("--method", "required (or give your own discrete Lagrangian with --ld)");
+  const Method m = o.ld_given ? Method::sv : parse_method(o.method);
+  const Potential p = o.ld_given ? Potential::generic : parse_potential(o.potential);
   const Format f = parse_format(o.format);
+  if (o.ld_given && o.alpha_given)
+    throw ArgumentError("--alpha", "applies to the library's splitting methods, not to --ld");
   static const std::set<std::string> whats = {"equation", "lagrangian", "hamiltonian", "meshed",
                                               "disc"};
   if (!whats.count(o.what))
@@ -53,7 +63,28 @@ int run_modified(ModifiedOptions o) {
                                               o.what));
   if (o.dim_given && (o.dim < 1 || o.dim > 3))
     throw ArgumentError("--dim", fmt::format("{}: give 1, 2 or 3 degrees of freedom", o.dim));
-  const int dim = o.dim_given ? o.dim : (p == Potential::kepler ? 2 : 1);
+  // The typed discrete Lagrangian is parsed and checked before any work (status 2 naming --ld,
+  // --potential or --dim); it must outlive the engine.
+  std::optional<verify::TypedDiscreteLagrangian> typed;
+  if (o.ld_given) {
+    verify::TypedTexts t;
+    t.ld = o.ld;
+    // The engine needs only L_d; the intended system matters to `vibook verify` alone. Without
+    // --potential, a placeholder system lets an L_d that does not use V through (one that does
+    // is refused: "V is used but no --potential was given").
+    if (o.potential_given)
+      t.potential = o.potential;
+    else
+      t.lagrangian = "v^2/2";
+    t.dim = o.dim_given ? o.dim : 0;
+    std::lock_guard<std::mutex> lock(ginac_mutex());
+    typed.emplace(t);
+    if (typed->dim() > 3)
+      throw ArgumentError("--ld", fmt::format("{} degrees of freedom: the symbolic engine takes 1 "
+                                              "to 3",
+                                              typed->dim()));
+  }
+  const int dim = typed ? typed->dim() : (o.dim_given ? o.dim : (p == Potential::kepler ? 2 : 1));
   if (o.cross_check && o.what != "equation")
     throw ArgumentError("--cross-check",
                         fmt::format("compares two derivations of the modified equation; it does "
@@ -82,7 +113,20 @@ int run_modified(ModifiedOptions o) {
   }
   // Every argument checked: from here on the derivation shows its stage and keeps its limit.
   const Watchdog watchdog("modified", o.max_seconds, o.progress);
-  Engine E(make_discrete_lagrangian(m, p, dim, alpha), o.order);
+  std::lock_guard<std::mutex> lock(ginac_mutex());
+  const auto user_dl = [&]() -> SymbolicDL {
+    auto jets = std::make_shared<JetSpace>(dim);
+    const std::string what = "typed discrete Lagrangian " + o.ld;
+    switch (dim) {
+      case 1:
+        return symbolic_dl<1>(typed->bind<1>(), jets, what);
+      case 2:
+        return symbolic_dl<2>(typed->bind<2>(), jets, what);
+      default:
+        return symbolic_dl<3>(typed->bind<3>(), jets, what);
+    }
+  };
+  Engine E(typed ? user_dl() : make_discrete_lagrangian(m, p, dim, alpha), o.order);
   E.use_reference_path(o.reference);
   const JetSpace& J = E.jets();
   const std::string comment = f == Format::latex ? "%" : "#";
@@ -126,7 +170,7 @@ int run_modified(ModifiedOptions o) {
                                               o.what));
   }
   // Kepler: display in r = |x| (radial_form), a canonical and much shorter form.
-  const bool radial = p == Potential::kepler;
+  const bool radial = !typed && p == Potential::kepler;
   const GiNaC::symbol r("r", "|x|");
   if (radial)
     for (auto& [lhs, c] : blocks)
@@ -168,13 +212,17 @@ std::function<int()> add_modified_command(CLI::App& app) {
       "(Vermeeren 2017) with the symbolic engine");
   c->add_option("--method", o->method,
                 "sv, se (L(x1,v)), se-adjoint (L(x0,v)), midpoint, vi1, vi1-adjoint (Shen & Sun "
-                "(3.3)), vi2 ((3.8); the interior node is eliminated)")
-      ->required();
+                "(3.3)), vi2 ((3.8); the interior node is eliminated); required unless --ld");
+  c->add_option("--ld", o->ld,
+                "your own discrete Lagrangian L_d(q0, q1, h) instead of --method, typed as in "
+                "vibook verify, e.g. 'h*((q1-q0)^2/(2*h^2) - (V(q0)+V(q1))/2)'");
   c->add_option("--potential", o->potential,
                 "generic (derivatives U, U_1, U_11, … as symbols), kepler (2-D), pendulum, "
-                "harmonic (default generic)");
+                "harmonic (default generic); with --ld: V as an expression in x, y, z (or q, "
+                "q[1], …), as in vibook verify");
   c->add_option("--dim", o->dim_text,
-                "degrees of freedom of a generic potential, 1 to 3 (default 1)");
+                "degrees of freedom of a generic potential, 1 to 3 (default 1; with --ld: from "
+                "the expressions)");
   c->add_option("--order", o->order_text,
                 fmt::format("highest power of h, 0 to {}", modified::max_order))
       ->required();
@@ -198,6 +246,9 @@ std::function<int()> add_modified_command(CLI::App& app) {
   return [o, c] {
     o->dim_given = c->count("--dim") > 0;
     o->alpha_given = c->count("--alpha") > 0;
+    o->method_given = c->count("--method") > 0;
+    o->potential_given = c->count("--potential") > 0;
+    o->ld_given = c->count("--ld") > 0;
     return run_modified(*o);
   };
 }

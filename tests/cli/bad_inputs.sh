@@ -152,6 +152,15 @@ row 2 "--alpha"          modified --method vi1 --potential kepler --order 1 --al
 row 2 "--alpha"          modified --method vi1 --potential kepler --order 1 --alpha 2
 row 2 "--alpha"          modified --method vi1 --potential kepler --order 1 --alpha 1/0
 row 2 "--alpha"          modified --method sv --potential kepler --order 1 --alpha 1/2
+# modified --ld: the user's own discrete Lagrangian, checked before any work
+TRAP='h*((q1-q0)^2/(2*h^2) - (V(q0)+V(q1))/2)'
+row 2 "--method"         modified --order 2
+row 2 "--ld"             modified --method sv --ld "$TRAP" --potential 'x^4' --order 2
+row 2 "--ld"             modified --ld 'h*((q1-q0)^2/(2*h^2) - V(q0' --potential 'x^4' --order 2
+row 2 "--ld"             modified --ld 'h*(q1[4]-q0[4])^2/(2*h^2)' --order 2
+row 2 "--potential"      modified --ld "$TRAP" --potential kepler --order 2
+row 2 "--alpha"          modified --ld "$TRAP" --potential 'x^4' --order 2 --alpha 1/2
+row 2 "--order"          modified --ld "$TRAP" --potential 'x^4' --order 11
 # --- verify: typed expressions ------------------------------------------------------------------
 SIMPSON='h*((q1-q0)^2/(2*h^2) - (V(q0)+4*V((q0+q1)/2)+V(q1))/6)'
 HH='x^2/2+y^2/2+x^2*y-y^3/3'
