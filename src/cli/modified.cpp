@@ -55,11 +55,11 @@ int run_modified(ModifiedOptions o) {
   const Format f = parse_format(o.format);
   if (o.ld_given && o.alpha_given)
     throw ArgumentError("--alpha", "applies to the library's splitting methods, not to --ld");
-  static const std::set<std::string> whats = {"equation", "lagrangian", "hamiltonian", "meshed",
-                                              "disc"};
+  static const std::set<std::string> whats = {"equation",     "lagrangian", "hamiltonian",
+                                              "vector-field", "meshed",     "disc"};
   if (!whats.count(o.what))
     throw ArgumentError("--what", fmt::format("unknown '{}' (equation, lagrangian, hamiltonian, "
-                                              "meshed, disc)",
+                                              "vector-field, meshed, disc)",
                                               o.what));
   if (o.dim_given && (o.dim < 1 || o.dim > 3))
     throw ArgumentError("--dim", fmt::format("{}: give 1, 2 or 3 degrees of freedom", o.dim));
@@ -160,13 +160,28 @@ int run_modified(ModifiedOptions o) {
     blocks.emplace_back(lhs_of("L_{\\mathrm{mod}}", "L", "L_mod"), E.l_mod());
   } else if (o.what == "hamiltonian") {
     blocks.emplace_back(lhs_of("H_{\\mathrm{mod}}", "H", "H_mod"), E.h_mod());
+  } else if (o.what == "vector-field") {
+    const auto [xdot, pdot] = E.vector_field();
+    for (int part = 0; part < 2; ++part) {
+      const auto& field = part == 0 ? xdot : pdot;
+      const std::string lhs =
+          part == 0 ? lhs_of("\\dot{x}", "xdot", "xdot") : lhs_of("\\dot{p}", "pdot", "pdot");
+      for (int i = 0; i < J.dofs(); ++i) {
+        std::vector<ex> c;
+        for (const auto& row : field) c.push_back(row[i]);
+        const std::string name = J.dofs() == 1        ? lhs
+                                 : f == Format::latex ? fmt::format("{}_{{{}}}", lhs, i + 1)
+                                                      : fmt::format("{}{}", lhs, i + 1);
+        blocks.emplace_back(name, c);
+      }
+    }
   } else if (o.what == "meshed") {
     blocks.emplace_back(lhs_of("L_{\\mathrm{mesh}}", "L_mesh", "L_mesh"), E.l_mesh());
   } else if (o.what == "disc") {
     blocks.emplace_back(lhs_of("L_{\\mathrm{disc}}", "L_disc", "L_disc"), E.l_disc());
   } else {
     throw ArgumentError("--what", fmt::format("unknown '{}' (equation, lagrangian, hamiltonian, "
-                                              "meshed, disc)",
+                                              "vector-field, meshed, disc)",
                                               o.what));
   }
   // Kepler: display in r = |x| (radial_form), a canonical and much shorter form.
@@ -227,8 +242,9 @@ std::function<int()> add_modified_command(CLI::App& app) {
                 fmt::format("highest power of h, 0 to {}", modified::max_order))
       ->required();
   c->add_option("--what", o->what,
-                "equation (default), lagrangian (L_mod), hamiltonian (H_mod), meshed (L_mesh), "
-                "disc (L_disc([x],h))");
+                "equation (default), lagrangian (L_mod), hamiltonian (H_mod), vector-field (the "
+                "first-order system xdot = dH_mod/dp, pdot = -dH_mod/dx, p = dL_mod/dv), meshed "
+                "(L_mesh), disc (L_disc([x],h))");
   c->add_option("--format", o->format, "text (default), latex, python (SymPy)");
   c->add_option("--alpha", o->alpha,
                 "vi1, vi1-adjoint, vi2 with a concrete potential: the split φ^[1] = αU (default: "

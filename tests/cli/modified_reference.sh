@@ -20,7 +20,7 @@ one() {
   fi
 }
 for m in sv se se-adjoint midpoint vi1 vi1-adjoint vi2; do
-  for what in equation lagrangian hamiltonian meshed disc; do
+  for what in equation lagrangian hamiltonian vector-field meshed disc; do
     for pot in generic kepler pendulum; do one --method "$m" --potential "$pot" --order 4 --what "$what"; done
     one --method "$m" --dim 2 --order 4 --what "$what"
   done

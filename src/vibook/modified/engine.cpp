@@ -601,6 +601,20 @@ const std::vector<ex>& Engine::l_mod() {
 }
 
 // Series Legendre transform: p = ∂L/∂ẋ solved for ẋ order by order, H = p·ẋ − L.
+std::pair<std::vector<std::vector<ex>>, std::vector<std::vector<ex>>> Engine::vector_field() {
+  const std::vector<ex> H = h_mod();
+  const JetSpace& J = *dl_.jets;
+  const int n = J.dofs();
+  progress::set_stage("vector field to h^" + std::to_string(K_) + ": derivatives of H_mod");
+  std::vector<std::vector<ex>> xdot(H.size(), std::vector<ex>(n)), pdot = xdot;
+  for (std::size_t k = 0; k < H.size(); ++k)
+    for (int i = 0; i < n; ++i) {
+      xdot[k][i] = GiNaC::expand(H[k].diff(J.p(i)));
+      pdot[k][i] = GiNaC::expand(-J.partial(H[k], 0, i));
+    }
+  return {xdot, pdot};
+}
+
 std::vector<ex> Engine::h_mod() {
   if (solved().size() != static_cast<std::size_t>(dl_.jets->dofs()))
     throw ArgumentError("--what", "the modified Hamiltonian needs every degree of freedom solved");

@@ -198,6 +198,12 @@ class Engine {
   /// Series Legendre transform of L_mod,K: H_mod,K(x, p, h) in the symbols x_i, p_i.
   std::vector<ex> h_mod();
 
+  /// The modified equation as a first-order system in (x, p), p = ∂L_mod/∂ẋ the momentum of
+  /// the Legendre transform: ẋ_i = ∂H_mod/∂p_i, ṗ_i = −∂H_mod/∂x_i (with the chain rule
+  /// through a generic potential's derivatives). Returns {ẋ, ṗ}, each [k][i] the h^k
+  /// coefficient of component i.
+  std::pair<std::vector<std::vector<ex>>, std::vector<std::vector<ex>>> vector_field();
+
   /// Euler–Lagrange expression Σ_ℓ (−1)^ℓ D^ℓ ∂L/∂x^{(ℓ)} of L = Σ h^k L[k] (any order).
   std::vector<std::vector<ex>> euler_lagrange(const std::vector<ex>& L) const;
   /// The two-term expression ∂L/∂x − D ∂L/∂ẋ that Vermeeren §4.6 writes for the meshed

@@ -342,3 +342,37 @@ TEST_CASE(
     CHECK(vanishes(H[k] - exact.coeff(h, k) * pq));
   }
 }
+
+TEST_CASE("engine: the first-order vector field of H_mod gives back the modified equation") {
+  // #28: ẋ = ∂H_mod/∂p, ṗ = −∂H_mod/∂x in p = ∂L_mod/∂ẋ. On a linear problem the second-order
+  // equation follows in closed form: ẍ = A_x A + A_p B for ẋ = A(x, p), ṗ = B(x, p), with p
+  // solved from ẋ = A. It must equal the modified equation, which the engine derives by
+  // another route (the Euler–Lagrange equation of L_mesh), to the order derived. Störmer–
+  // Verlet and the midpoint rule on the oscillator, to h^6; and a sign error in ṗ is caught.
+  for (const Method m : {Method::sv, Method::midpoint}) {
+    Engine E(make_discrete_lagrangian(m, Potential::harmonic, 1), 6);
+    const JetSpace& J = E.jets();
+    const auto [xdot, pdot] = E.vector_field();
+    const auto& f = E.modified_equation();
+    const GiNaC::symbol& h = J.h();
+    const ex x = J.x(0, 0), v = J.x(1, 0), p = J.p(0);
+    const auto second_order = [&](int sign) {
+      ex A = 0, B = 0;
+      for (std::size_t k = 0; k < xdot.size(); ++k) {
+        A += GiNaC::pow(h, static_cast<int>(k)) * xdot[k][0];
+        B += sign * GiNaC::pow(h, static_cast<int>(k)) * pdot[k][0];
+      }
+      const ex Ax = A.diff(GiNaC::ex_to<GiNaC::symbol>(x)),
+               Ap = A.diff(GiNaC::ex_to<GiNaC::symbol>(p));
+      const ex acc = Ax * A + Ap * B;
+      const ex p_of_v = (v - A.subs(p == 0)) / Ap;  // A is linear in p
+      return acc.subs(p == p_of_v).series(h == 0, 7);
+    };
+    const ex a = second_order(1), wrong = second_order(-1);
+    for (int k = 0; k <= 6; ++k) {
+      INFO("h^", k);
+      CHECK(vanishes(a.coeff(h, k) - f[k][0]));
+    }
+    CHECK_FALSE(vanishes(wrong.coeff(h, 0) - f[0][0]));
+  }
+}
