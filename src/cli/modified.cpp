@@ -136,6 +136,18 @@ int run_modified(ModifiedOptions o) {
   auto lhs_of = [&](const char* latex, const char* python, const char* text) {
     return std::string(f == Format::latex ? latex : (f == Format::python ? python : text));
   };
+  // One block per component of a vector series field[k][i]: lhs, lhs_1, … (lhs1, … in text).
+  const auto add_components = [&](const std::string& lhs,
+                                  const std::vector<std::vector<ex>>& field) {
+    for (int i = 0; i < J.dofs(); ++i) {
+      std::vector<ex> c;
+      for (const auto& row : field) c.push_back(row[i]);
+      const std::string name = J.dofs() == 1        ? lhs
+                               : f == Format::latex ? fmt::format("{}_{{{}}}", lhs, i + 1)
+                                                    : fmt::format("{}{}", lhs, i + 1);
+      blocks.emplace_back(name, c);
+    }
+  };
   if (o.what == "equation") {
     const auto fm = E.modified_equation();
     if (o.cross_check) {
@@ -147,34 +159,15 @@ int run_modified(ModifiedOptions o) {
                 "the meshed and the direct route disagree at h^{} (component {})", k, i + 1));
       cross = "cross-check: the direct route (Vermeeren §3.2) agrees term by term";
     }
-    const std::string lhs = lhs_of("\\ddot{x}", "a", "xddot");
-    for (int i = 0; i < J.dofs(); ++i) {
-      std::vector<ex> c;
-      for (const auto& row : fm) c.push_back(row[i]);
-      const std::string name = J.dofs() == 1        ? lhs
-                               : f == Format::latex ? fmt::format("{}_{{{}}}", lhs, i + 1)
-                                                    : fmt::format("{}{}", lhs, i + 1);
-      blocks.emplace_back(name, c);
-    }
+    add_components(lhs_of("\\ddot{x}", "a", "xddot"), fm);
   } else if (o.what == "lagrangian") {
     blocks.emplace_back(lhs_of("L_{\\mathrm{mod}}", "L", "L_mod"), E.l_mod());
   } else if (o.what == "hamiltonian") {
     blocks.emplace_back(lhs_of("H_{\\mathrm{mod}}", "H", "H_mod"), E.h_mod());
   } else if (o.what == "vector-field") {
     const auto [xdot, pdot] = E.vector_field();
-    for (int part = 0; part < 2; ++part) {
-      const auto& field = part == 0 ? xdot : pdot;
-      const std::string lhs =
-          part == 0 ? lhs_of("\\dot{x}", "xdot", "xdot") : lhs_of("\\dot{p}", "pdot", "pdot");
-      for (int i = 0; i < J.dofs(); ++i) {
-        std::vector<ex> c;
-        for (const auto& row : field) c.push_back(row[i]);
-        const std::string name = J.dofs() == 1        ? lhs
-                                 : f == Format::latex ? fmt::format("{}_{{{}}}", lhs, i + 1)
-                                                      : fmt::format("{}{}", lhs, i + 1);
-        blocks.emplace_back(name, c);
-      }
-    }
+    add_components(lhs_of("\\dot{x}", "xdot", "xdot"), xdot);
+    add_components(lhs_of("\\dot{p}", "pdot", "pdot"), pdot);
   } else if (o.what == "meshed") {
     blocks.emplace_back(lhs_of("L_{\\mathrm{mesh}}", "L_mesh", "L_mesh"), E.l_mesh());
   } else if (o.what == "disc") {
