@@ -39,6 +39,7 @@
 #include "vibook/plot/gnuplot.hpp"
 #include "vibook/verify/expression.hpp"
 #include "vibook/verify/reference.hpp"
+#include "vibook/verify/tape.hpp"
 #include "vibook/verify/verify.hpp"
 #include "vibook_book_stylesheet.hpp"
 #include "watchdog.hpp"
@@ -55,7 +56,7 @@ struct VerifyOptions {
       h = "0.05", steps = "100000", modified_order = "2", format = "text", json_out, report, floor,
       max_seconds;
   bool json_given = false, report_given = false, timings = false, symmetric = false,
-       progress = false;
+       progress = false, reference = false;
 };
 
 struct Plan {
@@ -224,7 +225,35 @@ template <int N>
 int run_verify(const VerifyOptions& o, const verify::TypedDiscreteLagrangian& dl, const Plan& p) {
   using Clock = std::chrono::steady_clock;
   const auto Ld = dl.bind<N>();
-  DelIntegrator<N, decltype(Ld)> vi(Ld);
+  // The method is stepped through the compiled tape (verify/tape.hpp: D1 L_d, D2 L_d and
+  // D2 D1 L_d as straight-line code), or with --reference through nested AutoDiff on the
+  // expression tree, the path the tape is checked against.
+  DelIntegrator<N, decltype(Ld)> vi_tree(Ld);
+  std::optional<DelIntegrator<N, verify::CompiledDiscreteLagrangian<N>>> vi_tape;
+  if (!o.reference) {
+    std::lock_guard<std::mutex> lock(modified::ginac_mutex());
+    vi_tape.emplace(verify::CompiledDiscreteLagrangian<N>(dl));
+  }
+  struct {
+    decltype(vi_tree)& tree;
+    decltype(vi_tape)& tape;
+    SolveReport step(Vec<double, N>& q, Vec<double, N>& p, double h) {
+      return tape ? tape->step(q, p, h) : tree.step(q, p, h);
+    }
+    void reset() {
+      tree.reset();
+      if (tape) tape->reset();
+    }
+  } vi{vi_tree, vi_tape};
+  const std::string evaluation =
+      vi_tape ? fmt::format(
+                    "compiled tape: {} instructions per Newton iteration and {} once a "
+                    "step, {} for the momentum (--reference: nested AutoDiff)",
+                    vi_tape->lagrangian().stats().newton_instructions -
+                        vi_tape->lagrangian().stats().newton_prefix,
+                    vi_tape->lagrangian().stats().newton_prefix,
+                    vi_tape->lagrangian().stats().momentum_instructions)
+              : std::string("nested forward AutoDiff on the expression tree (--reference)");
   Eigen::VectorXd z0(2 * N);
   for (int i = 0; i < N; ++i) {
     z0(i) = p.q0[i];
@@ -240,6 +269,7 @@ int run_verify(const VerifyOptions& o, const verify::TypedDiscreteLagrangian& dl
                               : dl.default_system() ? "L = |v|^2/2 - V(q)"
                                                     : "lagrangian"},
                  {"dim", N},
+                 {"evaluation", vi_tape ? "tape" : "autodiff"},
                  {"q0", p.q0},
                  {"p0", p.p0}};
   std::ostringstream out;  // the text report, printed at the end whatever happened
@@ -288,6 +318,7 @@ int run_verify(const VerifyOptions& o, const verify::TypedDiscreteLagrangian& dl
          "L = v^2/2 - V(q) (the default; --lagrangian or --hamiltonian to change)");
   line("potential", (o.potential.empty() ? std::string("(none)") : o.potential) +
                         fmt::format("   ({}-dimensional)", N));
+  line("evaluation", evaluation);
 
   // --- the stability hint: the largest frequency of V at q0 (unit mass) ---------------------
   double omega = 0;
@@ -1305,6 +1336,9 @@ std::function<int()> add_verify_command(CLI::App& app) {
                 "stop with status 3, naming the part reached, if verify takes longer");
   c->add_flag("--progress", o->progress,
               "show the part being measured on standard error also when it is not a terminal");
+  c->add_flag("--reference", o->reference,
+              "step the method through nested AutoDiff on the expression tree instead of the "
+              "compiled tape (slower; the path the tape is checked against)");
   c->add_flag("--timings", o->timings,
               "print the time of each part (and put it in the report, which then differs from "
               "run to run)");

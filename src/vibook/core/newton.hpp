@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 #include <string>
+#include <type_traits>
 
 #include "vibook/core/errors.hpp"
 #include "vibook/core/format.hpp"
@@ -65,6 +66,8 @@ bool update_is_small(const Vec<T, N>& x, const Vec<T, N>& dx, const Vec<T, N>& r
 }  // namespace newton_detail
 
 /// Solve F(x) = 0 for x in R^N, starting from x. `fj(x, F, J)` fills the residual F and its
+/// Jacobian J at x (an `fj(x, F, J, bool with_jacobian)` is called with false where J is not
+/// used: for the residual reported at the returned point).
 /// Jacobian J at x. Returns the report; x holds the solution. Throws SolveError (with the
 /// report) when the iteration does not converge within max_iterations, when the Jacobian is
 /// singular, or when a non-finite value appears. `what` names the solve in the message.
@@ -76,8 +79,14 @@ SolveReport newton_solve(Vec<T, N>& x, FJ&& fj, const NewtonOptions& opt,
   Vec<T, N> F;
   Mat<T, N> J;
   const T step_rel(opt.step_rel), step_abs(opt.step_abs);
+  const auto evaluate = [&](bool with_jacobian) {
+    if constexpr (std::is_invocable_v<FJ&, const Vec<T, N>&, Vec<T, N>&, Mat<T, N>&, bool>)
+      fj(x, F, J, with_jacobian);
+    else
+      fj(x, F, J);
+  };
   for (rep.iterations = 1; rep.iterations <= opt.max_iterations; ++rep.iterations) {
-    fj(x, F, J);
+    evaluate(true);
     rep.residual = to_double(T(F.template lpNorm<Eigen::Infinity>()));
     if (!std::isfinite(rep.residual)) break;
     if (rep.residual <= opt.residual_abs) {
@@ -90,7 +99,7 @@ SolveReport newton_solve(Vec<T, N>& x, FJ&& fj, const NewtonOptions& opt,
       throw newton_detail::singular_jacobian(what, rep);
     x -= dx;
     if (newton_detail::update_is_small<N>(x, dx, ref, step_rel, step_abs)) {
-      fj(x, F, J);  // report the residual at the returned point
+      evaluate(false);  // the residual at the returned point: F alone, when fj can skip J
       rep.residual = to_double(T(F.template lpNorm<Eigen::Infinity>()));
       rep.converged = std::isfinite(rep.residual);
       if (rep.converged) return rep;

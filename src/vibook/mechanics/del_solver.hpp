@@ -6,6 +6,8 @@
 /// Chapter: \ref chapter-vi.
 #pragma once
 
+#include <concepts>
+
 #include "vibook/core/autodiff.hpp"
 #include "vibook/core/errors.hpp"
 #include "vibook/core/newton.hpp"
@@ -17,7 +19,9 @@ namespace vibook {
 ///   p_k     = −D1 L_d(q_k, q_{k+1}, h)   (solved for q_{k+1} by Newton's method),
 ///   p_{k+1} =  D2 L_d(q_k, q_{k+1}, h),
 /// with every derivative, including the Newton Jacobian D2 D1 L_d, taken by Eigen AutoDiff
-/// from the one callable `L_d(q0, q1, h)`. No derivative is written by hand.
+/// from the one callable `L_d(q0, q1, h)`. No derivative is written by hand. A discrete
+/// Lagrangian compiled to a tape (verify/tape.hpp) brings D1, D2 and D2 D1 itself
+/// (`newton_parts`, `d2`) and is stepped through them, with the same guess and Newton.
 ///
 /// Each step reports the residual |p_k + D1 L_d|_inf at the returned q_{k+1} and the number
 /// of Newton iterations; a step that does not converge throws SolveError.
@@ -37,20 +41,36 @@ class DelIntegrator {
   explicit DelIntegrator(DiscreteLagrangian Ld, NewtonOptions options = {})
       : Ld_(std::move(Ld)), options_(options) {}
 
-  /// Advance (q, p) by one step of size h. Throws SolveError if Newton fails.
+  /// Advance (q, p) by one step of size h. Throws SolveError if Newton fails or the new
+  /// momentum is not finite (q and p are then left as they were).
   SolveReport step(Vec<double, N>& q, Vec<double, N>& p, double h) {
     if (have_increment_ && q != last_q_) have_increment_ = false;  // not our last state
     Vec<double, N> q1 =
         have_increment_ ? Vec<double, N>(q + increment_) : Vec<double, N>(q + h * p);
     const Vec<double, N> q0 = q;
     const Vec<double, N> p0 = p;
-    auto fj = [&](const Vec<double, N>& x, Vec<double, N>& F, Mat<double, N>& J) {
-      const auto d = ad::two_point<N>(Ld_, q0, x, h);
-      F = p0 + d.D1;
-      J = d.D12;
+    auto fj = [&](const Vec<double, N>& x, Vec<double, N>& F, Mat<double, N>& J,
+                  bool with_jacobian) {
+      if constexpr (compiled) {
+        Ld_.newton_parts(q0, x, h, F, J, with_jacobian);
+        F += p0;
+      } else {
+        const auto d = ad::two_point<N>(Ld_, q0, x, h);
+        F = p0 + d.D1;
+        J = d.D12;
+      }
     };
     const SolveReport rep = newton_solve<N>(q1, fj, options_, "discrete Euler-Lagrange step", &q0);
-    p = momentum_plus(q0, q1, h);
+    // The momentum at the new point: Newton's residual does not see every part of L_d (on
+    // the tape, D1 L_d of the trapezoidal rule has no V(q1)), so a q1 outside the domain of
+    // L_d shows here first; it is an error of the step, not a NaN handed on.
+    const Vec<double, N> p1 = momentum_plus(q0, q1, h);
+    if (!p1.allFinite())
+      throw SolveError(
+          "discrete Euler-Lagrange step: the new momentum D2 L_d(q_k, q_(k+1), h) is not "
+          "finite (q_(k+1) outside the domain of the discrete Lagrangian?)",
+          rep);
+    p = p1;
     increment_ = q1 - q0;
     have_increment_ = true;
     q = q1;
@@ -65,12 +85,23 @@ class DelIntegrator {
   /// Discrete Legendre map p_k = −D1 L_d(q_k, q_{k+1}, h)   (Vermeeren (5), first half).
   Vec<double, N> momentum_minus(const Vec<double, N>& q0, const Vec<double, N>& q1,
                                 double h) const {
-    return -ad::gradient<N>([&](const auto& x) { return Ld_(x, lift(q1, x), lift(h, x)); }, q0);
+    if constexpr (compiled) {
+      Vec<double, N> D1;
+      Mat<double, N> D12;
+      Ld_.newton_parts(q0, q1, h, D1, D12, false);
+      return -D1;
+    } else {
+      return -ad::gradient<N>([&](const auto& x) { return Ld_(x, lift(q1, x), lift(h, x)); }, q0);
+    }
   }
 
   /// Discrete Legendre map p_{k+1} = D2 L_d(q_k, q_{k+1}, h)   (Vermeeren (5), second half).
   Vec<double, N> momentum_plus(const Vec<double, N>& q0, const Vec<double, N>& q1, double h) const {
-    return ad::gradient<N>([&](const auto& x) { return Ld_(lift(q0, x), x, lift(h, x)); }, q1);
+    if constexpr (compiled) {
+      return Ld_.d2(q0, q1, h);
+    } else {
+      return ad::gradient<N>([&](const auto& x) { return Ld_(lift(q0, x), x, lift(h, x)); }, q1);
+    }
   }
 
   /// Left-hand side of the two-step discrete Euler–Lagrange equation, Vermeeren (4):
@@ -83,6 +114,14 @@ class DelIntegrator {
   const DiscreteLagrangian& lagrangian() const { return Ld_; }
 
  private:
+  // A discrete Lagrangian that brings its own compiled derivatives (verify/tape.hpp:
+  // CompiledDiscreteLagrangian) is used through them; any other callable through AutoDiff.
+  static constexpr bool compiled = requires(const DiscreteLagrangian& L, const Vec<double, N>& q,
+                                            double h, Vec<double, N>& g, Mat<double, N>& J) {
+    L.newton_parts(q, q, h, g, J, true);
+    { L.d2(q, q, h) } -> std::convertible_to<Vec<double, N>>;
+  };
+
   // Constant of the AutoDiff vector type of `like`, with zero derivatives.
   template <class Like>
   static auto lift(const Vec<double, N>& v, const Like&) {

@@ -381,9 +381,17 @@ class TypedDiscreteLagrangian {
         return r;
       }
       case Op::gradient_call:
+        // A scalar that records a tape (tape.cpp) takes the gradient itself, symbolically.
         // One more level of AutoDiff over S needs S(1) from an int, which nested AutoDiff over
         // a class type (double-double) cannot give: ∇V is then not available in S.
-        if constexpr (Depth == 0 && std::is_constructible_v<S, int>) {
+        if constexpr (requires { S::records_a_tape; }) {
+          const std::array<S, N> u = vec<S, N, Depth>(n.a, in);
+          return S::template gradient<N>(u, [&](const std::array<S, N>& x) {
+            Inputs<S, N> at;
+            at.var[kX] = x;
+            return scalar<S, N, 1>(potential_root_, at);
+          });
+        } else if constexpr (Depth == 0 && std::is_constructible_v<S, int>) {
           // ∇V(u): V on one level of forward AutoDiff over S, seeded at u.
           using A = Eigen::AutoDiffScalar<Eigen::Matrix<S, N, 1>>;
           const std::array<S, N> u = vec<S, N, Depth>(n.a, in);

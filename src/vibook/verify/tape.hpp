@@ -1,0 +1,295 @@
+/// \file tape.hpp
+/// \brief A typed discrete Lagrangian compiled once: its derivatives D1 L_d, D2 L_d and
+/// D2 D1 L_d taken symbolically on a graph of shared subexpressions, simplified, and flattened
+/// into a straight-line instruction tape that is evaluated in any scalar type (double,
+/// long double, double-double, quad, MPFR).
+///
+/// Why: the generic path evaluates the expression tree on nested forward AutoDiff numbers in
+/// every Newton iteration (Vermeeren 2017 §2, (4)–(5): p_k = −D1 L_d(q_k, q_{k+1}, h) solved
+/// for q_{k+1}, p_{k+1} = D2 L_d), carrying N + N² derivative components through every
+/// operation, most of them zero. The tape computes only what is not zero, computes each
+/// shared piece once, and computes the part that depends on q_k and h alone once per step
+/// instead of once per iteration.
+///
+/// How the tape is made:
+/// 1. **Recording.** The expression tree (expression.hpp) is evaluated once on a recording
+///    scalar: every operation becomes a node of a graph, identical nodes are one node
+///    (hash-consing: the same operation on the same operands, commutative operands ordered),
+///    constants are exact rationals and are folded exactly, x + 0, x · 1, x · 0 and −(−x)
+///    are simplified away. `grad(V)(u)` is V recorded at placeholders, differentiated, and
+///    the placeholders replaced by u.
+/// 2. **Differentiation.** d/dq0_i, d/dq1_j by the chain rule, one forward sweep over the
+///    graph per variable; the second derivative d/dq1_j of D1 L_d is a sweep over the graph
+///    that already holds D1. The new nodes go through the same simplification and sharing.
+/// 3. **Flattening.** The nodes the outputs need, in an order where operands come first,
+///    those that do not depend on q1 first; operands renumbered into one work array.
+///
+/// The value L_d is computed by the same operations in the same order as the tree
+/// evaluator, so in double it is the same number bit for bit; the derivatives are computed by
+/// other operations than AutoDiff's and agree to round-off (doctests in tape_test.cpp).
+///
+/// Chapter: \ref chapter-verify.
+#pragma once
+
+#include <cmath>
+#include <cstdint>
+#include <limits>
+#include <memory>
+#include <string>
+#include <type_traits>
+#include <vector>
+
+#include "vibook/core/autodiff.hpp"
+#include "vibook/core/types.hpp"
+#include "vibook/verify/expression.hpp"
+
+namespace vibook::verify {
+
+/// The instructions of a tape: straight-line code over one work array.
+class Tape {
+ public:
+  enum class Op : std::uint8_t { add, sub, mul, div, neg, sin, cos, exp, log, sqrt };
+  struct Instruction {
+    Op op;
+    std::int32_t a, b;  ///< operands: indices into the work array
+  };
+  /// A constant: the exact rational num/den when both are integers below 2^53 (lifted as
+  /// S(num)/S(den), so that a wider type gets its own digits), else the nearest double.
+  struct Constant {
+    double value = 0, num = 0, den = 1;
+    bool fraction = false;
+  };
+
+  Tape() = default;
+  Tape(int inputs, std::vector<Constant> constants, std::vector<Instruction> code,
+       std::vector<int> outputs, int prefix, int first_part)
+      : inputs_(inputs),
+        constants_(std::move(constants)),
+        code_(std::move(code)),
+        outputs_(std::move(outputs)),
+        prefix_(prefix),
+        first_part_(first_part) {}
+
+  int inputs() const { return inputs_; }
+  int size() const { return inputs_ + int(constants_.size()) + int(code_.size()); }
+  int instructions() const { return int(code_.size()); }
+  /// The first `prefix()` instructions depend on the inputs in `prefix_inputs` only.
+  int prefix() const { return prefix_; }
+  /// The instructions [0, first_part()) compute the first `first_outputs` outputs (flatten's
+  /// argument): a caller that needs only those stops there.
+  int first_part() const { return first_part_; }
+  const std::vector<int>& outputs() const { return outputs_; }
+
+  /// The instructions as text, one per line ("w9 = w2 * w7"; inputs q0, q1, h are w0…w(2N),
+  /// then the constants): what the tape computes, for a reader or a bug report.
+  std::string listing() const {
+    static const char* const names[] = {"+",   "-",   "*",   "/",   "neg",
+                                        "sin", "cos", "exp", "log", "sqrt"};
+    std::string s;
+    for (std::size_t k = 0; k < constants_.size(); ++k)
+      s += "w" + std::to_string(inputs_ + k) + " = " +
+           (constants_[k].fraction
+                ? std::to_string(constants_[k].num) + "/" + std::to_string(constants_[k].den)
+                : std::to_string(constants_[k].value)) +
+           "\n";
+    const int base = inputs_ + int(constants_.size());
+    for (std::size_t k = 0; k < code_.size(); ++k) {
+      const Instruction& I = code_[k];
+      const std::string a = "w" + std::to_string(I.a), b = "w" + std::to_string(I.b);
+      const int o = int(I.op);
+      s += "w" + std::to_string(base + k) + " = " +
+           (o < 4 ? a + " " + names[o] + " " + b : std::string(names[o]) + "(" + a + ")") +
+           (int(k) + 1 == prefix_ ? "    (end of the prefix)\n" : "\n");
+    }
+    s += "outputs:";
+    for (int o : outputs_) s += " w" + std::to_string(o);
+    return s + "\n";
+  }
+
+  /// Fill the constants of the work array `w` (size() entries) in the type S; once.
+  template <class S>
+  void load_constants(std::vector<S>& w) const {
+    w.resize(size());
+    for (std::size_t k = 0; k < constants_.size(); ++k) {
+      const Constant& c = constants_[k];
+      w[inputs_ + k] = c.fraction ? S(S(c.num) / S(c.den)) : S(c.value);
+    }
+  }
+  /// Run instructions [from, to) on w (inputs and constants already in place).
+  template <class S>
+  void run(S* w, int from, int to) const {
+    using std::cos;
+    using std::exp;
+    using std::log;
+    using std::sin;
+    using std::sqrt;
+    const int base = inputs_ + int(constants_.size());
+    for (int k = from; k < to; ++k) {
+      const Instruction& I = code_[k];
+      S& r = w[base + k];
+      const S& a = w[I.a];
+      switch (I.op) {
+        case Op::add:
+          r = a + w[I.b];
+          break;
+        case Op::sub:
+          r = a - w[I.b];
+          break;
+        case Op::mul:
+          r = a * w[I.b];
+          break;
+        case Op::div:
+          r = a / w[I.b];
+          break;
+        case Op::neg:
+          r = -a;
+          break;
+        case Op::sin:
+          r = sin(a);
+          break;
+        case Op::cos:
+          r = cos(a);
+          break;
+        case Op::exp:
+          r = exp(a);
+          break;
+        case Op::log:  // off its domain: NaN, as the tree evaluator (no message from libqd)
+          r = below_zero(a, true) ? not_a_number<S>() : S(log(a));
+          break;
+        case Op::sqrt:
+          r = below_zero(a, false) ? not_a_number<S>() : S(sqrt(a));
+          break;
+      }
+    }
+  }
+
+ private:
+  template <class S>
+  static bool below_zero(const S& a, bool or_zero) {
+    if constexpr (std::is_arithmetic_v<S>) {
+      return or_zero ? !(a > 0) : !(a >= 0);
+    } else {
+      const double x = static_cast<double>(to_double_value(a));
+      return or_zero ? !(x > 0) : !(x >= 0);
+    }
+  }
+  template <class S>
+  static double to_double_value(const S& a) {
+    if constexpr (requires { to_double(a); })
+      return to_double(a);
+    else
+      return static_cast<double>(a);
+  }
+  template <class S>
+  static S not_a_number() {
+    return S(std::numeric_limits<double>::quiet_NaN());
+  }
+
+  int inputs_ = 0;
+  std::vector<Constant> constants_;
+  std::vector<Instruction> code_;
+  std::vector<int> outputs_;
+  int prefix_ = 0, first_part_ = 0;
+};
+
+/// A discrete Lagrangian of dimension N compiled into two tapes: the Newton part (D1 L_d and
+/// D2 D1 L_d at (q0, q1, h), its q0- and h-only prefix run once per step) and the momentum
+/// part (D2 L_d, once per step). Evaluated in double by DelIntegrator (which detects
+/// `newton_parts`), and in any scalar S by `evaluate<S>`.
+struct CompiledStats {
+  int nodes = 0;                ///< graph nodes recorded (value and all derivatives)
+  int newton_instructions = 0;  ///< instructions of the Newton tape
+  int newton_prefix = 0;        ///< of which run once per step
+  int momentum_instructions = 0;
+  int all_instructions = 0;  ///< the tape of value, D1, D2 and D2 D1 together
+};
+
+/// Compile L_d of `dl` in dimension n (== dl.dim()): the three tapes (Newton part, momentum,
+/// everything). Throws ArgumentError("--ld") when the expression needs what the tape cannot
+/// record (none today: every operation of the language is covered).
+struct CompiledTapes {
+  Tape newton, momentum, all;
+  CompiledStats stats;
+};
+CompiledTapes compile_tapes(const TypedDiscreteLagrangian& dl);
+
+template <int N>
+class CompiledDiscreteLagrangian {
+ public:
+  explicit CompiledDiscreteLagrangian(const TypedDiscreteLagrangian& dl)
+      : t_(std::make_shared<const CompiledTapes>(compile_tapes(dl))) {
+    if (dl.dim() != N)
+      throw ArgumentError("--dim", "the expressions are " + std::to_string(dl.dim()) +
+                                       "-dimensional, not " + std::to_string(N));
+    t_->newton.load_constants(wn_);
+    t_->momentum.load_constants(wm_);
+  }
+
+  /// D1 L_d and D2 D1 L_d (row i = ∂(D1 L_d)_i/∂q1) at (q0, q1, h): the Newton system of
+  /// p0 = −D1 L_d(q0, q1, h). The q0/h part is recomputed only when q0 or h changed; with
+  /// `with_jacobian` false only D1 is computed (D12 is left as it was).
+  void newton_parts(const Vec<double, N>& q0, const Vec<double, N>& q1, double h,
+                    Vec<double, N>& D1, Mat<double, N>& D12, bool with_jacobian = true) const {
+    const Tape& T = t_->newton;
+    bool same = have_prefix_ && h == wn_[2 * N];
+    for (int i = 0; i < N && same; ++i) same = q0(i) == wn_[i];
+    if (!same) {
+      for (int i = 0; i < N; ++i) wn_[i] = q0(i);
+      wn_[2 * N] = h;
+    }
+    for (int i = 0; i < N; ++i) wn_[N + i] = q1(i);
+    if (!same) T.run(wn_.data(), 0, T.prefix());
+    have_prefix_ = true;
+    T.run(wn_.data(), T.prefix(), with_jacobian ? T.instructions() : T.first_part());
+    const auto& o = T.outputs();
+    for (int i = 0; i < N; ++i) D1(i) = wn_[o[i]];
+    if (with_jacobian)
+      for (int i = 0; i < N; ++i)
+        for (int j = 0; j < N; ++j) D12(i, j) = wn_[o[N + N * i + j]];
+  }
+  /// D2 L_d(q0, q1, h): the momentum p1 at the end of the step.
+  Vec<double, N> d2(const Vec<double, N>& q0, const Vec<double, N>& q1, double h) const {
+    const Tape& T = t_->momentum;
+    for (int i = 0; i < N; ++i) {
+      wm_[i] = q0(i);
+      wm_[N + i] = q1(i);
+    }
+    wm_[2 * N] = h;
+    T.run(wm_.data(), 0, T.instructions());
+    Vec<double, N> r;
+    for (int i = 0; i < N; ++i) r(i) = wm_[T.outputs()[i]];
+    return r;
+  }
+  /// Value and every derivative in the scalar type S (the tape of everything).
+  template <class S>
+  ad::TwoPoint<N, S> evaluate(const Vec<S, N>& q0, const Vec<S, N>& q1, const S& h) const {
+    const Tape& T = t_->all;
+    std::vector<S> w;
+    T.load_constants(w);
+    for (int i = 0; i < N; ++i) {
+      w[i] = q0(i);
+      w[N + i] = q1(i);
+    }
+    w[2 * N] = h;
+    T.run(w.data(), 0, T.instructions());
+    const auto& o = T.outputs();
+    ad::TwoPoint<N, S> r;
+    r.value = w[o[0]];
+    for (int i = 0; i < N; ++i) {
+      r.D1(i) = w[o[1 + i]];
+      r.D2(i) = w[o[1 + N + i]];
+    }
+    for (int i = 0; i < N; ++i)
+      for (int j = 0; j < N; ++j) r.D12(i, j) = w[o[1 + 2 * N + N * i + j]];
+    return r;
+  }
+  const CompiledStats& stats() const { return t_->stats; }
+
+ private:
+  std::shared_ptr<const CompiledTapes> t_;
+  // Work arrays: a copy of the object (one per integrator) has its own; the tapes are shared.
+  mutable std::vector<double> wn_, wm_;
+  mutable bool have_prefix_ = false;
+};
+
+}  // namespace vibook::verify

@@ -1,0 +1,79 @@
+// A researcher's own discrete Lagrangian, typed as text (verify/expression.hpp), stepped by
+// the generic variational integrator (DelIntegrator, Vermeeren 2017 (4)–(5)) through the
+// compiled tape (verify/tape.hpp) and through the reference path (nested AutoDiff on the
+// expression tree), on Kepler e = 0.7, h = 1e-3, 300 steps from perihelion: the same problem
+// and step as BM_sv_e07 and BM_midpoint_e07 (bench_adaptive.cpp), so that bench_table.py
+// divides by the hand-written kernels of the same run.
+#include <benchmark/benchmark.h>
+
+#include <map>
+#include <memory>
+#include <mutex>
+#include <string>
+
+#include "vibook/kepler/kepler.hpp"
+#include "vibook/mechanics/del_solver.hpp"
+#include "vibook/modified/engine.hpp"
+#include "vibook/verify/tape.hpp"
+
+namespace {
+
+constexpr int kSteps = 300;
+constexpr double kE = 0.7, kH = 1e-3;
+const char* kKepler = "-1/sqrt(x^2+y^2)";
+const char* kMidpoint = "h*((q1-q0)^2/(2*h^2) - V((q0+q1)/2))";
+const char* kTrapezoid = "(q1-q0)^2/(2*h) - h*(V(q0)+V(q1))/2";
+
+const vibook::verify::TypedDiscreteLagrangian& typed(const char* ld) {
+  std::lock_guard<std::mutex> lock(vibook::modified::ginac_mutex());
+  static std::map<std::string, std::unique_ptr<vibook::verify::TypedDiscreteLagrangian>> cache;
+  auto& p = cache[ld];
+  if (!p) p = std::make_unique<vibook::verify::TypedDiscreteLagrangian>(ld, kKepler);
+  return *p;
+}
+
+template <class Integrator>
+void run(benchmark::State& state, Integrator& vi) {
+  const auto s0 = vibook::kepler_perihelion_state(kE);
+  double its = 0;
+  for (auto _ : state) {
+    vibook::Vec<double, 2> q = s0.q, p = s0.p;
+    vi.reset();
+    for (int k = 0; k < kSteps; ++k) its += vi.step(q, p, kH).iterations;
+    benchmark::DoNotOptimize(q);
+    benchmark::DoNotOptimize(p);
+  }
+  state.counters["ns_per_step"] =
+      benchmark::Counter(double(kSteps) * double(state.iterations()) * 1e-9,
+                         benchmark::Counter::kIsRate | benchmark::Counter::kInvert);
+  state.counters["iterations_per_step"] = its / (double(kSteps) * double(state.iterations()));
+}
+
+void tape(benchmark::State& state, const char* ld) {
+  std::unique_lock<std::mutex> lock(vibook::modified::ginac_mutex(), std::defer_lock);
+  const auto& dl = typed(ld);
+  lock.lock();
+  const vibook::verify::CompiledDiscreteLagrangian<2> c(dl);
+  lock.unlock();
+  vibook::DelIntegrator<2, vibook::verify::CompiledDiscreteLagrangian<2>> vi(c);
+  run(state, vi);
+}
+
+void tree(benchmark::State& state, const char* ld) {
+  const auto& dl = typed(ld);
+  const auto Ld = dl.bind<2>();
+  vibook::DelIntegrator<2, decltype(Ld)> vi(Ld);
+  run(state, vi);
+}
+
+void BM_typed_midpoint_tape(benchmark::State& s) { tape(s, kMidpoint); }
+void BM_typed_midpoint_autodiff(benchmark::State& s) { tree(s, kMidpoint); }
+void BM_typed_trapezoid_tape(benchmark::State& s) { tape(s, kTrapezoid); }
+void BM_typed_trapezoid_autodiff(benchmark::State& s) { tree(s, kTrapezoid); }
+
+}  // namespace
+
+BENCHMARK(BM_typed_midpoint_tape);
+BENCHMARK(BM_typed_midpoint_autodiff);
+BENCHMARK(BM_typed_trapezoid_tape);
+BENCHMARK(BM_typed_trapezoid_autodiff);
