@@ -41,8 +41,7 @@ if hand and "vibook" in med and "odeint" in med:
           f"{verdict(r_hand <= 1.1)} (ratio {r_hand:.3f}); vibook faster than Odeint &mdash; "
           f"{verdict(r_odeint < 1.0)} (vibook/Odeint {r_odeint:.3f}).</p>")
 print(f"<p>Measured on {ctx.get('num_cpus', '?')} CPU(s) at {ctx.get('mhz_per_cpu', '?')} MHz, "
-      f"{ctx.get('date', '')}, build type {ctx.get('library_build_type', '?')} of the benchmark "
-      "library; median of 5 repetitions.</p>")
+      f"{ctx.get('date', '')}; median of 5 repetitions.</p>")
 
 # Adaptive methods, Kepler e = 0.7, h0 = 1e-3, 300 steps from perihelion. The table is also
 # written alone to the third argument, when given, for the EpAVI chapter.
