@@ -245,15 +245,17 @@ int run_verify(const VerifyOptions& o, const verify::TypedDiscreteLagrangian& dl
       if (tape) tape->reset();
     }
   } vi{vi_tree, vi_tape};
-  const std::string evaluation =
-      vi_tape ? fmt::format(
-                    "compiled tape: {} instructions per Newton iteration and {} once a "
-                    "step, {} for the momentum (--reference: nested AutoDiff)",
-                    vi_tape->lagrangian().stats().newton_instructions -
-                        vi_tape->lagrangian().stats().newton_prefix,
-                    vi_tape->lagrangian().stats().newton_prefix,
-                    vi_tape->lagrangian().stats().momentum_instructions)
-              : std::string("nested forward AutoDiff on the expression tree (--reference)");
+  std::string evaluation = "nested forward AutoDiff on the expression tree (--reference)";
+  if (vi_tape) {
+    const auto& c = vi_tape->lagrangian();
+    evaluation = fmt::format(
+        "compiled tape, {}: {} instructions per Newton iteration and {} once a step, {} for the "
+        "momentum (--reference: nested AutoDiff)",
+        c.native() ? std::string("run as native code")
+                   : "interpreted (no native code: " + c.native_reason() + ")",
+        c.stats().newton_instructions - c.stats().newton_prefix, c.stats().newton_prefix,
+        c.stats().momentum_instructions);
+  }
   Eigen::VectorXd z0(2 * N);
   for (int i = 0; i < N; ++i) {
     z0(i) = p.q0[i];
@@ -269,7 +271,9 @@ int run_verify(const VerifyOptions& o, const verify::TypedDiscreteLagrangian& dl
                               : dl.default_system() ? "L = |v|^2/2 - V(q)"
                                                     : "lagrangian"},
                  {"dim", N},
-                 {"evaluation", vi_tape ? "tape" : "autodiff"},
+                 {"evaluation", !vi_tape                         ? "autodiff"
+                                : vi_tape->lagrangian().native() ? "native"
+                                                                 : "tape"},
                  {"q0", p.q0},
                  {"p0", p.p0}};
   std::ostringstream out;  // the text report, printed at the end whatever happened

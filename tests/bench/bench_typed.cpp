@@ -1,9 +1,9 @@
 // A researcher's own discrete Lagrangian, typed as text (verify/expression.hpp), stepped by
 // the generic variational integrator (DelIntegrator, Vermeeren 2017 (4)–(5)) through the
-// compiled tape (verify/tape.hpp) and through the reference path (nested AutoDiff on the
-// expression tree), on Kepler e = 0.7, h = 1e-3, 300 steps from perihelion: the same problem
-// and step as BM_sv_e07 and BM_midpoint_e07 (bench_adaptive.cpp), so that bench_table.py
-// divides by the hand-written kernels of the same run.
+// compiled tape (verify/tape.hpp) run as native code and interpreted, and through the reference
+// path (nested AutoDiff on the expression tree), on Kepler e = 0.7, h = 1e-3, 300 steps from
+// perihelion: the same problem and step as BM_sv_e07 and BM_midpoint_e07 (bench_adaptive.cpp), so
+// that bench_table.py divides by the hand-written kernels of the same run.
 #include <benchmark/benchmark.h>
 
 #include <map>
@@ -49,11 +49,15 @@ void run(benchmark::State& state, Integrator& vi) {
   state.counters["iterations_per_step"] = its / (double(kSteps) * double(state.iterations()));
 }
 
-void tape(benchmark::State& state, const char* ld) {
+void tape(benchmark::State& state, const char* ld, bool native) {
   std::unique_lock<std::mutex> lock(vibook::modified::ginac_mutex(), std::defer_lock);
   const auto& dl = typed(ld);
   lock.lock();
-  const vibook::verify::CompiledDiscreteLagrangian<2> c(dl);
+  const vibook::verify::CompiledDiscreteLagrangian<2> c(dl, native);
+  if (native && !c.native()) {
+    state.SkipWithError(("no native code: " + c.native_reason()).c_str());
+    return;
+  }
   lock.unlock();
   vibook::DelIntegrator<2, vibook::verify::CompiledDiscreteLagrangian<2>> vi(c);
   run(state, vi);
@@ -66,14 +70,18 @@ void tree(benchmark::State& state, const char* ld) {
   run(state, vi);
 }
 
-void BM_typed_midpoint_tape(benchmark::State& s) { tape(s, kMidpoint); }
+void BM_typed_midpoint_native(benchmark::State& s) { tape(s, kMidpoint, true); }
+void BM_typed_midpoint_tape(benchmark::State& s) { tape(s, kMidpoint, false); }
 void BM_typed_midpoint_autodiff(benchmark::State& s) { tree(s, kMidpoint); }
-void BM_typed_trapezoid_tape(benchmark::State& s) { tape(s, kTrapezoid); }
+void BM_typed_trapezoid_native(benchmark::State& s) { tape(s, kTrapezoid, true); }
+void BM_typed_trapezoid_tape(benchmark::State& s) { tape(s, kTrapezoid, false); }
 void BM_typed_trapezoid_autodiff(benchmark::State& s) { tree(s, kTrapezoid); }
 
 }  // namespace
 
+BENCHMARK(BM_typed_midpoint_native);
 BENCHMARK(BM_typed_midpoint_tape);
 BENCHMARK(BM_typed_midpoint_autodiff);
+BENCHMARK(BM_typed_trapezoid_native);
 BENCHMARK(BM_typed_trapezoid_tape);
 BENCHMARK(BM_typed_trapezoid_autodiff);

@@ -79,6 +79,9 @@ class Tape {
   /// argument): a caller that needs only those stops there.
   int first_part() const { return first_part_; }
   const std::vector<int>& outputs() const { return outputs_; }
+  const std::vector<Instruction>& code() const { return code_; }
+  /// Index in the work array of instruction k's result.
+  int result_of(int k) const { return inputs_ + int(constants_.size()) + k; }
 
   /// The instructions as text, one per line ("w9 = w2 * w7"; inputs q0, q1, h are w0…w(2N),
   /// then the constants): what the tape computes, for a reader or a bug report.
@@ -192,6 +195,40 @@ class Tape {
   int prefix_ = 0, first_part_ = 0;
 };
 
+// ---------------------------------------------------------------------------------------------
+// Native code from a tape (native.cpp).
+//
+// A tape (tape.hpp) turned into native code: C source generated from its
+// instructions, compiled once with the system's C compiler into a shared object, cached by
+// the hash of the source, and loaded with dlopen. The tape stays the fallback.
+//
+// The generated code performs the tape's operations in the tape's order in binary64 with
+// contraction of a·b + c into fused multiply–adds switched off, calling the same libm
+// functions, so its results are the interpreter's to the bit (a doctest compares them).
+//
+// Where: `$VIBOOK_CACHE_DIR`, else `$XDG_CACHE_HOME/vibook`, else `~/.cache/vibook`, in a
+// subdirectory `tapes/`. The compiler: `$VIBOOK_CC`, else `cc`. `VIBOOK_NATIVE=0` switches
+// native code off. Any failure (no compiler, a cache that cannot be written, a compiler that
+// does not finish in 60 s) leaves the tape in use and says why in `reason`.
+// ---------------------------------------------------------------------------------------------
+
+/// The compiled segments of the Newton tape (prefix, first part, rest) and of the momentum
+/// tape, each `void f(double* w)` on the tape's work array.
+struct NativeTapes {
+  using Fn = void (*)(double*);
+  Fn newton_prefix = nullptr, newton_first = nullptr, newton_rest = nullptr, momentum = nullptr;
+  std::shared_ptr<void> library;  ///< the dlopen handle (closed with the last copy)
+  std::string path;               ///< the shared object
+  bool loaded() const { return momentum != nullptr; }
+};
+
+/// The C source of the four segments (what is compiled; deterministic).
+std::string native_source(const Tape& newton, const Tape& momentum);
+
+/// Load the native code of the tapes, compiling it when it is not in the cache. On failure
+/// the result is not loaded() and `reason` says why.
+NativeTapes load_native(const Tape& newton, const Tape& momentum, std::string& reason);
+
 /// A discrete Lagrangian of dimension N compiled into two tapes: the Newton part (D1 L_d and
 /// D2 D1 L_d at (q0, q1, h), its q0- and h-only prefix run once per step) and the momentum
 /// part (D2 L_d, once per step). Evaluated in double by DelIntegrator (which detects
@@ -216,14 +253,25 @@ CompiledTapes compile_tapes(const TypedDiscreteLagrangian& dl);
 template <int N>
 class CompiledDiscreteLagrangian {
  public:
-  explicit CompiledDiscreteLagrangian(const TypedDiscreteLagrangian& dl)
+  /// Compile `dl` (call with modified::ginac_mutex() held). With `native`, the Newton and
+  /// momentum tapes also run as native code where a C compiler and the cache allow
+  /// (load_native); `native_reason()` says why not otherwise.
+  explicit CompiledDiscreteLagrangian(const TypedDiscreteLagrangian& dl, bool native = true)
       : t_(std::make_shared<const CompiledTapes>(compile_tapes(dl))) {
     if (dl.dim() != N)
       throw ArgumentError("--dim", "the expressions are " + std::to_string(dl.dim()) +
                                        "-dimensional, not " + std::to_string(N));
     t_->newton.load_constants(wn_);
     t_->momentum.load_constants(wm_);
+    if (native)
+      native_ = load_native(t_->newton, t_->momentum, native_reason_);
+    else
+      native_reason_ = "not asked for";
   }
+  /// The native code is in use (else the tape is interpreted).
+  bool native() const { return native_.loaded(); }
+  const std::string& native_reason() const { return native_reason_; }
+  const std::string& native_path() const { return native_.path; }
 
   /// D1 L_d and D2 D1 L_d (row i = ∂(D1 L_d)_i/∂q1) at (q0, q1, h): the Newton system of
   /// p0 = −D1 L_d(q0, q1, h). The q0/h part is recomputed only when q0 or h changed; with
@@ -238,9 +286,15 @@ class CompiledDiscreteLagrangian {
       wn_[2 * N] = h;
     }
     for (int i = 0; i < N; ++i) wn_[N + i] = q1(i);
-    if (!same) T.run(wn_.data(), 0, T.prefix());
+    if (native_.loaded()) {
+      if (!same) native_.newton_prefix(wn_.data());
+      native_.newton_first(wn_.data());
+      if (with_jacobian) native_.newton_rest(wn_.data());
+    } else {
+      if (!same) T.run(wn_.data(), 0, T.prefix());
+      T.run(wn_.data(), T.prefix(), with_jacobian ? T.instructions() : T.first_part());
+    }
     have_prefix_ = true;
-    T.run(wn_.data(), T.prefix(), with_jacobian ? T.instructions() : T.first_part());
     const auto& o = T.outputs();
     for (int i = 0; i < N; ++i) D1(i) = wn_[o[i]];
     if (with_jacobian)
@@ -255,7 +309,10 @@ class CompiledDiscreteLagrangian {
       wm_[N + i] = q1(i);
     }
     wm_[2 * N] = h;
-    T.run(wm_.data(), 0, T.instructions());
+    if (native_.loaded())
+      native_.momentum(wm_.data());
+    else
+      T.run(wm_.data(), 0, T.instructions());
     Vec<double, N> r;
     for (int i = 0; i < N; ++i) r(i) = wm_[T.outputs()[i]];
     return r;
@@ -290,6 +347,8 @@ class CompiledDiscreteLagrangian {
   // Work arrays: a copy of the object (one per integrator) has its own; the tapes are shared.
   mutable std::vector<double> wn_, wm_;
   mutable bool have_prefix_ = false;
+  NativeTapes native_;
+  std::string native_reason_;
 };
 
 }  // namespace vibook::verify

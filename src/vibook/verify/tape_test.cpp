@@ -6,6 +6,9 @@
 
 #include <doctest/doctest.h>
 
+#include <cstdlib>
+#include <filesystem>
+
 #include "vibook/core/precision.hpp"
 #include "vibook/core/tolerance.hpp"
 #include "vibook/mechanics/del_solver.hpp"
@@ -16,6 +19,27 @@ using vibook::verify::CompiledDiscreteLagrangian;
 using vibook::verify::TypedDiscreteLagrangian;
 
 namespace {
+
+// The native code of these tests is cached in a directory of their own, removed at the end.
+struct TestCache {
+  std::string dir;
+  TestCache() {
+    char name[] = "/tmp/vibook-tape-test-XXXXXX";
+    if (const char* d = mkdtemp(name)) {
+      dir = d;
+      setenv("VIBOOK_CACHE_DIR", d, 1);
+    }
+  }
+  ~TestCache() {
+    std::error_code ec;
+    if (!dir.empty()) std::filesystem::remove_all(dir, ec);
+  }
+} test_cache;
+
+bool native_expected() {
+  const char* e = std::getenv("VIBOOK_NATIVE");
+  return !(e && std::string(e) == "0");
+}
 
 struct Case {
   const char* ld;
@@ -66,7 +90,11 @@ void compare_at(const TypedDiscreteLagrangian& dl, const CompiledDiscreteLagrang
 
 template <int N>
 void compare_case(const TypedDiscreteLagrangian& dl) {
+  // Native code where a C compiler is present (newton_parts and d2 then run it, and compare_at
+  // holds them to the interpreter's evaluate() bit for bit), else the interpreter.
   const CompiledDiscreteLagrangian<N> c(dl);
+  INFO("native code: ", c.native_reason());
+  if (native_expected()) CHECK(c.native());
   CHECK(c.stats().newton_instructions > 0);
   for (int k = 0; k < 5; ++k) {
     Vec<double, N> a, b;
@@ -166,5 +194,59 @@ TEST_CASE("tape: evaluated in long double and double-double") {
     CHECK(std::abs(to_double(q.D1(i)) - double(l.D1(i))) <= 1e-17 * scale);
     for (int j = 0; j < 2; ++j)
       CHECK(std::abs(to_double(q.D12(i, j)) - double(l.D12(i, j))) <= 1e-17 * scale);
+  }
+}
+
+TEST_CASE("tape: native code is the interpreter's to the bit, cached, and optional") {
+  std::unique_lock<std::mutex> lock(modified::ginac_mutex());
+  const TypedDiscreteLagrangian dl(kCases[3].ld, kCases[3].potential);  // sin, exp, log, cos
+  const CompiledDiscreteLagrangian<2> native(dl), again(dl), interpreted(dl, false);
+  lock.unlock();
+  CHECK_FALSE(interpreted.native());
+  if (!native_expected()) return;
+  INFO("native code: ", native.native_reason());
+  REQUIRE(native.native());
+  CHECK(again.native_path() == native.native_path());  // from the cache, not compiled twice
+  for (int k = 0; k < 20; ++k) {
+    const Vec<double, 2> a(0.2 + 0.05 * k, -0.3 + 0.02 * k), b(a(0) + 0.03, a(1) - 0.01 * k);
+    const double h = 0.01 + 0.004 * k;
+    Vec<double, 2> F1, F2;
+    Mat<double, 2> J1, J2;
+    native.newton_parts(a, b, h, F1, J1);
+    interpreted.newton_parts(a, b, h, F2, J2);
+    CHECK(F1 == F2);
+    CHECK(J1 == J2);
+    CHECK(native.d2(a, b, h) == interpreted.d2(a, b, h));
+  }
+  // Outside the domain (log of a negative number): NaN in both, never a number in one.
+  const Vec<double, 2> bad(-3.0, 0.0);
+  Vec<double, 2> F1, F2;
+  Mat<double, 2> J1, J2;
+  native.newton_parts(bad, bad, 0.1, F1, J1);
+  interpreted.newton_parts(bad, bad, 0.1, F2, J2);
+  for (int i = 0; i < 2; ++i) CHECK(std::isnan(F1(i)) == std::isnan(F2(i)));
+
+  SUBCASE("without a compiler the tape is interpreted, and says why") {
+    const char* old = std::getenv("VIBOOK_CC");
+    const std::string saved = old ? old : "";
+    const bool had = old != nullptr;
+    setenv("VIBOOK_CC", "/nonexistent/vibook-cc", 1);
+    setenv("VIBOOK_CACHE_DIR", (test_cache.dir + "/other").c_str(), 1);
+    std::unique_lock<std::mutex> relock(modified::ginac_mutex());
+    const CompiledDiscreteLagrangian<2> fallback(dl);
+    relock.unlock();
+    if (had)
+      setenv("VIBOOK_CC", saved.c_str(), 1);
+    else
+      unsetenv("VIBOOK_CC");
+    setenv("VIBOOK_CACHE_DIR", test_cache.dir.c_str(), 1);
+    CHECK_FALSE(fallback.native());
+    CHECK(fallback.native_reason().find("no C compiler") != std::string::npos);
+    Vec<double, 2> F3;
+    Mat<double, 2> J3;
+    const Vec<double, 2> a(0.2, -0.3), b(0.25, -0.28);
+    fallback.newton_parts(a, b, 0.05, F3, J3);
+    interpreted.newton_parts(a, b, 0.05, F2, J2);
+    CHECK(F3 == F2);
   }
 }
