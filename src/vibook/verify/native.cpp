@@ -166,33 +166,37 @@ NativeTapes load_native(const Tape& newton, const Tape& momentum, std::string& r
   if (!fs::is_regular_file(so, ec)) {
     // Compile into temporaries and rename into place: a concurrent run sees either nothing or
     // a finished object, never a half-written one.
-    std::string c_tmp = (dir / (std::string(name) + ".c.XXXXXX")).string();
-    const int fd = mkstemp(c_tmp.data());
+    const std::string cannot_write = "cannot write in the cache " + dir.string();
+    std::string c_file = (dir / (std::string(name) + ".XXXXXX.c")).string();
+    std::string so_tmp = so.string() + ".XXXXXX.tmp";
+    const int fd = mkstemps(c_file.data(), 2);
     if (fd < 0) {
-      reason = "cannot write in the cache " + dir.string();
+      reason = cannot_write;
       return n;
     }
     const bool written = ::write(fd, source.data(), source.size()) == ssize_t(source.size());
-    ::close(fd);
-    const fs::path c_file = c_tmp + ".c";
-    fs::rename(c_tmp, c_file, ec);
-    const fs::path so_tmp = so.string() + "." + std::to_string(getpid()) + ".tmp";
-    std::vector<std::string> argv = {cc};
-    argv.insert(argv.end(), flags.begin(), flags.end());
-    argv.insert(argv.end(), {"-o", so_tmp.string(), c_file.string(), "-lm"});
-    const bool ok = written && !ec && run(argv, 60, reason);
-    if (written && ec) reason = "cannot write in the cache " + dir.string();
-    if (!written) reason = "cannot write in the cache " + dir.string();
-    fs::remove(c_file, ec);
-    fs::remove(c_tmp, ec);
-    if (!ok) {
-      fs::remove(so_tmp, ec);
-      return n;
+    const bool closed = ::close(fd) == 0;
+    const int so_fd = written && closed ? mkstemps(so_tmp.data(), 4) : -1;
+    bool ok = so_fd >= 0;
+    if (ok) {
+      ::close(so_fd);  // the compiler writes it
+      std::vector<std::string> argv = {cc};
+      argv.insert(argv.end(), flags.begin(), flags.end());
+      argv.insert(argv.end(), {"-o", so_tmp, c_file, "-lm"});
+      ok = run(argv, 60, reason);
+      if (ok) {
+        fs::rename(so_tmp, so, ec);
+        if (ec) {
+          ok = false;
+          reason = cannot_write;
+        }
+      }
+    } else {
+      reason = cannot_write;
     }
-    fs::rename(so_tmp, so, ec);
-    if (ec) {
-      fs::remove(so_tmp, ec);
-      reason = "cannot write in the cache " + dir.string();
+    fs::remove(c_file, ec);
+    if (!ok) {
+      if (so_fd >= 0) fs::remove(so_tmp, ec);
       return n;
     }
   }

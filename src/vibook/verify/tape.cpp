@@ -7,6 +7,7 @@
 #include <cstring>
 #include <sstream>
 #include <unordered_map>
+#include <utility>
 
 namespace vibook::verify {
 
@@ -472,35 +473,22 @@ CompiledTapes compile(const TypedDiscreteLagrangian& dl) {
   all.insert(all.end(), D2.begin(), D2.end());
   all.insert(all.end(), D12.begin(), D12.end());
   t.all = g.flatten(all, inputs, none);
-  t.stats.nodes = g.size();
-  t.stats.newton_instructions = t.newton.instructions();
-  t.stats.newton_prefix = t.newton.prefix();
-  t.stats.momentum_instructions = t.momentum.instructions();
-  t.stats.all_instructions = t.all.instructions();
+  t.nodes = g.size();
   return t;
 }
 
 }  // namespace
 
 CompiledTapes compile_tapes(const TypedDiscreteLagrangian& dl) {
-  switch (dl.dim()) {
-    case 1:
-      return compile<1>(dl);
-    case 2:
-      return compile<2>(dl);
-    case 3:
-      return compile<3>(dl);
-    case 4:
-      return compile<4>(dl);
-    case 5:
-      return compile<5>(dl);
-    case 6:
-      return compile<6>(dl);
-    default:
-      break;
+  CompiledTapes t;
+  const bool done = [&]<int... K>(std::integer_sequence<int, K...>) {
+    return ((dl.dim() == K + 1 && (t = compile<K + 1>(dl), true)) || ...);
   }
-  throw ArgumentError("--dim", "a compiled discrete Lagrangian needs 1 to " +
-                                   std::to_string(kMaxDim) + " dimensions");
+  (std::make_integer_sequence<int, kMaxDim>{});
+  if (!done)
+    throw ArgumentError("--dim", "a compiled discrete Lagrangian needs 1 to " +
+                                     std::to_string(kMaxDim) + " dimensions");
+  return t;
 }
 
 }  // namespace vibook::verify

@@ -229,10 +229,7 @@ std::string native_source(const Tape& newton, const Tape& momentum);
 /// the result is not loaded() and `reason` says why.
 NativeTapes load_native(const Tape& newton, const Tape& momentum, std::string& reason);
 
-/// A discrete Lagrangian of dimension N compiled into two tapes: the Newton part (D1 L_d and
-/// D2 D1 L_d at (q0, q1, h), its q0- and h-only prefix run once per step) and the momentum
-/// part (D2 L_d, once per step). Evaluated in double by DelIntegrator (which detects
-/// `newton_parts`), and in any scalar S by `evaluate<S>`.
+/// Sizes of a compiled discrete Lagrangian, for a report.
 struct CompiledStats {
   int nodes = 0;                ///< graph nodes recorded (value and all derivatives)
   int newton_instructions = 0;  ///< instructions of the Newton tape
@@ -241,15 +238,20 @@ struct CompiledStats {
   int all_instructions = 0;  ///< the tape of value, D1, D2 and D2 D1 together
 };
 
-/// Compile L_d of `dl` in dimension n (== dl.dim()): the three tapes (Newton part, momentum,
-/// everything). Throws ArgumentError("--ld") when the expression needs what the tape cannot
-/// record (none today: every operation of the language is covered).
+/// The three tapes of L_d (Newton part, momentum, everything) and the size of the graph they
+/// came from.
 struct CompiledTapes {
   Tape newton, momentum, all;
-  CompiledStats stats;
+  int nodes = 0;
 };
+/// Compile L_d of `dl` (call with modified::ginac_mutex() held). Throws ArgumentError("--dim")
+/// outside 1…kMaxDim dimensions.
 CompiledTapes compile_tapes(const TypedDiscreteLagrangian& dl);
 
+/// A discrete Lagrangian of dimension N compiled into two tapes: the Newton part (D1 L_d and
+/// D2 D1 L_d at (q0, q1, h), its q0- and h-only prefix run once per step) and the momentum
+/// part (D2 L_d, once per step). Evaluated in double by DelIntegrator (which detects
+/// `newton_parts`), and in any scalar S by `evaluate<S>`.
 template <int N>
 class CompiledDiscreteLagrangian {
  public:
@@ -257,10 +259,7 @@ class CompiledDiscreteLagrangian {
   /// momentum tapes also run as native code where a C compiler and the cache allow
   /// (load_native); `native_reason()` says why not otherwise.
   explicit CompiledDiscreteLagrangian(const TypedDiscreteLagrangian& dl, bool native = true)
-      : t_(std::make_shared<const CompiledTapes>(compile_tapes(dl))) {
-    if (dl.dim() != N)
-      throw ArgumentError("--dim", "the expressions are " + std::to_string(dl.dim()) +
-                                       "-dimensional, not " + std::to_string(N));
+      : t_(std::make_shared<const CompiledTapes>(compile_tapes(checked(dl)))) {
     t_->newton.load_constants(wn_);
     t_->momentum.load_constants(wm_);
     if (native)
@@ -340,9 +339,19 @@ class CompiledDiscreteLagrangian {
       for (int j = 0; j < N; ++j) r.D12(i, j) = w[o[1 + 2 * N + N * i + j]];
     return r;
   }
-  const CompiledStats& stats() const { return t_->stats; }
+  CompiledStats stats() const {
+    return {t_->nodes, t_->newton.instructions(), t_->newton.prefix(), t_->momentum.instructions(),
+            t_->all.instructions()};
+  }
 
  private:
+  static const TypedDiscreteLagrangian& checked(const TypedDiscreteLagrangian& dl) {
+    if (dl.dim() != N)
+      throw ArgumentError("--dim", "the expressions are " + std::to_string(dl.dim()) +
+                                       "-dimensional, not " + std::to_string(N));
+    return dl;
+  }
+
   std::shared_ptr<const CompiledTapes> t_;
   // Work arrays: a copy of the object (one per integrator) has its own; the tapes are shared.
   mutable std::vector<double> wn_, wm_;
