@@ -600,7 +600,8 @@ const std::vector<ex>& Engine::l_mod() {
   return lmod_;
 }
 
-// Series Legendre transform: p = ∂L/∂ẋ solved for ẋ order by order, H = p·ẋ − L.
+// The first-order modified system from H_mod: ẋ = ∂H/∂p, ṗ = −∂H/∂x (through the potential's
+// derivative symbols by JetSpace::partial).
 std::pair<std::vector<std::vector<ex>>, std::vector<std::vector<ex>>> Engine::vector_field() {
   const std::vector<ex> H = h_mod();
   const JetSpace& J = *dl_.jets;
@@ -615,6 +616,7 @@ std::pair<std::vector<std::vector<ex>>, std::vector<std::vector<ex>>> Engine::ve
   return {xdot, pdot};
 }
 
+// Series Legendre transform: p = ∂L/∂ẋ solved for ẋ order by order, H = p·ẋ − L.
 std::vector<ex> Engine::h_mod() {
   if (solved().size() != static_cast<std::size_t>(dl_.jets->dofs()))
     throw ArgumentError("--what", "the modified Hamiltonian needs every degree of freedom solved");
