@@ -41,6 +41,26 @@ struct Pendulum {
   }
 };
 
+/// Hénon–Heiles, two degrees of freedom: U(x, y) = ½(x² + y²) + x²y − y³/3 (Hénon & Heiles 1964),
+/// bounded motion for energies below 1/6.
+struct HenonHeiles {
+  static constexpr int N = 2;
+  static constexpr const char* name = "henon-heiles";
+  template <class S>
+  S potential(const Vec<S, 2>& q) const {
+    const S x = q(0), y = q(1);
+    return constant<S>(0.5) * (x * x + y * y) + x * x * y - y * y * y / constant<S>(3);
+  }
+  template <class S>
+  Vec<S, 2> gradient(const Vec<S, 2>& q) const {
+    const S x = q(0), y = q(1);
+    Vec<S, 2> g;
+    g(0) = x + constant<S>(2) * x * y;
+    g(1) = y + x * x - y * y;
+    return g;
+  }
+};
+
 /// Energy H(q, p) = ½|p|² + U(q) of a mechanical problem.
 template <class Problem>
 double energy(const Problem& P, const Vec<double, Problem::N>& q,
