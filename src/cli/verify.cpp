@@ -28,6 +28,7 @@
 
 #include "args.hpp"
 #include "cli.hpp"
+#include "verify_composition.hpp"
 #include "vibook/core/output_file.hpp"
 #include "vibook/core/precision.hpp"
 #include "vibook/core/progress.hpp"
@@ -54,7 +55,7 @@ struct VerifyOptions {
   std::string ld, potential, lagrangian, hamiltonian, dim, q0, p0,
       t_end = "5", h_list = "0.2,0.1,0.05,0.025,0.0125", expected = "2", order_tol = "0.1",
       h = "0.05", steps = "100000", modified_order = "2", format = "text", json_out, report, floor,
-      max_seconds;
+      max_seconds, composition, coefficients, problem;
   bool json_given = false, report_given = false, timings = false, symmetric = false,
        progress = false, reference = false;
 };
@@ -1255,7 +1256,7 @@ int run_verify(const VerifyOptions& o, const verify::TypedDiscreteLagrangian& dl
   return rc;
 }
 
-int run(const VerifyOptions& o) {
+int run(const VerifyOptions& o, const CLI::App& c) {
   double max_seconds = 0;
   if (!o.max_seconds.empty()) {
     max_seconds = parse_number("--max-seconds", o.max_seconds);
@@ -1264,6 +1265,38 @@ int run(const VerifyOptions& o) {
   }
   // The typed expressions' derivatives are derived symbolically: the limit covers that too.
   const Watchdog watchdog("verify", max_seconds, o.progress);
+  if (c.count("--composition") > 0) {
+    // A composition method (verify_composition.cpp): the options of a typed L_d do not apply.
+    for (const char* opt :
+         {"--ld", "--lagrangian", "--hamiltonian", "--potential", "--dim", "--modified-order",
+          "--format", "--report", "--reference", "--symmetric"})
+      if (c.count(opt) > 0)
+        throw ArgumentError(opt, "does not apply to --composition (see vibook verify --help)");
+    CompositionOptions co;
+    co.base = o.composition;
+    co.coefficients = o.coefficients;
+    co.problem = o.problem;
+    co.q0 = o.q0;
+    co.p0 = o.p0;
+    co.t_end = o.t_end;
+    co.h_list = o.h_list;
+    co.expected = o.expected;
+    co.order_tol = o.order_tol;
+    co.h = o.h;
+    co.steps = o.steps;
+    co.floor = o.floor;
+    co.json_out = o.json_out;
+    co.json_given = o.json_given;
+    co.t_end_given = c.count("--t-end") > 0;
+    co.h_list_given = c.count("--h-list") > 0;
+    co.expected_given = c.count("--expected-order") > 0;
+    co.order_tol_given = c.count("--order-tol") > 0;
+    return run_composition(co);
+  }
+  for (const char* opt : {"--coefficients", "--problem"})
+    if (c.count(opt) > 0) throw ArgumentError(opt, "applies only with --composition");
+  if (o.ld.empty() && c.count("--ld") == 0)
+    throw ArgumentError("--ld", "is required (or --composition BASE --coefficients LIST|NAME)");
   progress::set_stage("reading the expressions and deriving L_d's derivatives");
   const int dim = o.dim.empty() ? 0 : static_cast<int>(parse_integer("--dim", o.dim));
   if (!o.dim.empty() && (dim < 1 || dim > verify::kMaxDim))
@@ -1303,8 +1336,20 @@ std::function<int()> add_verify_command(CLI::App& app) {
   c->add_option("--ld", o->ld,
                 "discrete Lagrangian L_d(q0, q1, h) ≈ h·L in q0, q1 (components q0[1], …), h, "
                 "V(...) and grad(V)(...), e.g. 'h*((q1-q0)^2/(2*h^2) - "
-                "(V(q0)+4*V((q0+q1)/2)+V(q1))/6)'; u^2 is |u|^2, [a, b] a vector")
-      ->required();
+                "(V(q0)+4*V((q0+q1)/2)+V(q1))/6)'; u^2 is |u|^2, [a, b] a vector (required "
+                "unless --composition is given)");
+  c->add_option("--composition", o->composition,
+                "verify a composition of this base method instead of an --ld: sv, midpoint, se "
+                "or se-adjoint (order conditions at 120 digits, measured order, symplecticity, "
+                "reversibility, energy)");
+  c->add_option("--coefficients", o->coefficients,
+                "with --composition: a catalogue name (yoshida4, suzuki4, yoshida6, yoshida8, "
+                "mclachlan8, kahanli6, kahanli8, ruth3) or the stages' coefficients in order of "
+                "application, e.g. '7/24*,3/8,3/8*,-25/24,1*' (decimals or ratios; '*' marks the "
+                "adjoint)");
+  c->add_option("--problem", o->problem,
+                "with --composition: the nonlinear test problem, kepler (default, eccentricity "
+                "0.5), pendulum or henon-heiles");
   c->add_option("--lagrangian", o->lagrangian,
                 "the intended Lagrangian L(q, v) in q, v (q[1], v[2], …), V(...), grad(V)(...); "
                 "default v^2/2 - V(q)");
@@ -1349,7 +1394,7 @@ std::function<int()> add_verify_command(CLI::App& app) {
   return [o, c] {
     o->json_given = c->count("--json-out") > 0;
     o->report_given = c->count("--report") > 0;
-    return run(*o);
+    return run(*o, *c);
   };
 }
 

@@ -1,0 +1,575 @@
+// `vibook verify --composition BASE --coefficients NAME|LIST` (integrators/composition.hpp):
+// the order conditions of the composition at 120 digits, weight by weight; the measured order
+// on a nonlinear problem against the continuous equations integrated in double-double (never
+// against the method itself); symplecticity and reversibility of the one-step map; the energy's
+// long-time behaviour. Every part is printed, even after one fails; the verdict names the parts
+// that failed.
+#include "verify_composition.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <iostream>
+#include <limits>
+#include <memory>
+#include <optional>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include <fmt/format.h>
+#include <fmt/ranges.h>
+
+#include <nlohmann/json.hpp>
+
+#include "args.hpp"
+#include "cli.hpp"
+#include "vibook/core/output_file.hpp"
+#include "vibook/core/precision.hpp"
+#include "vibook/integrators/composition.hpp"
+#include "vibook/integrators/kernels.hpp"
+#include "vibook/kepler/kepler.hpp"
+#include "vibook/problems/problems.hpp"
+#include "vibook/verify/reference.hpp"
+#include "vibook/verify/verify.hpp"
+
+namespace vibook::cli {
+
+namespace {
+
+using nlohmann::json;
+namespace comp = vibook::composition;
+
+// The order conditions are evaluated at this many decimal digits.
+constexpr int kDigits = 120;
+// "Satisfied" for the verdict: coefficients rounded to double already leave residuals of
+// 1e-15–1e-13 (Yoshida's 15-digit values 5e-14); a coefficient off in its eleventh digit leaves
+// 1e-11 or more.
+constexpr double kConditionTol = 1e-12;
+// "Visible": a residual above this shows in an order study in double; the expected order of a
+// typed list is the order the conditions give at this tolerance.
+constexpr double kVisibleTol = 1e-8;
+
+struct Base {
+  std::string name;
+  bool symmetric;
+  std::string description;
+};
+
+const std::vector<Base>& bases() {
+  static const std::vector<Base> b = {
+      {"sv", true, "Störmer-Verlet (velocity form), symmetric, order 2"},
+      {"midpoint", true, "the implicit midpoint rule, symmetric, order 2"},
+      {"se", false,
+       "symplectic Euler q1 = q0 + h p0, p1 = p0 - h grad U(q1) (drift, then kick), order 1; its "
+       "adjoint kicks, then drifts"},
+      {"se-adjoint", false,
+       "adjoint symplectic Euler p1 = p0 - h grad U(q0), q1 = q0 + h p1 (kick, then drift), "
+       "order 1; its adjoint is se"}};
+  return b;
+}
+
+struct Problem {
+  std::string name, hamiltonian;
+  std::vector<double> q0, p0;
+};
+
+const std::vector<Problem>& problems() {
+  static const std::vector<Problem> p = {
+      {"kepler",
+       "H = |p|^2/2 - 1/|q| (eccentricity 0.5, period 2 pi)",
+       {0.5, 0},
+       {0, std::sqrt(3.0)}},
+      {"pendulum", "H = p^2/2 - cos(q)", {1}, {0.5}},
+      {"henon-heiles", "H = |p|^2/2 + (x^2 + y^2)/2 + x^2 y - y^3/3", {0, 0.1}, {0.35, 0}}};
+  return p;
+}
+
+std::string vec_text(const std::vector<double>& v) {
+  std::vector<std::string> s;
+  for (double x : v) s.push_back(fmt::format("{:.6g}", x));
+  return "(" + fmt::format("{}", fmt::join(s, ", ")) + ")";
+}
+
+// Everything checked before any work.
+struct Plan {
+  const Base* base = nullptr;
+  const Problem* problem = nullptr;
+  const comp::CatalogueEntry* entry = nullptr;
+  std::vector<comp::Stage<mpfr_real>> typed;  // a typed list
+  std::vector<double> q0, p0, hs;
+  double t_end = 5, order_tol = 0.2, h = 0.05;
+  std::optional<double> expected, floor;
+  long long steps = 100000;
+};
+
+Plan check(const CompositionOptions& o) {
+  Plan p;
+  for (const auto& b : bases())
+    if (b.name == o.base) p.base = &b;
+  if (!p.base)
+    throw ArgumentError("--composition",
+                        "unknown base method '" + o.base + "' (sv, midpoint, se or se-adjoint)");
+  const std::string prob = o.problem.empty() ? "kepler" : o.problem;
+  for (const auto& q : problems())
+    if (q.name == prob) p.problem = &q;
+  if (!p.problem)
+    throw ArgumentError("--problem",
+                        "unknown problem '" + prob + "' (kepler, pendulum or henon-heiles)");
+  if (o.coefficients.empty())
+    throw ArgumentError("--coefficients",
+                        "is required with --composition: a catalogue name (yoshida4, suzuki4, "
+                        "yoshida6, yoshida8, mclachlan8, kahanli6, kahanli8, ruth3) or a list");
+  p.entry = comp::find_entry(o.coefficients);
+  if (!p.entry) {
+    const bool looks_like_list = o.coefficients.find_first_of("0123456789") != std::string::npos;
+    if (!looks_like_list)
+      throw ArgumentError("--coefficients", "no catalogue entry '" + o.coefficients +
+                                                "' (yoshida4, suzuki4, yoshida6, yoshida8, "
+                                                "mclachlan8, kahanli6, kahanli8, ruth3)");
+    const MpfrDigits digits(kDigits);
+    std::stringstream ss(o.coefficients);
+    std::string tok;
+    while (std::getline(ss, tok, ','))
+      p.typed.push_back(comp::parse_stage<mpfr_real>("--coefficients", tok));
+    if (o.coefficients.back() == ',')
+      throw ArgumentError("--coefficients", "ends with a comma: a coefficient is missing");
+    if (p.typed.empty() || p.typed.size() > 64)
+      throw ArgumentError("--coefficients", "needs 1 to 64 stages");
+  }
+  const std::size_t n = p.problem->q0.size();
+  auto vector_or = [&](const std::string& arg, const std::string& text,
+                       const std::vector<double>& dflt) {
+    std::vector<double> v = text.empty() ? dflt : parse_list(arg, text);
+    if (v.size() != n)
+      throw ArgumentError(arg, fmt::format("has {} components; {} has {} degrees of freedom",
+                                           v.size(), p.problem->name, n));
+    for (double x : v)
+      if (!std::isfinite(x)) throw ArgumentError(arg, "must be finite");
+    return v;
+  };
+  p.q0 = vector_or("--q0", o.q0, p.problem->q0);
+  p.p0 = vector_or("--p0", o.p0, p.problem->p0);
+  if (p.problem->name == "kepler" && std::hypot(p.q0[0], p.q0[1]) < 1e-3)
+    throw ArgumentError("--q0", "lies at (or within 1e-3 of) the Kepler singularity q = 0");
+  if (o.t_end_given) {
+    p.t_end = parse_number("--t-end", o.t_end);
+    if (!(p.t_end > 0) || p.t_end > 1e4) throw ArgumentError("--t-end", "must lie in (0, 1e4]");
+  }
+  if (o.expected_given) {
+    const double e = parse_number("--expected-order", o.expected);
+    if (!(e > 0 && e <= 10)) throw ArgumentError("--expected-order", "must lie in (0, 10]");
+    p.expected = e;
+  }
+  if (o.order_tol_given) {
+    p.order_tol = parse_number("--order-tol", o.order_tol);
+    if (!(p.order_tol > 0 && p.order_tol <= 1))
+      throw ArgumentError("--order-tol", "must lie in (0, 1]");
+  }
+  if (o.h_list_given) {
+    p.hs = parse_list("--h-list", o.h_list);
+    if (p.hs.size() < 3) throw ArgumentError("--h-list", "needs at least 3 step sizes");
+    for (double h : p.hs)
+      if (!(h > 0) || !(h <= p.t_end) || p.t_end / h > 1e7)
+        throw ArgumentError("--h-list", fmt::format("{} is not a step size in (T/1e7, T]", h));
+    std::vector<double> s = p.hs;
+    std::sort(s.begin(), s.end());
+    if (std::adjacent_find(s.begin(), s.end()) != s.end())
+      throw ArgumentError("--h-list", "gives a step size twice; an order needs distinct steps");
+  }
+  if (!o.floor.empty()) {
+    p.floor = parse_number("--floor", o.floor);
+    if (!(*p.floor >= 0) || !std::isfinite(*p.floor))
+      throw ArgumentError("--floor", "must be a finite number >= 0");
+  }
+  if (!o.h.empty()) p.h = parse_number("--h", o.h);
+  if (!o.steps.empty()) p.steps = parse_integer("--steps", o.steps);
+  if (p.steps < 1024 || p.steps > 100000000)
+    throw ArgumentError("--steps", "must lie in [1024, 1e8]");
+  if (!(p.h > 0) || !std::isfinite(p.h) || p.h * double(p.steps) > 1e9)
+    throw ArgumentError("--h", "must be a positive finite step (h·steps at most 1e9)");
+  if (o.json_given) check_output_path(o.json_out, "--json-out", true);
+  return p;
+}
+
+// Without --h-list the order study walks the step counts n = ⌈T·2^(k/4)⌉, k = 0, 1, … (h = T/n,
+// so h ≤ 1 and every run ends exactly at T). The fit takes the points whose error lies in
+// the asymptotic window [1e-12, 1e-6]·max(1, |z(T)|), fixed beforehand whatever the method:
+// above it, compositions with large substeps (Yoshida's eighth order) are still far from their
+// asymptotic range; below it, round-off takes over. The walk stops below the window or when a
+// run would take more than 1e6 substeps; a low-order method that never
+// reaches the window is fitted on its 6 smallest step sizes. fit_order_plateau's search for the
+// round-off plateau applies in both cases.
+constexpr double kWindowLow = 1e-12;
+constexpr double kWindow = 1e-6;
+
+template <class P>
+int run_problem(const CompositionOptions& o, const Plan& p, const P& prob) {
+  constexpr int N = P::N;
+  std::ostringstream out;
+  auto line = [&](const std::string& label, const std::string& text) {
+    out << fmt::format("{:<21}{}\n", label, text);
+  };
+  json js;
+  std::vector<std::string> failed, required;
+
+  // --- the stages and their order conditions, at 120 digits -------------------------------
+  std::vector<double> c;
+  std::vector<bool> adj;
+  comp::OrderConditions oc, visible;
+  comp::Refinement rf;
+  bool symmetric = false;
+  {
+    const MpfrDigits digits(kDigits);
+    const comp::Stages<mpfr_real> st =
+        p.entry ? comp::catalogue_stages<mpfr_real>(p.entry->name, kDigits, &rf) : p.typed;
+    for (const auto& s : st) {
+      c.push_back(static_cast<double>(s.c));
+      adj.push_back(s.adjoint);
+    }
+    const int W = std::min(
+        10, std::max(4, int(std::ceil(p.expected.value_or(p.entry ? p.entry->order : 8))) + 1));
+    oc = comp::order_conditions(st, p.base->symmetric, W, kConditionTol);
+    visible = comp::order_conditions(st, p.base->symmetric, W, kVisibleTol);
+    symmetric = comp::is_symmetric(st, p.base->symmetric);
+  }
+  const bool documented_base =
+      p.entry && (p.entry->base == "symmetric" ? p.base->symmetric : p.entry->base == p.base->name);
+  double expected;
+  std::string expected_from;
+  if (p.expected) {
+    expected = *p.expected;
+    expected_from = "--expected-order";
+  } else if (documented_base) {
+    expected = p.entry->order;
+    expected_from = "documented";
+  } else {
+    expected = visible.order;
+    expected_from = fmt::format("the order conditions at tolerance {:.0e}", kVisibleTol);
+  }
+
+  line("composition",
+       fmt::format("{} stages of {}{}", c.size(), p.base->name,
+                   symmetric ? " (symmetric: its own adjoint)" : " (not symmetric)"));
+  line("base method", p.base->description);
+  if (p.entry) {
+    line("coefficients", p.entry->name + ": " + p.entry->source);
+    line("  obtained by",
+         p.entry->derivation + (rf.iterations > 0
+                                    ? fmt::format(" ({} Newton iterations at {} digits; largest "
+                                                  "change from the published digits {:.1e})",
+                                                  rf.iterations, kDigits, rf.max_change)
+                                    : std::string()));
+    if (!rf.published_residual.empty()) {
+      const auto worst =
+          std::max_element(rf.published_residual.begin(), rf.published_residual.end());
+      line("  published digits",
+           fmt::format("satisfy the order conditions to {:.1e} (largest at weight {}); the "
+                       "solution of the conditions is used",
+                       *worst, worst - rf.published_residual.begin() + 1));
+    }
+    if (!documented_base)
+      line("  note", fmt::format("documented for {} (order {}); on {} the expected order comes "
+                                 "from {}",
+                                 p.entry->base == "symmetric" ? "a symmetric base" : p.entry->base,
+                                 p.entry->order, p.base->name,
+                                 p.expected ? "--expected-order" : "the order conditions"));
+  } else {
+    line("coefficients", fmt::format("as typed: {}", o.coefficients));
+  }
+  {
+    std::vector<std::string> parts;
+    for (std::size_t k = 0; k < oc.residual.size(); ++k)
+      if (!p.base->symmetric || k % 2 == 0 || oc.residual[k] > 0)
+        parts.push_back(fmt::format("{}: {:.1e}", k + 1, oc.residual[k]));
+    line("order conditions",
+         fmt::format("residual by weight ({} base, {} digits) {}",
+                     p.base->symmetric ? "symmetric" : "general", kDigits, fmt::join(parts, ", ")));
+  }
+  const bool conditions_ok = oc.order >= int(std::floor(expected + 1e-9));
+  std::string cond_text = fmt::format(
+      "order {} by the conditions (each weight's residual <= {:.0e}); expected {:g} ({}): {}",
+      oc.order, kConditionTol, expected, expected_from, conditions_ok ? "yes" : "NO");
+  if (!conditions_ok && oc.order < oc.max_weight)
+    cond_text += fmt::format(" -- weight {} fails by {:.2e} at the word {}", oc.order + 1,
+                             oc.residual[static_cast<std::size_t>(oc.order)],
+                             oc.worst_word[static_cast<std::size_t>(oc.order)]);
+  if (!conditions_ok && visible.order >= int(std::floor(expected + 1e-9)))
+    cond_text += " (a residual below 1e-8: inexact coefficients rather than a lower order)";
+  line("", cond_text);
+  required.push_back("order conditions");
+  if (!conditions_ok) failed.push_back("order conditions");
+  js["composition"] = {{"base", p.base->name},
+                       {"coefficients", o.coefficients},
+                       {"stages", c},
+                       {"adjoint", adj},
+                       {"symmetric", symmetric},
+                       {"source", p.entry ? p.entry->source : "typed"},
+                       {"derivation", p.entry ? p.entry->derivation : "typed"}};
+  if (rf.iterations > 0)
+    js["composition"]["newton"] = {{"iterations", rf.iterations},
+                                   {"max_change_from_published", rf.max_change},
+                                   {"published_residual_by_weight", rf.published_residual},
+                                   {"final_residual", rf.final_residual}};
+  js["order_conditions"] = {{"digits", kDigits},
+                            {"symmetric_base", p.base->symmetric},
+                            {"residual_by_weight", oc.residual},
+                            {"worst_word", oc.worst_word},
+                            {"tolerance", kConditionTol},
+                            {"order", oc.order},
+                            {"visible_tolerance", kVisibleTol},
+                            {"visible_order", visible.order},
+                            {"expected", expected},
+                            {"expected_from", expected_from},
+                            {"passed", conditions_ok}};
+
+  // --- the integrator ----------------------------------------------------------------------
+  auto make_step = [&]() -> verify::Step {
+    auto wrap = [](auto integrator) {
+      auto shared = std::make_shared<decltype(integrator)>(std::move(integrator));
+      return verify::Step(
+          [shared](Eigen::VectorXd& z, double h) { verify::step_qp<N>(*shared, z, h); });
+    };
+    const std::string& b = p.base->name;
+    if (b == "sv")
+      return wrap(comp::Composed<StormerVerlet<P>, StormerVerlet<P>>(
+          StormerVerlet<P>(prob), StormerVerlet<P>(prob), c, adj));
+    if (b == "midpoint")
+      return wrap(comp::Composed<ImplicitMidpoint<P>, ImplicitMidpoint<P>>(
+          ImplicitMidpoint<P>(prob), ImplicitMidpoint<P>(prob), c, adj));
+    if (b == "se")
+      return wrap(comp::Composed<SymplecticEuler<P>, SymplecticEulerAdjoint<P>>(
+          SymplecticEuler<P>(prob), SymplecticEulerAdjoint<P>(prob), c, adj));
+    return wrap(comp::Composed<SymplecticEulerAdjoint<P>, SymplecticEuler<P>>(
+        SymplecticEulerAdjoint<P>(prob), SymplecticEuler<P>(prob), c, adj));
+  };
+  const verify::Step step = make_step();
+  Eigen::VectorXd z0(2 * N);
+  for (int i = 0; i < N; ++i) {
+    z0(i) = p.q0[static_cast<std::size_t>(i)];
+    z0(N + i) = p.p0[static_cast<std::size_t>(i)];
+  }
+  line("problem", fmt::format("{}: {}, q0 = {}, p0 = {}", p.problem->name, p.problem->hamiltonian,
+                              vec_text(p.q0), vec_text(p.p0)));
+  int rc = kOk;
+  auto numerical = [&](const std::string& part, const std::exception& e) {
+    line(part, std::string("FAILED (numerical): ") + e.what());
+    failed.push_back(part);
+    rc = kNumerical;
+  };
+
+  // --- the reference: Hamilton's equations in double-double by GBS extrapolation -----------
+  Eigen::VectorXd zref;
+  double ref_error = NAN;
+  try {
+    using T = dd_real;
+    const verify::Field<T> f = [&](const std::vector<T>& y) {
+      Vec<T, N> q;
+      for (int i = 0; i < N; ++i) q(i) = y[static_cast<std::size_t>(i)];
+      const Vec<T, N> g = prob.template gradient<T>(q);
+      std::vector<T> r(2 * N);
+      for (int i = 0; i < N; ++i) {
+        r[static_cast<std::size_t>(i)] = y[static_cast<std::size_t>(N + i)];
+        r[static_cast<std::size_t>(N + i)] = -g(i);
+      }
+      return r;
+    };
+    std::vector<T> y0(2 * N);
+    for (int i = 0; i < 2 * N; ++i) y0[static_cast<std::size_t>(i)] = T(z0(i));
+    const auto r = verify::reference_solution<T>(f, y0, p.t_end);
+    zref.resize(2 * N);
+    for (int i = 0; i < 2 * N; ++i) zref(i) = to_double(r.y[static_cast<std::size_t>(i)]);
+    ref_error = r.error;
+    line("reference", fmt::format("Hamilton's equations by GBS extrapolation (order 16) in "
+                                  "double-double, {} macro-steps: estimated error {:.1e}",
+                                  r.macro_steps, ref_error));
+    js["reference"] = {{"T", p.t_end},
+                       {"state", std::vector<double>(zref.data(), zref.data() + zref.size())},
+                       {"estimated_error", ref_error},
+                       {"macro_steps", r.macro_steps}};
+  } catch (const NumericalError& e) {
+    numerical("reference", e);
+  }
+
+  // --- measured order -----------------------------------------------------------------------
+  required.push_back("order");
+  if (zref.size() == z0.size()) {
+    try {
+      const double scale = std::max(1.0, zref.lpNorm<Eigen::Infinity>());
+      const double floor =
+          p.floor ? *p.floor
+                  : std::max(10 * ref_error, 16 * std::numeric_limits<double>::epsilon() * scale);
+      std::vector<double> hs, err, windowed;
+      bool fallback = false;
+      if (!p.hs.empty()) {
+        hs = p.hs;
+        for (double h : hs)
+          err.push_back((verify::integrate(step, z0, h, p.t_end) - zref).lpNorm<Eigen::Infinity>());
+        windowed = err;
+      } else {
+        for (int k = 0;; ++k) {
+          const double n = std::ceil(p.t_end * std::exp2(0.25 * k));
+          if (!hs.empty() && std::abs(p.t_end / n - hs.back()) == 0) continue;
+          const double h = p.t_end / n;
+          if (double(c.size()) * n > 1e6) break;
+          double e = std::numeric_limits<double>::quiet_NaN();
+          try {
+            e = (verify::integrate(step, z0, h, p.t_end) - zref).lpNorm<Eigen::Infinity>();
+          } catch (const NumericalError&) {
+            // a step too large for the base method's solve: no point here
+          }
+          hs.push_back(h);
+          err.push_back(e);
+          const bool in = e <= kWindow * scale && e >= kWindowLow * scale;
+          windowed.push_back(in ? e : std::numeric_limits<double>::quiet_NaN());
+          if (e < kWindowLow * scale) break;
+        }
+        if (std::count_if(windowed.begin(), windowed.end(),
+                          [](double x) { return std::isfinite(x); }) < 3) {
+          fallback = true;
+          windowed = err;
+          for (std::size_t i = 0; i + 6 < windowed.size(); ++i)
+            windowed[i] = std::numeric_limits<double>::quiet_NaN();
+        }
+      }
+      const verify::PlateauFit fit = verify::fit_order_plateau(hs, windowed, floor);
+      const bool ok = std::isfinite(fit.slope) && std::abs(fit.slope - expected) < p.order_tol;
+      if (!ok) failed.push_back("order");
+      // The points of the fit, in brief (all of them in the JSON).
+      double hmin = INFINITY, hmax = 0, emin = INFINITY, emax = 0;
+      for (std::size_t i = 0; i < hs.size(); ++i)
+        if (fit.used[i]) {
+          hmin = std::min(hmin, hs[i]);
+          hmax = std::max(hmax, hs[i]);
+          emin = std::min(emin, err[i]);
+          emax = std::max(emax, err[i]);
+        }
+      const std::string points =
+          fit.points > 0
+              ? fmt::format(
+                    "h from {:.3g} to {:.3g}, errors from {:.2e} to {:.2e}; {} of {} runs "
+                    "fitted ({})",
+                    hmax, hmin, emax, emin, fit.points, hs.size(),
+                    !p.hs.empty() ? "--h-list, above the floor and the plateau"
+                    : fallback    ? "the window [1e-12, 1e-6]·scale was not reached: the 6 "
+                                    "smallest step sizes"
+                                  : "errors in the window [1e-12, 1e-6]·scale")
+              : fmt::format("{} runs, none usable", hs.size());
+      line("order",
+           std::isfinite(fit.slope)
+               ? fmt::format("{:.3f} over {} step sizes at T = {:g} (floor {:.1e}); expected {:g} "
+                             "(|p - {:g}| < {:g}): {}",
+                             fit.slope, fit.points, p.t_end, fit.floor, expected, expected,
+                             p.order_tol, ok ? "yes" : "NO")
+               : fmt::format("not measured: {} of {} errors lie in the window and above the floor "
+                             "{:.1e} (--h-list to choose the step sizes): NO",
+                             fit.points, hs.size(), fit.floor));
+      line("  points", points);
+      std::vector<bool> used = fit.used;
+      js["order"] = {
+          {"h", hs},
+          {"error", err},
+          {"used_in_fit", used},
+          {"fitted", std::isfinite(fit.slope) ? json(fit.slope) : json(nullptr)},
+          {"floor", fit.floor},
+          {"window",
+           p.hs.empty() && !fallback ? json({kWindowLow * scale, kWindow * scale}) : json(nullptr)},
+          {"fitted_on", !p.hs.empty() ? "--h-list"
+                        : fallback    ? "the 6 smallest step sizes"
+                                      : "the window"},
+          {"expected", expected},
+          {"tolerance", p.order_tol},
+          {"passed", ok}};
+    } catch (const NumericalError& e) {
+      numerical("order", e);
+    }
+  } else {
+    line("order", "not measured: no reference solution");
+    failed.push_back("order");
+  }
+
+  // --- symplecticity and reversibility -------------------------------------------------------
+  std::vector<Eigen::VectorXd> states{z0};
+  if (zref.size() == z0.size()) states.push_back(zref);
+  required.push_back("symplectic");
+  try {
+    const auto sym = verify::symplecticity_defect(step, states, p.h, 1e-8);
+    line("symplectic", fmt::format("defect |J^T W J - W| = {:.2e} (<= {:.0e}): {}", sym.defect,
+                                   sym.tolerance, sym.passed ? "yes" : "NO"));
+    if (!sym.passed) failed.push_back("symplectic");
+    js["symplecticity"] = {
+        {"defect", sym.defect}, {"tolerance", sym.tolerance}, {"passed", sym.passed}};
+  } catch (const NumericalError& e) {
+    numerical("symplectic", e);
+  }
+  if (symmetric) required.push_back("time-reversible");
+  try {
+    const auto rev = verify::reversibility_defect(step, states, p.h, 1e-12);
+    line("time-reversible",
+         fmt::format("defect = {:.2e} (<= {:.0e}): {}{}", rev.defect, rev.tolerance,
+                     rev.passed ? "yes" : "NO",
+                     symmetric ? "" : " (reported only: the composition is not symmetric)"));
+    if (symmetric && !rev.passed) failed.push_back("time-reversible");
+    js["reversibility"] = {{"defect", rev.defect},
+                           {"tolerance", rev.tolerance},
+                           {"required", symmetric},
+                           {"passed", rev.passed}};
+  } catch (const NumericalError& e) {
+    numerical("time-reversible", e);
+  }
+
+  // --- energy -------------------------------------------------------------------------------
+  required.push_back("energy");
+  try {
+    const verify::Observable H = [&](const Eigen::VectorXd& z) {
+      return energy(prob, Vec<double, N>(z.head<N>()), Vec<double, N>(z.tail<N>()));
+    };
+    const double H0 = H(z0);
+    const double scale = std::max({std::abs(H0), 0.5 * z0.tail(N).squaredNorm(), 1e-300});
+    const auto en = verify::energy_behaviour(step, H, z0, p.h, p.steps);
+    const long long k1 = std::min<long long>(p.steps, 4096);
+    const auto e1 = verify::energy_behaviour(step, H, z0, p.h, k1);
+    const auto e2 = verify::energy_behaviour(step, H, z0, p.h / 2, 2 * k1);
+    const double h_exp = e1.max_error > 0 && e2.max_error > 0
+                             ? std::log2(e1.max_error / e2.max_error)
+                             : std::numeric_limits<double>::quiet_NaN();
+    // The scaling with h is read only where the run at h/2 stays well above round-off (a
+    // high-order method reaches it at h/2, and its ratio then says nothing about h^p).
+    const double roundoff_h2 =
+        64 * std::sqrt(double(2 * k1)) * std::numeric_limits<double>::epsilon() / 2 * scale;
+    const bool scaling = std::isfinite(h_exp) && e2.max_error > 100 * roundoff_h2;
+    const auto ev =
+        verify::judge_energy(en, scale, expected, scaling ? en.max_error / std::exp2(h_exp) : -1);
+    line("energy",
+         fmt::format("{} over {} steps of h = {:g}: {}", ev.verdict, en.steps, p.h, ev.why));
+    if (!ev.passed) failed.push_back("energy");
+    js["energy"] = {{"steps", en.steps},         {"h", p.h},
+                    {"max_error", en.max_error}, {"relative_error", ev.relative},
+                    {"exponent", en.exponent},   {"verdict", ev.verdict},
+                    {"passed", ev.passed}};
+  } catch (const NumericalError& e) {
+    numerical("energy", e);
+  }
+
+  js["verdict"] = {{"passed", failed.empty()}, {"failed", failed}, {"required", required}};
+  line("verdict", fmt::format("{} ({})", failed.empty() ? "PASS" : "FAIL",
+                              fmt::join(failed.empty() ? required : failed, ", ")));
+  std::cout << out.str();
+  std::cout.flush();
+  if (rc == kOk && !failed.empty()) rc = kVerdict;
+  if (rc == kVerdict)
+    eprint(fmt::format("vibook: verify: FAIL ({}); the report above says why\n",
+                       fmt::join(failed, ", ")));
+  if (o.json_given) write_output_file(o.json_out, js.dump(2) + "\n", "--json-out");
+  return rc;
+}
+
+}  // namespace
+
+int run_composition(const CompositionOptions& o) {
+  const Plan p = check(o);
+  if (p.problem->name == "pendulum") return run_problem(o, p, Pendulum{});
+  if (p.problem->name == "henon-heiles") return run_problem(o, p, HenonHeiles{});
+  return run_problem(o, p, Kepler{});
+}
+
+}  // namespace vibook::cli

@@ -1,0 +1,45 @@
+# Shared by verify_verdicts.sh and verify_composition.sh (sourced, with V set to the vibook
+# command): a temporary directory, the pass/fail counters, and case_, one run of `vibook verify`
+# checked for its exit status, its stderr line, lines of its report and its JSON verdict.
+# VERIFY_PHASES=1 also checks that every phase that ran is in the JSON (the --ld route has
+# phases; the --composition route has none).
+tmp=$(mktemp -d)
+trap 'rm -rf "$tmp"' EXIT
+pass=0 fail=0
+ok() { pass=$((pass + 1)); }
+bad() { fail=$((fail + 1)); echo "FAIL: $*"; }
+
+# case NAME STATUS 'FAILED-CHECKS' 'REGEX...' -- ARGS: exit status (0 passes, 5 a verdict
+# failed, with one stderr line naming which), the JSON verdict's failed checks (comma-separated,
+# "" when it passes) and each regex among the report's lines.
+case_() {
+  local name=$1 want=$2 failed=$3; shift 3
+  local pats=()
+  while [ "$1" != "--" ]; do pats+=("$1"); shift; done
+  shift
+  "$V" verify "$@" --json-out "$tmp/v.json" >"$tmp/out" 2>"$tmp/err"
+  local got=$?
+  if [ "$got" != "$want" ]; then
+    bad "$name: exit $got, expected $want: $(cat "$tmp/err") $(cat "$tmp/out")"; return
+  fi
+  if [ "$want" = 0 ]; then
+    [ -s "$tmp/err" ] && { bad "$name: stderr not empty: $(cat "$tmp/err")"; return; }
+  elif [ "$(wc -l <"$tmp/err")" != 1 ] || ! grep -q "^vibook: " "$tmp/err"; then
+    bad "$name: want one stderr line, got: $(cat "$tmp/err")"; return
+  fi
+  for p in "${pats[@]}"; do
+    grep -Eq -- "$p" "$tmp/out" || { bad "$name: report lacks /$p/: $(cat "$tmp/out")"; return; }
+  done
+  python3 - "$tmp/v.json" "$failed" <<'PY' || { bad "$name: JSON verdict"; return; }
+import json, os, sys
+j = json.load(open(sys.argv[1]))
+want = [w for w in sys.argv[2].split(",") if w]
+v = j["verdict"]
+assert v["failed"] == want and v["passed"] == (not want), (v, want)
+# every phase that ran is in the JSON with its status
+if os.environ.get("VERIFY_PHASES") == "1":
+    assert all(p["status"] in ("ok", "failed", "skipped") for p in j["phases"]), j["phases"]
+PY
+  ok
+}
+

@@ -1,0 +1,70 @@
+#!/usr/bin/env bash
+# `vibook verify --composition`: catalogue compositions pass, deliberately wrong ones fail the
+# verdict that should fail (the order conditions for a coefficient off in its eleventh digit,
+# which the measured order cannot see; conditions and order for stages applied in the wrong
+# order and for a symmetric composition of a first-order base), bad arguments exit 2 before any
+# work, and two runs write the same bytes. Usage: verify_composition.sh path/to/vibook
+set -u
+V=$1
+# shellcheck source=verify_case.sh
+source "$(dirname "$0")/verify_case.sh"
+
+Y6P='0.784513610477560,0.235573213359357,-1.17767998416887,1.315186320663906,-1.17767998416887,0.235573213359357,0.784513610477560'
+
+case_ yoshida6 0 "" 'order 6 by the conditions' 'Newton iterations' '^verdict +PASS' \
+  -- --composition sv --coefficients yoshida6
+case_ yoshida8-hh 0 "" 'order 8 by the conditions' 'published digits +satisfy' \
+  -- --composition sv --coefficients yoshida8 --problem henon-heiles
+case_ ruth3 0 "" 'order 3 by the conditions' 'not symmetric' \
+  -- --composition se --coefficients ruth3
+case_ ruth3-typed 0 "" 'order 3 by the conditions' \
+  -- --composition se --coefficients '7/24*,3/8,3/8*,-25/24,1*' --problem pendulum
+case_ kahanli6-midpoint 0 "" 'order 6 by the conditions' \
+  -- --composition midpoint --coefficients kahanli6 --steps 4096
+case_ perturbed 5 "order conditions" 'weight 3 fails by' 'inexact coefficients' \
+  -- --composition sv --coefficients "$Y6P" --expected-order 6
+case_ swapped 5 "order conditions,order,energy" 'order 2 by the conditions' \
+  -- --composition se --coefficients '3/8,7/24*,-25/24,3/8*,0,1*' --expected-order 3
+case_ first-order-base 5 "order conditions,order,energy" 'order 1 by the conditions' \
+  'expected 4' -- --composition se --coefficients yoshida4 --expected-order 4
+case_ doubled 5 "order conditions,order" 'weight 1 fails' \
+  -- --composition sv --coefficients 1,1 --expected-order 2
+
+# Bad arguments: exit 2, one line naming the argument, nothing on stdout.
+arg() {
+  local name=$1 opt=$2; shift 2
+  "$V" verify "$@" >"$tmp/out" 2>"$tmp/err"
+  local got=$?
+  if [ "$got" != 2 ] || [ -s "$tmp/out" ] || ! grep -q -- "$opt" "$tmp/err" ||
+     [ "$(wc -l <"$tmp/err")" != 1 ]; then
+    bad "$name: exit $got, stdout $(wc -c <"$tmp/out") bytes, stderr: $(cat "$tmp/err")"
+  else
+    ok
+  fi
+}
+arg base --composition --composition rk4 --coefficients yoshida4
+arg no-coefficients --coefficients --composition sv
+arg unknown-name --coefficients --composition sv --coefficients yoshida5
+arg garbage --coefficients --composition sv --coefficients '0.5,abc'
+arg zero-division --coefficients --composition sv --coefficients '1/0'
+arg trailing-comma --coefficients --composition sv --coefficients '0.5,0.5,'
+arg with-ld --ld --composition sv --coefficients yoshida4 --ld 'h*(q1-q0)^2/(2*h)'
+arg with-potential --potential --composition sv --coefficients yoshida4 --potential x^2
+arg problem-alone --problem --ld 'h*((q1-q0)^2/(2*h^2) - V(q0))' --potential x^2 --problem kepler
+arg problem --problem --composition sv --coefficients yoshida4 --problem mars
+arg singular-q0 --q0 --composition sv --coefficients yoshida4 --q0 0,0
+arg q0-size --q0 --composition sv --coefficients yoshida4 --problem pendulum --q0 1,2
+arg h-list --h-list --composition sv --coefficients yoshida4 --h-list 0.1,0.1,0.05
+arg steps --steps --composition sv --coefficients yoshida4 --steps 10
+arg json-dir --json-out --composition sv --coefficients yoshida4 --json-out "$tmp"
+arg nothing --ld
+
+# Reproducible: two runs, same bytes (text and JSON).
+for i in 1 2; do
+  "$V" verify --composition sv --coefficients mclachlan8 --json-out "$tmp/r$i.json" >"$tmp/r$i.txt"
+done
+if cmp -s "$tmp/r1.txt" "$tmp/r2.txt" && cmp -s "$tmp/r1.json" "$tmp/r2.json"; then ok; else
+  bad "two runs differ"; fi
+
+echo "verify_composition: $pass passed, $fail failed"
+[ "$fail" = 0 ]
