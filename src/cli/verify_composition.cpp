@@ -326,8 +326,17 @@ int run_problem(const CompositionOptions& o, const Plan& p, const P& prob) {
   auto make_step = [&]() -> verify::Step {
     auto wrap = [](auto integrator) {
       auto shared = std::make_shared<decltype(integrator)>(std::move(integrator));
-      return verify::Step(
-          [shared](Eigen::VectorXd& z, double h) { verify::step_qp<N>(*shared, z, h); });
+      // A failed solve names the step size and the state it started from.
+      return verify::Step([shared](Eigen::VectorXd& z, double h) {
+        const Eigen::VectorXd z0 = z;
+        try {
+          verify::step_qp<N>(*shared, z, h);
+        } catch (const NumericalError& e) {
+          std::vector<double> q(z0.data(), z0.data() + N), pk(z0.data() + N, z0.data() + 2 * N);
+          throw NumericalError(fmt::format("a step of h = {:g} from q = {}, p = {}: {}", h,
+                                           vec_text(q), vec_text(pk), e.what()));
+        }
+      });
     };
     const std::string& b = p.base->name;
     if (b == "sv")
@@ -351,10 +360,12 @@ int run_problem(const CompositionOptions& o, const Plan& p, const P& prob) {
   line("problem", fmt::format("{}: {}, q0 = {}, p0 = {}", p.problem->name, p.problem->hamiltonian,
                               vec_text(p.q0), vec_text(p.p0)));
   int rc = kOk;
+  std::string first_error;  // the first numerical failure, for the one line on stderr
   auto numerical = [&](const std::string& part, const std::exception& e) {
     line(part, std::string("FAILED (numerical): ") + e.what());
     failed.push_back(part);
     rc = kNumerical;
+    if (first_error.empty()) first_error = part + ": " + e.what();
   };
 
   // --- the reference: Hamilton's equations in double-double by GBS extrapolation -----------
@@ -559,6 +570,7 @@ int run_problem(const CompositionOptions& o, const Plan& p, const P& prob) {
   if (rc == kVerdict)
     eprint(fmt::format("vibook: verify: FAIL ({}); the report above says why\n",
                        fmt::join(failed, ", ")));
+  if (rc == kNumerical) eprint("vibook: error: verify: " + first_error + "\n");
   if (o.json_given) write_output_file(o.json_out, js.dump(2) + "\n", "--json-out");
   return rc;
 }

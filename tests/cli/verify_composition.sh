@@ -59,6 +59,15 @@ arg steps --steps --composition sv --coefficients yoshida4 --steps 10
 arg json-dir --json-out --composition sv --coefficients yoshida4 --json-out "$tmp"
 arg nothing --ld
 
+# A solve that fails (the midpoint rule's Newton at h = 3): exit 3, every part still printed,
+# one stderr line naming the part, the step size and the state.
+"$V" verify --composition midpoint --coefficients yoshida8 --h 3 --steps 2000 >"$tmp/out" 2>"$tmp/err"
+got=$?
+if [ "$got" = 3 ] && [ "$(wc -l <"$tmp/err")" = 1 ] &&
+   grep -Eq '^vibook: error: verify: symplectic: a step of h = .* from q = \(.*\), p = \(.*\): implicit midpoint step: no convergence' "$tmp/err" &&
+   grep -q '^verdict' "$tmp/out"; then ok; else
+  bad "newton failure: exit $got, stderr: $(cat "$tmp/err")"; fi
+
 # Reproducible: two runs, same bytes (text and JSON).
 for i in 1 2; do
   "$V" verify --composition sv --coefficients mclachlan8 --json-out "$tmp/r$i.json" >"$tmp/r$i.txt"
