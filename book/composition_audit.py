@@ -64,7 +64,7 @@ sources = []
 with tempfile.TemporaryDirectory() as tmp:
     for label, base, coefficients, extra, must_pass in ROWS:
         results = {pr: run(base, coefficients, extra, pr, tmp) for pr in PROBLEMS}
-        rc0, j = results[PROBLEMS[0]]
+        j = results[PROBLEMS[0]][1]
         oc = j["order_conditions"]
         comp = j["composition"]
         res = oc["residual_by_weight"]

@@ -1,7 +1,9 @@
 // Strict parsing of the command line's numbers (args.hpp).
 #include "args.hpp"
 
+#include <algorithm>
 #include <charconv>
+#include <cmath>
 #include <system_error>
 
 #include <fmt/format.h>
@@ -41,20 +43,40 @@ long long parse_integer(const std::string& arg, const std::string& text) {
   return v;
 }
 
-std::vector<double> parse_list(const std::string& arg, const std::string& text) {
-  std::vector<double> out;
+std::vector<std::string> split_list(const std::string& arg, const std::string& text) {
+  std::vector<std::string> out;
   std::size_t start = 0;
   for (int i = 1;; ++i) {
     const std::size_t comma = text.find(',', start);
-    const std::string item =
+    std::string item =
         text.substr(start, comma == std::string::npos ? std::string::npos : comma - start);
     require(!item.empty(), arg,
             fmt::format("'{}': number {} of the comma-separated list is empty", text, i));
-    out.push_back(parse_number(arg, item));
+    out.push_back(std::move(item));
     if (comma == std::string::npos) break;
     start = comma + 1;
   }
   return out;
+}
+
+std::vector<double> parse_list(const std::string& arg, const std::string& text) {
+  std::vector<double> out;
+  for (const auto& item : split_list(arg, text)) out.push_back(parse_number(arg, item));
+  return out;
+}
+
+std::vector<double> parse_step_list(const std::string& arg, const std::string& text, double t_end,
+                                    int max_steps_log10) {
+  std::vector<double> hs = parse_list(arg, text);
+  require(hs.size() >= 3, arg, "needs at least 3 step sizes");
+  for (double h : hs)
+    require(h > 0 && h <= t_end && t_end / h <= std::pow(10.0, max_steps_log10), arg,
+            fmt::format("{} is not a step size in (T/1e{}, T]", h, max_steps_log10));
+  std::vector<double> sorted = hs;
+  std::sort(sorted.begin(), sorted.end());
+  require(std::adjacent_find(sorted.begin(), sorted.end()) == sorted.end(), arg,
+          "gives a step size twice; an order needs distinct steps");
+  return hs;
 }
 
 }  // namespace vibook::cli

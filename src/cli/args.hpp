@@ -13,5 +13,10 @@ double parse_number(const std::string& arg, const std::string& text);
 long long parse_integer(const std::string& arg, const std::string& text);
 /// "1,0.5": comma-separated numbers, none of them empty.
 std::vector<double> parse_list(const std::string& arg, const std::string& text);
+/// The comma-separated items as text, none of them empty (parse_list's split).
+std::vector<std::string> split_list(const std::string& arg, const std::string& text);
+/// The step sizes of an order study: at least 3, distinct, each in (T/10^max_steps_log10, T].
+std::vector<double> parse_step_list(const std::string& arg, const std::string& text, double t_end,
+                                    int max_steps_log10);
 
 }  // namespace vibook::cli

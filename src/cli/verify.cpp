@@ -142,17 +142,7 @@ Plan check(const VerifyOptions& o, const verify::TypedDiscreteLagrangian& dl) {
   p.t_end = parse_number("--t-end", o.t_end);
   if (!(p.t_end > 0) || !std::isfinite(p.t_end) || p.t_end > 1e6)
     throw ArgumentError("--t-end", "must lie in (0, 1e6]");
-  p.hs = parse_list("--h-list", o.h_list);
-  if (p.hs.size() < 3) throw ArgumentError("--h-list", "needs at least 3 step sizes");
-  for (double h : p.hs)
-    if (!(h > 0) || !(h <= p.t_end) || p.t_end / h > 1e8)
-      throw ArgumentError("--h-list", fmt::format("{} is not a step size in (T/1e8, T]", h));
-  {
-    std::vector<double> sorted_hs = p.hs;
-    std::sort(sorted_hs.begin(), sorted_hs.end());
-    if (std::adjacent_find(sorted_hs.begin(), sorted_hs.end()) != sorted_hs.end())
-      throw ArgumentError("--h-list", "gives a step size twice; an order needs distinct steps");
-  }
+  p.hs = parse_step_list("--h-list", o.h_list, p.t_end, 8);
   p.expected = parse_number("--expected-order", o.expected);
   if (!(p.expected > 0 && p.expected <= 12))
     throw ArgumentError("--expected-order", "must lie in (0, 12]");

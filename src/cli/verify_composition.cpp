@@ -127,12 +127,8 @@ Plan check(const CompositionOptions& o) {
                                                 "' (yoshida4, suzuki4, yoshida6, yoshida8, "
                                                 "mclachlan8, kahanli6, kahanli8, ruth3)");
     const MpfrDigits digits(kDigits);
-    std::stringstream ss(o.coefficients);
-    std::string tok;
-    while (std::getline(ss, tok, ','))
-      p.typed.push_back(comp::parse_stage<mpfr_real>("--coefficients", tok));
-    if (o.coefficients.back() == ',')
-      throw ArgumentError("--coefficients", "ends with a comma: a coefficient is missing");
+    for (const auto& item : split_list("--coefficients", o.coefficients))
+      p.typed.push_back(comp::parse_stage<mpfr_real>("--coefficients", item));
     if (p.typed.empty() || p.typed.size() > 64)
       throw ArgumentError("--coefficients", "needs 1 to 64 stages");
   }
@@ -165,17 +161,7 @@ Plan check(const CompositionOptions& o) {
     if (!(p.order_tol > 0 && p.order_tol <= 1))
       throw ArgumentError("--order-tol", "must lie in (0, 1]");
   }
-  if (o.h_list_given) {
-    p.hs = parse_list("--h-list", o.h_list);
-    if (p.hs.size() < 3) throw ArgumentError("--h-list", "needs at least 3 step sizes");
-    for (double h : p.hs)
-      if (!(h > 0) || !(h <= p.t_end) || p.t_end / h > 1e7)
-        throw ArgumentError("--h-list", fmt::format("{} is not a step size in (T/1e7, T]", h));
-    std::vector<double> s = p.hs;
-    std::sort(s.begin(), s.end());
-    if (std::adjacent_find(s.begin(), s.end()) != s.end())
-      throw ArgumentError("--h-list", "gives a step size twice; an order needs distinct steps");
-  }
+  if (o.h_list_given) p.hs = parse_step_list("--h-list", o.h_list, p.t_end, 7);
   if (!o.floor.empty()) {
     p.floor = parse_number("--floor", o.floor);
     if (!(*p.floor >= 0) || !std::isfinite(*p.floor))

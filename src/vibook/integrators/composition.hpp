@@ -243,8 +243,8 @@ OrderConditions order_conditions(const Stages<Real>& stages, bool symmetric_base
     using std::abs;
     const double v = static_cast<double>(abs(r[static_cast<std::size_t>(w)]));
     const auto k = static_cast<std::size_t>(A.weight(w) - 1);
-    if (v > oc.residual[k] || oc.worst_word[k].empty()) {
-      oc.residual[k] = std::max(v, oc.residual[k]);
+    if (v > oc.residual[k] || oc.worst_word[k].empty()) {  // residuals start at 0
+      oc.residual[k] = v;
       oc.worst_word[k] = A.name(w);
     }
   }
