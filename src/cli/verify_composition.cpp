@@ -5,6 +5,7 @@
 // long-time behaviour. Every part is printed, even after one fails; the verdict names the parts
 // that failed.
 #include "verify_composition.hpp"
+#include "verify_map.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -177,26 +178,14 @@ Plan check(const CompositionOptions& o) {
   return p;
 }
 
-// Without --h-list the order study walks the step counts n = ⌈T·2^(k/4)⌉, k = 0, 1, … (h = T/n,
-// so h ≤ 1 and every run ends exactly at T). The fit takes the points whose error lies in
-// the asymptotic window [1e-12, 1e-6]·max(1, |z(T)|), fixed beforehand whatever the method:
-// above it, compositions with large substeps (Yoshida's eighth order) are still far from their
-// asymptotic range; below it, round-off takes over. The walk stops below the window or when a
-// run would take more than 1e6 substeps; a low-order method that never
-// reaches the window is fitted on its 6 smallest step sizes. fit_order_plateau's search for the
-// round-off plateau applies in both cases.
-constexpr double kWindowLow = 1e-12;
-constexpr double kWindow = 1e-6;
-
 template <class P>
 int run_problem(const CompositionOptions& o, const Plan& p, const P& prob) {
   constexpr int N = P::N;
-  std::ostringstream out;
-  auto line = [&](const std::string& label, const std::string& text) {
-    out << fmt::format("{:<21}{}\n", label, text);
-  };
-  json js;
-  std::vector<std::string> failed, required;
+  MapReport rep;
+  auto line = [&](const std::string& label, const std::string& text) { rep.line(label, text); };
+  json& js = rep.js;
+  std::vector<std::string>& failed = rep.failed;
+  std::vector<std::string>& required = rep.required;
 
   // --- the stages and their order conditions, at 120 digits -------------------------------
   std::vector<double> c;
@@ -345,220 +334,37 @@ int run_problem(const CompositionOptions& o, const Plan& p, const P& prob) {
   }
   line("problem", fmt::format("{}: {}, q0 = {}, p0 = {}", p.problem->name, p.problem->hamiltonian,
                               vec_text(p.q0), vec_text(p.p0)));
-  int rc = kOk;
-  std::string first_error;  // the first numerical failure, for the one line on stderr
-  auto numerical = [&](const std::string& part, const std::exception& e) {
-    line(part, std::string("FAILED (numerical): ") + e.what());
-    failed.push_back(part);
-    rc = kNumerical;
-    if (first_error.empty()) first_error = part + ": " + e.what();
-  };
 
-  // --- the reference: Hamilton's equations in double-double by GBS extrapolation -----------
-  Eigen::VectorXd zref;
-  double ref_error = NAN;
-  try {
+  MapStudy study;
+  study.step = step;
+  study.z0 = z0;
+  study.field = [&](const std::vector<dd_real>& y) {
     using T = dd_real;
-    const verify::Field<T> f = [&](const std::vector<T>& y) {
-      Vec<T, N> q;
-      for (int i = 0; i < N; ++i) q(i) = y[static_cast<std::size_t>(i)];
-      const Vec<T, N> g = prob.template gradient<T>(q);
-      std::vector<T> r(2 * N);
-      for (int i = 0; i < N; ++i) {
-        r[static_cast<std::size_t>(i)] = y[static_cast<std::size_t>(N + i)];
-        r[static_cast<std::size_t>(N + i)] = -g(i);
-      }
-      return r;
-    };
-    std::vector<T> y0(2 * N);
-    for (int i = 0; i < 2 * N; ++i) y0[static_cast<std::size_t>(i)] = T(z0(i));
-    const auto r = verify::reference_solution<T>(f, y0, p.t_end);
-    zref.resize(2 * N);
-    for (int i = 0; i < 2 * N; ++i) zref(i) = to_double(r.y[static_cast<std::size_t>(i)]);
-    ref_error = r.error;
-    line("reference", fmt::format("Hamilton's equations by GBS extrapolation (order 16) in "
-                                  "double-double, {} macro-steps: estimated error {:.1e}",
-                                  r.macro_steps, ref_error));
-    js["reference"] = {{"T", p.t_end},
-                       {"state", std::vector<double>(zref.data(), zref.data() + zref.size())},
-                       {"estimated_error", ref_error},
-                       {"macro_steps", r.macro_steps}};
-  } catch (const NumericalError& e) {
-    numerical("reference", e);
-  }
-
-  // --- measured order -----------------------------------------------------------------------
-  required.push_back("order");
-  if (zref.size() == z0.size()) {
-    try {
-      const double scale = std::max(1.0, zref.lpNorm<Eigen::Infinity>());
-      const double floor =
-          p.floor ? *p.floor
-                  : std::max(10 * ref_error, 16 * std::numeric_limits<double>::epsilon() * scale);
-      std::vector<double> hs, err, windowed;
-      bool fallback = false;
-      if (!p.hs.empty()) {
-        hs = p.hs;
-        for (double h : hs)
-          err.push_back((verify::integrate(step, z0, h, p.t_end) - zref).lpNorm<Eigen::Infinity>());
-        windowed = err;
-      } else {
-        for (int k = 0;; ++k) {
-          const double n = std::ceil(p.t_end * std::exp2(0.25 * k));
-          if (!hs.empty() && std::abs(p.t_end / n - hs.back()) == 0) continue;
-          const double h = p.t_end / n;
-          if (double(c.size()) * n > 1e6) break;
-          double e = std::numeric_limits<double>::quiet_NaN();
-          try {
-            e = (verify::integrate(step, z0, h, p.t_end) - zref).lpNorm<Eigen::Infinity>();
-          } catch (const NumericalError&) {
-            // a step too large for the base method's solve: no point here
-          }
-          hs.push_back(h);
-          err.push_back(e);
-          const bool in = e <= kWindow * scale && e >= kWindowLow * scale;
-          windowed.push_back(in ? e : std::numeric_limits<double>::quiet_NaN());
-          if (e < kWindowLow * scale) break;
-        }
-        if (std::count_if(windowed.begin(), windowed.end(),
-                          [](double x) { return std::isfinite(x); }) < 3) {
-          fallback = true;
-          windowed = err;
-          for (std::size_t i = 0; i + 6 < windowed.size(); ++i)
-            windowed[i] = std::numeric_limits<double>::quiet_NaN();
-        }
-      }
-      const verify::PlateauFit fit = verify::fit_order_plateau(hs, windowed, floor);
-      const bool ok = std::isfinite(fit.slope) && std::abs(fit.slope - expected) < p.order_tol;
-      if (!ok) failed.push_back("order");
-      // The points of the fit, in brief (all of them in the JSON).
-      double hmin = INFINITY, hmax = 0, emin = INFINITY, emax = 0;
-      for (std::size_t i = 0; i < hs.size(); ++i)
-        if (fit.used[i]) {
-          hmin = std::min(hmin, hs[i]);
-          hmax = std::max(hmax, hs[i]);
-          emin = std::min(emin, err[i]);
-          emax = std::max(emax, err[i]);
-        }
-      const std::string points =
-          fit.points > 0
-              ? fmt::format(
-                    "h from {:.3g} to {:.3g}, errors from {:.2e} to {:.2e}; {} of {} runs "
-                    "fitted ({})",
-                    hmax, hmin, emax, emin, fit.points, hs.size(),
-                    !p.hs.empty() ? "--h-list, above the floor and the plateau"
-                    : fallback    ? "the window [1e-12, 1e-6]·scale was not reached: the 6 "
-                                    "smallest step sizes"
-                                  : "errors in the window [1e-12, 1e-6]·scale")
-              : fmt::format("{} runs, none usable", hs.size());
-      line("order",
-           std::isfinite(fit.slope)
-               ? fmt::format("{:.3f} over {} step sizes at T = {:g} (floor {:.1e}); expected {:g} "
-                             "(|p - {:g}| < {:g}): {}",
-                             fit.slope, fit.points, p.t_end, fit.floor, expected, expected,
-                             p.order_tol, ok ? "yes" : "NO")
-               : fmt::format("not measured: {} of {} errors lie in the window and above the floor "
-                             "{:.1e} (--h-list to choose the step sizes): NO",
-                             fit.points, hs.size(), fit.floor));
-      line("  points", points);
-      std::vector<bool> used = fit.used;
-      js["order"] = {
-          {"h", hs},
-          {"error", err},
-          {"used_in_fit", used},
-          {"fitted", std::isfinite(fit.slope) ? json(fit.slope) : json(nullptr)},
-          {"floor", fit.floor},
-          {"window",
-           p.hs.empty() && !fallback ? json({kWindowLow * scale, kWindow * scale}) : json(nullptr)},
-          {"fitted_on", !p.hs.empty() ? "--h-list"
-                        : fallback    ? "the 6 smallest step sizes"
-                                      : "the window"},
-          {"expected", expected},
-          {"tolerance", p.order_tol},
-          {"passed", ok}};
-    } catch (const NumericalError& e) {
-      numerical("order", e);
+    Vec<T, N> q;
+    for (int i = 0; i < N; ++i) q(i) = y[static_cast<std::size_t>(i)];
+    const Vec<T, N> g = prob.template gradient<T>(q);
+    std::vector<T> r(2 * N);
+    for (int i = 0; i < N; ++i) {
+      r[static_cast<std::size_t>(i)] = y[static_cast<std::size_t>(N + i)];
+      r[static_cast<std::size_t>(N + i)] = -g(i);
     }
-  } else {
-    line("order", "not measured: no reference solution");
-    failed.push_back("order");
-  }
-
-  // --- symplecticity and reversibility -------------------------------------------------------
-  std::vector<Eigen::VectorXd> states{z0};
-  if (zref.size() == z0.size()) states.push_back(zref);
-  required.push_back("symplectic");
-  try {
-    const auto sym = verify::symplecticity_defect(step, states, p.h, 1e-8);
-    line("symplectic", fmt::format("defect |J^T W J - W| = {:.2e} (<= {:.0e}): {}", sym.defect,
-                                   sym.tolerance, sym.passed ? "yes" : "NO"));
-    if (!sym.passed) failed.push_back("symplectic");
-    js["symplecticity"] = {
-        {"defect", sym.defect}, {"tolerance", sym.tolerance}, {"passed", sym.passed}};
-  } catch (const NumericalError& e) {
-    numerical("symplectic", e);
-  }
-  if (symmetric) required.push_back("time-reversible");
-  try {
-    const auto rev = verify::reversibility_defect(step, states, p.h, 1e-12);
-    line("time-reversible",
-         fmt::format("defect = {:.2e} (<= {:.0e}): {}{}", rev.defect, rev.tolerance,
-                     rev.passed ? "yes" : "NO",
-                     symmetric ? "" : " (reported only: the composition is not symmetric)"));
-    if (symmetric && !rev.passed) failed.push_back("time-reversible");
-    js["reversibility"] = {{"defect", rev.defect},
-                           {"tolerance", rev.tolerance},
-                           {"required", symmetric},
-                           {"passed", rev.passed}};
-  } catch (const NumericalError& e) {
-    numerical("time-reversible", e);
-  }
-
-  // --- energy -------------------------------------------------------------------------------
-  required.push_back("energy");
-  try {
-    const verify::Observable H = [&](const Eigen::VectorXd& z) {
-      return energy(prob, Vec<double, N>(z.head<N>()), Vec<double, N>(z.tail<N>()));
-    };
-    const double H0 = H(z0);
-    const double scale = std::max({std::abs(H0), 0.5 * z0.tail(N).squaredNorm(), 1e-300});
-    const auto en = verify::energy_behaviour(step, H, z0, p.h, p.steps);
-    const long long k1 = std::min<long long>(p.steps, 4096);
-    const auto e1 = verify::energy_behaviour(step, H, z0, p.h, k1);
-    const auto e2 = verify::energy_behaviour(step, H, z0, p.h / 2, 2 * k1);
-    const double h_exp = e1.max_error > 0 && e2.max_error > 0
-                             ? std::log2(e1.max_error / e2.max_error)
-                             : std::numeric_limits<double>::quiet_NaN();
-    // The scaling with h is read only where the run at h/2 stays well above round-off (a
-    // high-order method reaches it at h/2, and its ratio then says nothing about h^p).
-    const double roundoff_h2 =
-        64 * std::sqrt(double(2 * k1)) * std::numeric_limits<double>::epsilon() / 2 * scale;
-    const bool scaling = std::isfinite(h_exp) && e2.max_error > 100 * roundoff_h2;
-    const auto ev =
-        verify::judge_energy(en, scale, expected, scaling ? en.max_error / std::exp2(h_exp) : -1);
-    line("energy",
-         fmt::format("{} over {} steps of h = {:g}: {}", ev.verdict, en.steps, p.h, ev.why));
-    if (!ev.passed) failed.push_back("energy");
-    js["energy"] = {{"steps", en.steps},         {"h", p.h},
-                    {"max_error", en.max_error}, {"relative_error", ev.relative},
-                    {"exponent", en.exponent},   {"verdict", ev.verdict},
-                    {"passed", ev.passed}};
-  } catch (const NumericalError& e) {
-    numerical("energy", e);
-  }
-
-  js["verdict"] = {{"passed", failed.empty()}, {"failed", failed}, {"required", required}};
-  line("verdict", fmt::format("{} ({})", failed.empty() ? "PASS" : "FAIL",
-                              fmt::join(failed.empty() ? required : failed, ", ")));
-  std::cout << out.str();
-  std::cout.flush();
-  if (rc == kOk && !failed.empty()) rc = kVerdict;
-  if (rc == kVerdict)
-    eprint(fmt::format("vibook: verify: FAIL ({}); the report above says why\n",
-                       fmt::join(failed, ", ")));
-  if (rc == kNumerical) eprint("vibook: error: verify: " + first_error + "\n");
-  if (o.json_given) write_output_file(o.json_out, js.dump(2) + "\n", "--json-out");
-  return rc;
+    return r;
+  };
+  study.H = [&](const Eigen::VectorXd& z) {
+    return energy(prob, Vec<double, N>(z.head<N>()), Vec<double, N>(z.tail<N>()));
+  };
+  study.t_end = p.t_end;
+  study.h = p.h;
+  study.order_tol = p.order_tol;
+  study.expected = expected;
+  study.steps = p.steps;
+  study.hs = p.hs;
+  study.floor = p.floor;
+  study.substeps = double(c.size());
+  study.require_reversible = symmetric;
+  study.reversible_note = " (reported only: the composition is not symmetric)";
+  measure_map(study, rep);
+  return rep.finish(o.json_given, o.json_out);
 }
 
 }  // namespace
