@@ -124,6 +124,24 @@ if(NOT rc EQUAL 0)
   message(FATAL_ERROR "composition_audit.py failed (exit ${rc})")
 endif()
 
+# Black boxes (the chapter's section "Any stepper as a black box"): Boost.Odeint's fourth-order
+# McLachlan stepper through the C ABI, which must pass; odeint's velocity Verlet called without
+# reset, which must fail; a Python composition with its pairs swapped, which must fail.
+vibook_verify_case(verify-stepper-odeint.txt 0 --stepper-lib ${STEPPER_LIB}
+                   --stepper-arg mclachlan4/kepler --problem kepler --expected-order 4)
+vibook_verify_case(verify-stepper-cached.txt 5 --stepper-lib ${STEPPER_LIB}
+                   --stepper-arg velocity_verlet_cached/kepler --expected-order 2 --symmetric)
+vibook_verify_case(verify-stepper-python.txt 5 --stepper-cmd
+                   "python3 ${SOURCE_DIR}/examples/black_box/stepper.py ruth3_swapped pendulum"
+                   --problem pendulum --expected-order 3 --steps 4096)
+foreach(f verify-stepper-odeint.txt verify-stepper-cached.txt verify-stepper-python.txt)
+  # the build tree's and the source tree's paths are not the reader's
+  file(READ ${GEN}/${f} text)
+  string(REPLACE "${STEPPER_LIB}" "vibook_odeint_steppers.so" text "${text}")
+  string(REPLACE "${SOURCE_DIR}/" "" text "${text}")
+  file(WRITE ${GEN}/${f} "${text}")
+endforeach()
+
 # 3. Benchmarks: the table of the last `./build.sh bench` run, or of a run made now when
 #    VIBOOK_BOOK_BENCH is set (./build.sh book sets it; the test build does not).
 set(BENCH_JSON ${BINARY_DIR}/bench/bench.json)

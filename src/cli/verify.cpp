@@ -29,6 +29,7 @@
 #include "args.hpp"
 #include "cli.hpp"
 #include "verify_composition.hpp"
+#include "verify_stepper.hpp"
 #include "vibook/core/output_file.hpp"
 #include "vibook/core/precision.hpp"
 #include "vibook/core/progress.hpp"
@@ -55,7 +56,8 @@ struct VerifyOptions {
   std::string ld, potential, lagrangian, hamiltonian, dim, q0, p0,
       t_end = "5", h_list = "0.2,0.1,0.05,0.025,0.0125", expected = "2", order_tol = "0.1",
       h = "0.05", steps = "100000", modified_order = "2", format = "text", json_out, report, floor,
-      max_seconds, composition, coefficients, problem;
+      max_seconds, composition, coefficients, problem, stepper_lib, stepper_cmd, stepper_arg,
+      stepper_timeout;
   bool json_given = false, report_given = false, timings = false, symmetric = false,
        progress = false, reference = false;
 };
@@ -1255,6 +1257,46 @@ int run(const VerifyOptions& o, const CLI::App& c) {
   }
   // The typed expressions' derivatives are derived symbolically: the limit covers that too.
   const Watchdog watchdog("verify", max_seconds, o.progress);
+  const bool stepper = c.count("--stepper-lib") > 0 || c.count("--stepper-cmd") > 0;
+  if (stepper) {
+    // Another program's stepper as a black box (verify_stepper.cpp).
+    for (const char* opt : {"--ld", "--lagrangian", "--composition", "--coefficients",
+                            "--modified-order", "--format", "--report", "--reference"})
+      if (c.count(opt) > 0)
+        throw ArgumentError(opt,
+                            "does not apply to a black-box stepper (see vibook verify --help)");
+    StepperOptions so;
+    so.lib = o.stepper_lib;
+    so.cmd = o.stepper_cmd;
+    so.arg = o.stepper_arg;
+    so.timeout = o.stepper_timeout;
+    so.problem = o.problem;
+    so.hamiltonian = o.hamiltonian;
+    so.potential = o.potential;
+    so.dim = o.dim;
+    so.q0 = o.q0;
+    so.p0 = o.p0;
+    so.t_end = o.t_end;
+    so.h_list = o.h_list;
+    so.expected = o.expected;
+    so.order_tol = o.order_tol;
+    so.h = o.h;
+    so.steps = o.steps;
+    so.floor = o.floor;
+    so.json_out = o.json_out;
+    so.lib_given = c.count("--stepper-lib") > 0;
+    so.cmd_given = c.count("--stepper-cmd") > 0;
+    so.json_given = o.json_given;
+    so.t_end_given = c.count("--t-end") > 0;
+    so.h_list_given = c.count("--h-list") > 0;
+    so.expected_given = c.count("--expected-order") > 0;
+    so.order_tol_given = c.count("--order-tol") > 0;
+    so.symmetric = o.symmetric;
+    return run_stepper(so);
+  }
+  for (const char* opt : {"--stepper-arg", "--stepper-timeout"})
+    if (c.count(opt) > 0)
+      throw ArgumentError(opt, "applies only with --stepper-lib or --stepper-cmd");
   if (c.count("--composition") > 0) {
     // A composition method (verify_composition.cpp): the options of a typed L_d do not apply.
     for (const char* opt :
@@ -1283,8 +1325,10 @@ int run(const VerifyOptions& o, const CLI::App& c) {
     co.order_tol_given = c.count("--order-tol") > 0;
     return run_composition(co);
   }
-  for (const char* opt : {"--coefficients", "--problem"})
-    if (c.count(opt) > 0) throw ArgumentError(opt, "applies only with --composition");
+  if (c.count("--coefficients") > 0)
+    throw ArgumentError("--coefficients", "applies only with --composition");
+  if (c.count("--problem") > 0)
+    throw ArgumentError("--problem", "applies only with --composition or a black-box stepper");
   if (o.ld.empty() && c.count("--ld") == 0)
     throw ArgumentError("--ld", "is required (or --composition BASE --coefficients LIST|NAME)");
   progress::set_stage("reading the expressions and deriving L_d's derivatives");
@@ -1338,8 +1382,21 @@ std::function<int()> add_verify_command(CLI::App& app) {
                 "application, e.g. '7/24*,3/8,3/8*,-25/24,1*' (decimals or ratios; '*' marks the "
                 "adjoint)");
   c->add_option("--problem", o->problem,
-                "with --composition: the nonlinear test problem, kepler (default, eccentricity "
-                "0.5), pendulum or henon-heiles");
+                "with --composition or a stepper: the nonlinear test problem, kepler (default, "
+                "eccentricity 0.5), pendulum or henon-heiles");
+  c->add_option("--stepper-lib", o->stepper_lib,
+                "verify another library's one-step method as a black box: a shared library "
+                "with the C ABI of vibook/verify/stepper_abi.h (needs --expected-order; the "
+                "system from --problem or --hamiltonian)");
+  c->add_option("--stepper-cmd", o->stepper_cmd,
+                "verify a program's one-step method as a black box through the line protocol: "
+                "vibook writes 'H N q.. p..' (N steps of H), the program answers 'q.. p..' or "
+                "'error REASON' (needs --expected-order; the system from --problem or "
+                "--hamiltonian)");
+  c->add_option("--stepper-arg", o->stepper_arg,
+                "with --stepper-lib: the text passed to vibook_stepper_create (e.g. which method)");
+  c->add_option("--stepper-timeout", o->stepper_timeout,
+                "with --stepper-cmd: seconds to wait for one answer (default 60)");
   c->add_option("--lagrangian", o->lagrangian,
                 "the intended Lagrangian L(q, v) in q, v (q[1], v[2], …), V(...), grad(V)(...); "
                 "default v^2/2 - V(q)");

@@ -8,6 +8,7 @@
 // failed.
 #pragma once
 
+#include <cmath>
 #include <functional>
 #include <optional>
 #include <sstream>
@@ -17,6 +18,7 @@
 #include <Eigen/Dense>
 #include <nlohmann/json.hpp>
 
+#include "args.hpp"
 #include "cli.hpp"
 #include "vibook/core/precision.hpp"
 #include "vibook/verify/reference.hpp"
@@ -61,6 +63,32 @@ struct MapStudy {
   bool require_reversible = false;
   std::string reversible_note;  ///< appended to the line when reversibility is not required
 };
+
+/// The measurement options common to the routes, checked before any work (ArgumentError naming
+/// the option): --order-tol, --h-list (inside (0, T], at most 1e7 steps), --floor, --h,
+/// --steps, into `s` (whose values are the defaults). `Options` has the string fields
+/// order_tol, h_list, floor, h, steps and the flags order_tol_given, h_list_given; s.t_end
+/// is already set.
+template <class Options>
+void check_study_options(const Options& o, MapStudy& s) {
+  if (o.order_tol_given) {
+    s.order_tol = parse_number("--order-tol", o.order_tol);
+    if (!(s.order_tol > 0 && s.order_tol <= 1))
+      throw ArgumentError("--order-tol", "must lie in (0, 1]");
+  }
+  if (o.h_list_given) s.hs = parse_step_list("--h-list", o.h_list, s.t_end, 7);
+  if (!o.floor.empty()) {
+    s.floor = parse_number("--floor", o.floor);
+    if (!(*s.floor >= 0) || !std::isfinite(*s.floor))
+      throw ArgumentError("--floor", "must be a finite number >= 0");
+  }
+  if (!o.h.empty()) s.h = parse_number("--h", o.h);
+  if (!o.steps.empty()) s.steps = parse_integer("--steps", o.steps);
+  if (s.steps < 1024 || s.steps > 100000000)
+    throw ArgumentError("--steps", "must lie in [1024, 1e8]");
+  if (!(s.h > 0) || !std::isfinite(s.h) || s.h * double(s.steps) > 1e9)
+    throw ArgumentError("--h", "must be a positive finite step (h·steps at most 1e9)");
+}
 
 /// The reference, order, symplecticity, reversibility and energy parts, appended to `r`.
 void measure_map(const MapStudy& s, MapReport& r);

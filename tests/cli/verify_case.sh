@@ -1,6 +1,7 @@
-# Shared by verify_verdicts.sh and verify_composition.sh (sourced, with V set to the vibook
-# command): a temporary directory, the pass/fail counters, and case_, one run of `vibook verify`
-# checked for its exit status, its stderr line, lines of its report and its JSON verdict.
+# Shared by verify_verdicts.sh, verify_composition.sh and verify_stepper.sh (sourced, with V set
+# to the vibook command): a temporary directory, the pass/fail counters; case_, one run of
+# `vibook verify` checked for its exit status, its stderr line, lines of its report and its JSON
+# verdict; arg, one bad argument.
 # VERIFY_PHASES=1 also checks that every phase that ran is in the JSON (the --ld route has
 # phases; the --composition route has none).
 tmp=$(mktemp -d)
@@ -43,3 +44,15 @@ PY
   ok
 }
 
+# arg NAME OPTION ARGS...: a bad argument: exit 2, one line naming the argument, nothing on stdout.
+arg() {
+  local name=$1 opt=$2; shift 2
+  "$V" verify "$@" >"$tmp/out" 2>"$tmp/err"
+  local got=$?
+  if [ "$got" != 2 ] || [ -s "$tmp/out" ] || ! grep -q -- "$opt" "$tmp/err" ||
+     [ "$(wc -l <"$tmp/err")" != 1 ]; then
+    bad "$name: exit $got, stdout $(wc -c <"$tmp/out") bytes, stderr: $(cat "$tmp/err")"
+  else
+    ok
+  fi
+}

@@ -511,7 +511,7 @@ void TypedDiscreteLagrangian::finish(const TypedTexts& t) {
   };
   if (have_potential)
     potential_root_ = parse(t.potential, "--potential", Parser::Kind::potential).first;
-  {
+  if (!(t.system_only && t.ld.empty())) {
     auto [root, p] = parse(t.ld, "--ld", Parser::Kind::ld);
     ld_root_ = root;
     if (!p.uses_slot(kQ0) || !p.uses_slot(kQ1))

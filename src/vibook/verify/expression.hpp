@@ -74,6 +74,9 @@ inline constexpr int kMaxDim = 6;
 struct TypedTexts {
   std::string ld, potential, lagrangian, hamiltonian;
   int dim = 0;  ///< 0: from the texts
+  /// Only the intended system, no discrete Lagrangian (`ld` empty): a black-box stepper's
+  /// Hamiltonian. evaluate() and bind() are then not available.
+  bool system_only = false;
 };
 
 class TypedDiscreteLagrangian {
@@ -140,10 +143,30 @@ class TypedDiscreteLagrangian {
     return scalar<S, N, 0>(hamiltonian_root_, in);
   }
 
+  /// Hamilton's equations of the typed H at (q, p): (∂H/∂p, −∂H/∂q), the gradient by forward
+  /// AutoDiff on scalars of type T (double-double for the reference solution).
+  template <int N, class T>
+  Vec<T, 2 * N> hamilton_field(const Vec<T, N>& q, const Vec<T, N>& p) const {
+    using D = ad::Dual<2 * N, T>;
+    Vec<D, N> Q, P;
+    for (int i = 0; i < N; ++i) {
+      Q(i) = D(q(i), 2 * N, i);
+      P(i) = D(p(i), 2 * N, N + i);
+    }
+    const Vec<T, 2 * N> g = hamiltonian<N, D>(Q, P).derivatives();
+    Vec<T, 2 * N> r;
+    for (int i = 0; i < N; ++i) {
+      r(i) = g(N + i);
+      r(N + i) = -g(i);
+    }
+    return r;
+  }
+
   /// A callable `L_d(q0, q1, h)` for DelIntegrator<N> and modified::symbolic_dl<N>. The object
   /// must outlive it. Throws ArgumentError("--dim") if N != dim().
   template <int N>
   auto bind() const {
+    if (ld_root_ < 0) throw std::logic_error("TypedDiscreteLagrangian: no --ld was given");
     if (N != dim_)
       throw ArgumentError("--dim", "the expressions are " + std::to_string(dim_) +
                                        "-dimensional, not " + std::to_string(N));

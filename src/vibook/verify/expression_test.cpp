@@ -270,3 +270,26 @@ TEST_CASE("engine: a non-separable Lagrangian with a conformal factor, however i
   const std::string wrong = "h*((1+((q0[2]+q1[2])/2)^2)*(" + sx + ")^2/2 + (" + sy + ")^2/2)";
   CHECK_FALSE(same(equation(wrong), midpoint));
 }
+
+TEST_CASE("typed Hamiltonian alone (a black-box stepper's system): Hamilton's equations") {
+  // Kepler as `vibook verify --stepper-lib … --problem kepler` spells it, with --dim 2.
+  verify::TypedTexts t{"", "", "", "p^2/2 - 1/(q^2)^(1/2)", 2};
+  t.system_only = true;
+  const TypedDiscreteLagrangian sys(t);
+  CHECK(sys.dim() == 2);
+  CHECK_THROWS_AS(sys.bind<2>(), std::logic_error);
+  const Vec<double, 2> q(0.6, -0.3), p(0.2, 1.1);
+  const Vec<double, 4> f = sys.hamilton_field<2, double>(q, p);
+  const double r3 = std::pow(q.squaredNorm(), 1.5);
+  // (dH/dp, -dH/dq) = (p, -q/|q|^3), to a few units of round-off
+  const Vec<double, 4> want(p(0), p(1), -q(0) / r3, -q(1) / r3);
+  CHECK((f - want).lpNorm<Eigen::Infinity>() <= 4e-16 * want.lpNorm<Eigen::Infinity>());
+  // a deliberately different system (the attractive sign lost) is told apart
+  verify::TypedTexts u{"", "", "", "p^2/2 + 1/(q^2)^(1/2)", 2};
+  u.system_only = true;
+  const Vec<double, 4> g = TypedDiscreteLagrangian(u).hamilton_field<2, double>(q, p);
+  CHECK((g - want).lpNorm<Eigen::Infinity>() > 1);
+  // without system_only, the --ld is still required
+  CHECK_THROWS_AS(TypedDiscreteLagrangian(verify::TypedTexts{"", "", "", "p^2/2", 1}),
+                  ArgumentError);
+}

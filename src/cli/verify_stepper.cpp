@@ -1,0 +1,528 @@
+// `vibook verify --stepper-lib LIB.so | --stepper-cmd 'CMD'` (issue #25, "any stepper as a black
+// box"): a one-step method vibook did not write, reached through the C ABI of
+// vibook/verify/stepper_abi.h (loaded with dlopen) or through a line protocol over a child
+// process's stdin and stdout (so a Python or Julia script can be verified). The system it is
+// meant for is named by the user (`--problem` or `--hamiltonian`), and every measurement is made
+// against Hamilton's equations of that system integrated in double-double (verify_map.cpp):
+// order (two-sided, against the documented order the user states with --expected-order),
+// symplecticity and reversibility of the map, and the energy.
+//
+// The line protocol, version 1 (book: chapter "Verifying your own discrete Lagrangian"):
+//   vibook writes one request per line:   H N q_1 … q_d p_1 … p_d
+//     (N steps of size H from the state; numbers in decimal, 17 significant digits);
+//   the stepper answers one line:         q_1 … q_d p_1 … p_d
+//     (the state after the N steps), or a line beginning with `error` and a reason.
+//   When vibook is done it closes the stepper's stdin; the stepper should then exit.
+#include "verify_stepper.hpp"
+
+#include <dlfcn.h>
+#include <fcntl.h>
+#include <poll.h>
+#include <signal.h>
+#include <sys/stat.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <cerrno>
+#include <chrono>
+#include <cmath>
+#include <cstdlib>
+#include <cstring>
+#include <memory>
+#include <mutex>
+#include <string>
+#include <vector>
+
+#include <fmt/format.h>
+#include <fmt/ranges.h>
+
+#include "args.hpp"
+#include "verify_map.hpp"
+#include "vibook/core/output_file.hpp"
+#include "vibook/modified/engine.hpp"
+#include "vibook/verify/expression.hpp"
+#include "vibook/verify/stepper_abi.h"
+
+namespace vibook::cli {
+
+namespace {
+
+using nlohmann::json;
+
+std::string vec_text(const double* v, int n) {
+  std::vector<std::string> s;
+  for (int i = 0; i < n; ++i) s.push_back(fmt::format("{:.6g}", v[i]));
+  return "(" + fmt::format("{}", fmt::join(s, ", ")) + ")";
+}
+
+// --- the two kinds of black box ---------------------------------------------------------------
+
+class BlackBox {
+ public:
+  virtual ~BlackBox() = default;
+  /// n steps of size h from (q, p), in place; a failure is a NumericalError saying why.
+  virtual void run(double h, long long n, double* q, double* p) = 0;
+};
+
+// A library behind the C ABI (stepper_abi.h), loaded into this process.
+class Library final : public BlackBox {
+ public:
+  Library(const std::string& path, const std::string& arg, int dof) {
+    // A bare name would be searched on the library path; the user means the file.
+    const std::string file = path.find('/') == std::string::npos ? "./" + path : path;
+    struct stat st {};
+    if (::stat(file.c_str(), &st) != 0 || !S_ISREG(st.st_mode))
+      throw ArgumentError("--stepper-lib", "'" + path + "' is not a file");
+    handle_ = ::dlopen(file.c_str(), RTLD_NOW | RTLD_LOCAL);
+    if (!handle_) {
+      const char* e = ::dlerror();
+      throw ArgumentError("--stepper-lib",
+                          "cannot be loaded: " + std::string(e ? e : "dlopen failed"));
+    }
+    auto need = [&](const char* name) {
+      void* s = ::dlsym(handle_, name);
+      if (!s)
+        throw ArgumentError("--stepper-lib",
+                            fmt::format("'{}' does not export {} (the vibook "
+                                        "stepper ABI: vibook/verify/stepper_abi.h)",
+                                        path, name));
+      return s;
+    };
+    auto version = reinterpret_cast<int (*)()>(need("vibook_stepper_abi_version"));
+    auto create = reinterpret_cast<void* (*)(int, const char*)>(need("vibook_stepper_create"));
+    step_ = reinterpret_cast<int (*)(void*, double, double*, double*)>(need("vibook_stepper_step"));
+    destroy_ = reinterpret_cast<void (*)(void*)>(need("vibook_stepper_destroy"));
+    message_ = reinterpret_cast<const char* (*)(void*)>(::dlsym(handle_, "vibook_stepper_message"));
+    if (const int v = version(); v != VIBOOK_STEPPER_ABI_VERSION)
+      throw ArgumentError("--stepper-lib", fmt::format("'{}' implements stepper ABI version {}; "
+                                                       "this vibook speaks version {}",
+                                                       path, v, VIBOOK_STEPPER_ABI_VERSION));
+    context_ = create(dof, arg.c_str());
+    if (!context_)
+      throw ArgumentError("--stepper-lib",
+                          fmt::format("vibook_stepper_create({}, \"{}\") returned NULL{}", dof, arg,
+                                      reason(nullptr)));
+  }
+  ~Library() override {
+    if (context_) destroy_(context_);
+    if (handle_) ::dlclose(handle_);
+  }
+  Library(const Library&) = delete;
+  Library& operator=(const Library&) = delete;
+
+  void run(double h, long long n, double* q, double* p) override {
+    for (long long k = 0; k < n; ++k)
+      if (const int status = step_(context_, h, q, p); status != 0)
+        throw NumericalError(
+            fmt::format("vibook_stepper_step returned {}{}", status, reason(context_)));
+  }
+
+ private:
+  std::string reason(void* context) const {
+    const char* m = message_ ? message_(context) : nullptr;
+    return m && *m ? std::string(": ") + m : std::string();
+  }
+  void* handle_ = nullptr;
+  void* context_ = nullptr;
+  int (*step_)(void*, double, double*, double*) = nullptr;
+  void (*destroy_)(void*) = nullptr;
+  const char* (*message_)(void*) = nullptr;
+};
+
+// A child process speaking the line protocol (file comment) on its stdin and stdout; its stderr
+// is ours, so a traceback reaches the user.
+class Command final : public BlackBox {
+ public:
+  Command(const std::string& cmd, int dof, double timeout) : dof_(dof), timeout_(timeout) {
+    int in[2], out[2];
+    if (::pipe2(in, O_CLOEXEC) != 0) throw NumericalError("pipe: " + std::string(strerror(errno)));
+    if (::pipe2(out, O_CLOEXEC) != 0) {
+      ::close(in[0]);
+      ::close(in[1]);
+      throw NumericalError("pipe: " + std::string(strerror(errno)));
+    }
+    pid_ = ::fork();
+    if (pid_ < 0) throw NumericalError("fork: " + std::string(strerror(errno)));
+    if (pid_ == 0) {
+      ::dup2(in[0], 0);
+      ::dup2(out[1], 1);
+      ::signal(SIGPIPE, SIG_DFL);  // vibook ignores it; the stepper gets the usual default
+      ::execl("/bin/sh", "sh", "-c", cmd.c_str(), static_cast<char*>(nullptr));
+      ::_exit(127);
+    }
+    ::close(in[0]);
+    ::close(out[1]);
+    to_ = in[1];
+    from_ = out[0];
+  }
+  ~Command() override {
+    if (to_ >= 0) ::close(to_);  // end of input: the stepper should exit
+    if (from_ >= 0) ::close(from_);
+    if (pid_ > 0) {
+      for (int i = 0; i < 200; ++i) {  // up to 2 s, then it is killed
+        if (::waitpid(pid_, nullptr, WNOHANG) == pid_) return;
+        ::usleep(10000);
+      }
+      ::kill(pid_, SIGKILL);
+      ::waitpid(pid_, nullptr, 0);
+    }
+  }
+  Command(const Command&) = delete;
+  Command& operator=(const Command&) = delete;
+
+  void run(double h, long long n, double* q, double* p) override {
+    std::string req = fmt::format("{:.17g} {}", h, n);
+    for (int i = 0; i < dof_; ++i) req += fmt::format(" {:.17g}", q[i]);
+    for (int i = 0; i < dof_; ++i) req += fmt::format(" {:.17g}", p[i]);
+    req += '\n';
+    write_all(req);
+    const std::string answer = read_line();
+    if (answer.rfind("error", 0) == 0) {
+      std::string why = answer.substr(5);
+      why.erase(0, why.find_first_not_of(" :\t"));
+      throw NumericalError("the stepper answered 'error'" + (why.empty() ? "" : ": " + why));
+    }
+    std::vector<double> v;
+    const char* s = answer.c_str();
+    while (true) {
+      while (*s == ' ' || *s == '\t' || *s == '\r') ++s;
+      if (!*s) break;
+      char* end = nullptr;
+      errno = 0;
+      const double x = std::strtod(s, &end);
+      if (end == s || (*end && *end != ' ' && *end != '\t' && *end != '\r'))
+        throw NumericalError(protocol("is not a list of numbers", answer));
+      v.push_back(x);
+      s = end;
+    }
+    if (v.size() != static_cast<std::size_t>(2 * dof_))
+      throw NumericalError(
+          protocol(fmt::format("has {} numbers, not 2 x {} (q then p)", v.size(), dof_), answer));
+    for (int i = 0; i < dof_; ++i) {
+      q[i] = v[static_cast<std::size_t>(i)];
+      p[i] = v[static_cast<std::size_t>(dof_ + i)];
+    }
+  }
+
+ private:
+  static std::string protocol(const std::string& what, const std::string& answer) {
+    const std::string shown = answer.size() > 120 ? answer.substr(0, 120) + "…" : answer;
+    return "the stepper's answer " + what + " (line protocol 1: 'q_1 … q_d p_1 … p_d'): '" + shown +
+           "'";
+  }
+  std::string exited() {
+    int status = 0;
+    for (int i = 0; i < 50; ++i) {
+      if (::waitpid(pid_, &status, WNOHANG) == pid_) {
+        pid_ = -1;
+        if (WIFEXITED(status))
+          return fmt::format("the stepper exited with status {}", WEXITSTATUS(status));
+        if (WIFSIGNALED(status))
+          return fmt::format("the stepper was killed by signal {}", WTERMSIG(status));
+      }
+      ::usleep(10000);
+    }
+    return "the stepper closed its output";
+  }
+  void write_all(const std::string& s) {
+    std::size_t done = 0;
+    while (done < s.size()) {
+      const ssize_t w = ::write(to_, s.data() + done, s.size() - done);
+      if (w < 0 && errno == EINTR) continue;
+      if (w < 0)
+        throw NumericalError(exited() + " (a request could not be written: " + strerror(errno) +
+                             ")");
+      done += static_cast<std::size_t>(w);
+    }
+  }
+  std::string read_line() {
+    const auto deadline =
+        std::chrono::steady_clock::now() + std::chrono::duration<double>(timeout_);
+    while (true) {
+      if (const auto nl = buf_.find('\n'); nl != std::string::npos) {
+        std::string line = buf_.substr(0, nl);
+        buf_.erase(0, nl + 1);
+        return line;
+      }
+      if (buf_.size() > (1u << 20)) throw NumericalError("the stepper's answer exceeds 1 MiB");
+      const double left =
+          std::chrono::duration<double>(deadline - std::chrono::steady_clock::now()).count();
+      if (left <= 0)
+        throw NumericalError(
+            fmt::format("the stepper did not answer within {:g} s "
+                        "(--stepper-timeout)",
+                        timeout_));
+      pollfd pfd{from_, POLLIN, 0};
+      const int r = ::poll(&pfd, 1, static_cast<int>(std::ceil(std::min(left, 1e6) * 1000)));
+      if (r < 0 && errno == EINTR) continue;
+      if (r <= 0) continue;
+      char chunk[4096];
+      const ssize_t got = ::read(from_, chunk, sizeof chunk);
+      if (got < 0 && errno == EINTR) continue;
+      if (got <= 0) throw NumericalError(exited() + " before answering");
+      buf_.append(chunk, static_cast<std::size_t>(got));
+    }
+  }
+  int dof_;
+  double timeout_;
+  pid_t pid_ = -1;
+  int to_ = -1, from_ = -1;
+  std::string buf_;
+};
+
+// --- the system the stepper is meant for ------------------------------------------------------
+
+struct NamedProblem {
+  std::string name, hamiltonian, about;
+  std::vector<double> q0, p0;
+};
+
+const std::vector<NamedProblem>& named_problems() {
+  static const std::vector<NamedProblem> p = {
+      {"kepler",
+       "p^2/2 - 1/(q^2)^(1/2)",
+       "eccentricity 0.5, period 2 pi",
+       {0.5, 0},
+       {0, std::sqrt(3.0)}},
+      {"pendulum", "p^2/2 - cos(q[1])", "", {1}, {0.5}},
+      {"henon-heiles",
+       "p^2/2 + (q[1]^2 + q[2]^2)/2 + q[1]^2*q[2] - q[2]^3/3",
+       "",
+       {0, 0.1},
+       {0.35, 0}}};
+  return p;
+}
+
+struct Plan {
+  std::unique_ptr<verify::TypedDiscreteLagrangian> system;
+  std::string hamiltonian, system_from;
+  int dim = 0;
+  std::vector<double> q0, p0;
+  double expected = 0, timeout = 60;
+  MapStudy study;  // the measurement settings (--t-end, --h-list, --h, --steps, …)
+};
+
+Plan check(const StepperOptions& o) {
+  Plan p;
+  if (o.lib_given == o.cmd_given)
+    throw ArgumentError(o.lib_given ? "--stepper-cmd" : "--stepper-lib",
+                        "give one stepper: --stepper-lib LIB.so or --stepper-cmd 'CMD'");
+  if (o.lib_given && o.lib.empty()) throw ArgumentError("--stepper-lib", "is empty");
+  if (o.cmd_given && o.cmd.find_first_not_of(" \t") == std::string::npos)
+    throw ArgumentError("--stepper-cmd", "is empty");
+  if (!o.problem.empty() && !o.hamiltonian.empty())
+    throw ArgumentError("--hamiltonian", "give the system once: --problem or --hamiltonian");
+  const NamedProblem* named = nullptr;
+  std::vector<double> dq0, dp0;
+  if (!o.hamiltonian.empty() || (!o.potential.empty() && o.problem.empty())) {
+    p.hamiltonian = o.hamiltonian.empty() ? "p^2/2 + V(q)" : o.hamiltonian;
+    p.system_from = o.hamiltonian.empty() ? "--potential" : "--hamiltonian";
+  } else {
+    const std::string name = o.problem.empty() ? "kepler" : o.problem;
+    for (const auto& q : named_problems())
+      if (q.name == name) named = &q;
+    if (!named)
+      throw ArgumentError("--problem",
+                          "unknown problem '" + name + "' (kepler, pendulum or henon-heiles)");
+    if (!o.potential.empty() || !o.dim.empty())
+      throw ArgumentError(o.dim.empty() ? "--potential" : "--dim",
+                          "does not apply to --problem (use --hamiltonian for another system)");
+    p.hamiltonian = named->hamiltonian;
+    p.system_from = "--problem " + named->name;
+    dq0 = named->q0;
+    dp0 = named->p0;
+  }
+  int dim = named ? static_cast<int>(named->q0.size()) : 0;
+  if (!o.dim.empty()) {
+    dim = static_cast<int>(parse_integer("--dim", o.dim));
+    if (dim < 1 || dim > verify::kMaxDim)
+      throw ArgumentError("--dim", fmt::format("must lie in 1..{}", verify::kMaxDim));
+  }
+  {
+    std::lock_guard<std::mutex> lock(modified::ginac_mutex());
+    verify::TypedTexts t{"", o.potential, "", p.hamiltonian, dim};
+    t.system_only = true;
+    p.system = std::make_unique<verify::TypedDiscreteLagrangian>(t);
+  }
+  p.dim = p.system->dim();
+  if (dq0.empty()) {
+    dq0.assign(static_cast<std::size_t>(p.dim), 0.1);
+    dp0.assign(static_cast<std::size_t>(p.dim), 0.1);
+  }
+  auto vector_or = [&](const std::string& arg, const std::string& text,
+                       const std::vector<double>& dflt) {
+    std::vector<double> v = text.empty() ? dflt : parse_list(arg, text);
+    if (v.size() != static_cast<std::size_t>(p.dim))
+      throw ArgumentError(arg, fmt::format("has {} components; the system has {} degrees of "
+                                           "freedom",
+                                           v.size(), p.dim));
+    for (double x : v)
+      if (!std::isfinite(x)) throw ArgumentError(arg, "must be finite");
+    return v;
+  };
+  p.q0 = vector_or("--q0", o.q0, dq0);
+  p.p0 = vector_or("--p0", o.p0, dp0);
+  if (o.t_end_given) {
+    p.study.t_end = parse_number("--t-end", o.t_end);
+    if (!(p.study.t_end > 0) || p.study.t_end > 1e4)
+      throw ArgumentError("--t-end", "must lie in (0, 1e4]");
+  }
+  if (!o.expected_given)
+    throw ArgumentError("--expected-order",
+                        "is required with a black-box stepper: the order it is documented to "
+                        "have (the verdict tests it)");
+  p.expected = parse_number("--expected-order", o.expected);
+  if (!(p.expected > 0 && p.expected <= 10))
+    throw ArgumentError("--expected-order", "must lie in (0, 10]");
+  check_study_options(o, p.study);
+  if (!o.timeout.empty()) {
+    p.timeout = parse_number("--stepper-timeout", o.timeout);
+    if (!(p.timeout > 0 && p.timeout <= 86400))
+      throw ArgumentError("--stepper-timeout", "must lie in (0, 86400] seconds");
+    if (o.lib_given)
+      throw ArgumentError("--stepper-timeout",
+                          "applies only to --stepper-cmd (a library runs "
+                          "in vibook's process; --max-seconds bounds it)");
+  }
+  if (o.cmd_given && !o.arg.empty())
+    throw ArgumentError("--stepper-arg",
+                        "applies only to --stepper-lib (put a command's "
+                        "arguments in the command)");
+  if (o.json_given) check_output_path(o.json_out, "--json-out", true);
+  return p;
+}
+
+template <int N>
+int run_n(const StepperOptions& o, const Plan& p) {
+  const verify::TypedDiscreteLagrangian& sys = *p.system;
+  MapReport rep;
+  Eigen::VectorXd z0(2 * N);
+  for (int i = 0; i < N; ++i) {
+    z0(i) = p.q0[static_cast<std::size_t>(i)];
+    z0(N + i) = p.p0[static_cast<std::size_t>(i)];
+  }
+
+  // The black box, and a first step from the initial state: a stepper that cannot take it is
+  // refused as an argument, before any measurement.
+  std::unique_ptr<BlackBox> box;
+  if (o.lib_given)
+    box = std::make_unique<Library>(o.lib, o.arg, N);
+  else
+    box = std::make_unique<Command>(o.cmd, N, p.timeout);
+  const std::string which = o.lib_given ? "--stepper-lib" : "--stepper-cmd";
+  auto finite = [](const Eigen::VectorXd& z) { return z.allFinite(); };
+  {
+    Eigen::VectorXd z = z0;
+    try {
+      box->run(p.study.h, 1, z.data(), z.data() + N);
+    } catch (const NumericalError& e) {
+      throw ArgumentError(which, fmt::format("the stepper did not take a first step of h = {:g} "
+                                             "from the initial state: {}",
+                                             p.study.h, e.what()));
+    }
+    if (!finite(z))
+      throw ArgumentError(which, fmt::format("the stepper's first step of h = {:g} from the "
+                                             "initial state returned a non-finite state",
+                                             p.study.h));
+  }
+  BlackBox* raw = box.get();
+  auto where = [](const Eigen::VectorXd& z) {
+    return fmt::format("q = {}, p = {}", vec_text(z.data(), N), vec_text(z.data() + N, N));
+  };
+  MapStudy s = p.study;
+  s.step = [raw, where, finite](Eigen::VectorXd& z, double h) {
+    const Eigen::VectorXd start = z;
+    try {
+      raw->run(h, 1, z.data(), z.data() + N);
+    } catch (const NumericalError& e) {
+      throw NumericalError(
+          fmt::format("a step of h = {:g} from {}: {}", h, where(start), e.what()));
+    }
+    if (!finite(z))
+      throw NumericalError(
+          fmt::format("a step of h = {:g} from {} returned a non-finite state", h, where(start)));
+  };
+  if (o.cmd_given)
+    s.propagate = [raw, where, finite](Eigen::VectorXd& z, double h, long long n) {
+      const Eigen::VectorXd start = z;
+      try {
+        raw->run(h, n, z.data(), z.data() + N);
+      } catch (const NumericalError& e) {
+        throw NumericalError(
+            fmt::format("{} steps of h = {:g} from {}: {}", n, h, where(start), e.what()));
+      }
+      if (!finite(z))
+        throw NumericalError(
+            fmt::format("{} steps of h = {:g} from {} returned a non-finite "
+                        "state",
+                        n, h, where(start)));
+    };
+  s.z0 = z0;
+  s.field = [&sys](const std::vector<dd_real>& y) {
+    Vec<dd_real, N> q, pp;
+    for (int i = 0; i < N; ++i) {
+      q(i) = y[static_cast<std::size_t>(i)];
+      pp(i) = y[static_cast<std::size_t>(N + i)];
+    }
+    const Vec<dd_real, 2 * N> f = sys.hamilton_field<N, dd_real>(q, pp);
+    return std::vector<dd_real>(f.data(), f.data() + 2 * N);
+  };
+  s.equations = "Hamilton's equations of H";
+  s.H = [&sys](const Eigen::VectorXd& z) {
+    return sys.hamiltonian<N, double>(Vec<double, N>(z.head<N>()), Vec<double, N>(z.tail<N>()));
+  };
+  s.expected = p.expected;
+  // A command answers a whole run at once, but at the speed of its language: the walk of step
+  // counts stops at 1e5 steps a run (a library: 1e6, as for the compositions).
+  if (o.cmd_given) s.max_substeps = 1e5;
+  s.require_reversible = o.symmetric;
+  s.reversible_note = " (reported only: --symmetric makes it part of the verdict)";
+
+  if (o.lib_given)
+    rep.line("stepper",
+             fmt::format("library {} (vibook stepper ABI {}){}", o.lib, VIBOOK_STEPPER_ABI_VERSION,
+                         o.arg.empty() ? "" : ", --stepper-arg '" + o.arg + "'"));
+  else
+    rep.line("stepper", fmt::format("command '{}' (line protocol 1)", o.cmd));
+  rep.line("system", fmt::format("H = {} ({}), {} degree{} of freedom", p.hamiltonian,
+                                 p.system_from, N, N == 1 ? "" : "s"));
+  rep.line("initial state",
+           fmt::format("q0 = {}, p0 = {}", vec_text(z0.data(), N), vec_text(z0.data() + N, N)));
+  rep.line("expected order", fmt::format("{:g} (--expected-order)", p.expected));
+  rep.js["stepper"] = {{"kind", o.lib_given ? "library" : "command"},
+                       {"library", o.lib_given ? json(o.lib) : json(nullptr)},
+                       {"command", o.cmd_given ? json(o.cmd) : json(nullptr)},
+                       {"arg", o.arg},
+                       {"abi_version", VIBOOK_STEPPER_ABI_VERSION},
+                       {"dof", N}};
+  rep.js["system"] = {{"hamiltonian", p.hamiltonian},
+                      {"from", p.system_from},
+                      {"potential", o.potential},
+                      {"q0", p.q0},
+                      {"p0", p.p0}};
+  measure_map(s, rep);
+  box.reset();  // the child process ends before the report is printed
+  return rep.finish(o.json_given, o.json_out);
+}
+
+}  // namespace
+
+int run_stepper(const StepperOptions& o) {
+  const Plan p = check(o);
+  switch (p.dim) {
+    case 1:
+      return run_n<1>(o, p);
+    case 2:
+      return run_n<2>(o, p);
+    case 3:
+      return run_n<3>(o, p);
+    case 4:
+      return run_n<4>(o, p);
+    case 5:
+      return run_n<5>(o, p);
+    default:
+      return run_n<6>(o, p);
+  }
+}
+
+}  // namespace vibook::cli

@@ -1,0 +1,21 @@
+// `vibook verify --stepper-lib LIB.so` and `--stepper-cmd 'CMD'`: another program's one-step
+// method judged as a black box (verify_stepper.cpp): its measured order against Hamilton's
+// equations of the system it is meant for, symplecticity, reversibility and energy.
+#pragma once
+
+#include <string>
+
+namespace vibook::cli {
+
+/// The options of a black-box verification, as typed; `given` flags say which the user set.
+struct StepperOptions {
+  std::string lib, cmd, arg, timeout, problem, hamiltonian, potential, dim, q0, p0, t_end, h_list,
+      expected, order_tol, h, steps, floor, json_out;
+  bool lib_given = false, cmd_given = false, json_given = false, t_end_given = false,
+       h_list_given = false, expected_given = false, order_tol_given = false, symmetric = false;
+};
+
+/// Run it; the exit status as for `vibook verify` (0 pass, 5 a verdict failed, 2, 3, 4).
+int run_stepper(const StepperOptions& o);
+
+}  // namespace vibook::cli
