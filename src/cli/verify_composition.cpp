@@ -97,10 +97,9 @@ struct Plan {
   const Problem* problem = nullptr;
   const comp::CatalogueEntry* entry = nullptr;
   std::vector<comp::Stage<mpfr_real>> typed;  // a typed list
-  std::vector<double> q0, p0, hs;
-  double t_end = 5, order_tol = 0.2, h = 0.05;
-  std::optional<double> expected, floor;
-  long long steps = 100000;
+  std::vector<double> q0, p0;
+  std::optional<double> expected;
+  MapStudy study;  // the measurement settings (--t-end, --h-list, --h, --steps, …)
 };
 
 Plan check(const CompositionOptions& o) {
@@ -149,31 +148,16 @@ Plan check(const CompositionOptions& o) {
   if (p.problem->name == "kepler" && std::hypot(p.q0[0], p.q0[1]) < 1e-3)
     throw ArgumentError("--q0", "lies at (or within 1e-3 of) the Kepler singularity q = 0");
   if (o.t_end_given) {
-    p.t_end = parse_number("--t-end", o.t_end);
-    if (!(p.t_end > 0) || p.t_end > 1e4) throw ArgumentError("--t-end", "must lie in (0, 1e4]");
+    p.study.t_end = parse_number("--t-end", o.t_end);
+    if (!(p.study.t_end > 0) || p.study.t_end > 1e4)
+      throw ArgumentError("--t-end", "must lie in (0, 1e4]");
   }
   if (o.expected_given) {
     const double e = parse_number("--expected-order", o.expected);
     if (!(e > 0 && e <= 10)) throw ArgumentError("--expected-order", "must lie in (0, 10]");
     p.expected = e;
   }
-  if (o.order_tol_given) {
-    p.order_tol = parse_number("--order-tol", o.order_tol);
-    if (!(p.order_tol > 0 && p.order_tol <= 1))
-      throw ArgumentError("--order-tol", "must lie in (0, 1]");
-  }
-  if (o.h_list_given) p.hs = parse_step_list("--h-list", o.h_list, p.t_end, 7);
-  if (!o.floor.empty()) {
-    p.floor = parse_number("--floor", o.floor);
-    if (!(*p.floor >= 0) || !std::isfinite(*p.floor))
-      throw ArgumentError("--floor", "must be a finite number >= 0");
-  }
-  if (!o.h.empty()) p.h = parse_number("--h", o.h);
-  if (!o.steps.empty()) p.steps = parse_integer("--steps", o.steps);
-  if (p.steps < 1024 || p.steps > 100000000)
-    throw ArgumentError("--steps", "must lie in [1024, 1e8]");
-  if (!(p.h > 0) || !std::isfinite(p.h) || p.h * double(p.steps) > 1e9)
-    throw ArgumentError("--h", "must be a positive finite step (h·steps at most 1e9)");
+  check_study_options(o, p.study);
   if (o.json_given) check_output_path(o.json_out, "--json-out", true);
   return p;
 }
@@ -335,7 +319,7 @@ int run_problem(const CompositionOptions& o, const Plan& p, const P& prob) {
   line("problem", fmt::format("{}: {}, q0 = {}, p0 = {}", p.problem->name, p.problem->hamiltonian,
                               vec_text(p.q0), vec_text(p.p0)));
 
-  MapStudy study;
+  MapStudy study = p.study;
   study.step = step;
   study.z0 = z0;
   study.field = [&](const std::vector<dd_real>& y) {
@@ -353,13 +337,7 @@ int run_problem(const CompositionOptions& o, const Plan& p, const P& prob) {
   study.H = [&](const Eigen::VectorXd& z) {
     return energy(prob, Vec<double, N>(z.head<N>()), Vec<double, N>(z.tail<N>()));
   };
-  study.t_end = p.t_end;
-  study.h = p.h;
-  study.order_tol = p.order_tol;
   study.expected = expected;
-  study.steps = p.steps;
-  study.hs = p.hs;
-  study.floor = p.floor;
   study.substeps = double(c.size());
   study.require_reversible = symmetric;
   study.reversible_note = " (reported only: the composition is not symmetric)";

@@ -30,18 +30,7 @@ case_ first-order-base 5 "order conditions,order,energy" 'order 1 by the conditi
 case_ doubled 5 "order conditions,order" 'weight 1 fails' \
   -- --composition sv --coefficients 1,1 --expected-order 2
 
-# Bad arguments: exit 2, one line naming the argument, nothing on stdout.
-arg() {
-  local name=$1 opt=$2; shift 2
-  "$V" verify "$@" >"$tmp/out" 2>"$tmp/err"
-  local got=$?
-  if [ "$got" != 2 ] || [ -s "$tmp/out" ] || ! grep -q -- "$opt" "$tmp/err" ||
-     [ "$(wc -l <"$tmp/err")" != 1 ]; then
-    bad "$name: exit $got, stdout $(wc -c <"$tmp/out") bytes, stderr: $(cat "$tmp/err")"
-  else
-    ok
-  fi
-}
+# Bad arguments (arg, verify_case.sh): exit 2, one line naming the argument, nothing on stdout.
 arg base --composition --composition rk4 --coefficients yoshida4
 arg no-coefficients --coefficients --composition sv
 arg unknown-name --coefficients --composition sv --coefficients yoshida5
