@@ -11,7 +11,13 @@
 //           velocity_verlet_cached odeint::velocity_verlet without reset: it reuses the
 //                                  acceleration of the last state it returned, so the "map"
 //                                  depends on the previous call, not only on (q, p)
+//           rk4                    odeint::runge_kutta4 on (q, p): order 4, not symplectic
+//           rk78                   odeint::runge_kutta_fehlberg78 on (q, p): order 8, not
+//                                  symplectic; its defect at h = 0.05 is about 1e-12, which a
+//                                  check at one small step size does not see
 //   SYSTEM  pendulum (1 dof, V = -cos q), kepler (2 dof, V = -1/|q|), henon-heiles (2 dof)
+#include <boost/numeric/odeint/stepper/runge_kutta4.hpp>
+#include <boost/numeric/odeint/stepper/runge_kutta_fehlberg78.hpp>
 #include <boost/numeric/odeint/stepper/symplectic_euler.hpp>
 #include <boost/numeric/odeint/stepper/symplectic_rkn_sb3a_m4_mclachlan.hpp>
 #include <boost/numeric/odeint/stepper/symplectic_rkn_sb3a_mclachlan.hpp>
@@ -64,6 +70,8 @@ struct Context {
   odeint::symplectic_rkn_sb3a_mclachlan<State> mclachlan;
   odeint::symplectic_rkn_sb3a_m4_mclachlan<State> mclachlan_m4;
   odeint::velocity_verlet<State> verlet;
+  odeint::runge_kutta4<State> rk4;
+  odeint::runge_kutta_fehlberg78<State> rk78;
   State f;
 };
 
@@ -98,8 +106,9 @@ void* vibook_stepper_create(int dof, const char* arg) {
     delete c;
     return nullptr;
   }
-  static const char* methods[] = {"symplectic_euler", "velocity_verlet", "mclachlan4",
-                                  "mclachlan4_m4",    "explicit_euler",  "velocity_verlet_cached"};
+  static const char* methods[] = {
+      "symplectic_euler", "velocity_verlet",        "mclachlan4", "mclachlan4_m4",
+      "explicit_euler",   "velocity_verlet_cached", "rk4",        "rk78"};
   bool known = false;
   for (const char* m : methods) known = known || c->method == m;
   if (!known) {
@@ -130,6 +139,25 @@ int vibook_stepper_step(void* context, double h, double* q, double* p) {
     c->verlet.do_step(accel, xv, 0.0, h);
     Q = xv.first;
     P = xv.second;
+  } else if (c->method == "rk4" || c->method == "rk78") {
+    // z = (q, p), z' = (p, -grad V(q))
+    const std::size_t d = n;
+    auto rhs = [c, d](const State& z, State& dz, double /*t*/) {
+      State q(z.begin(), z.begin() + static_cast<long>(d)), f(d);
+      c->force(q, f);
+      for (std::size_t i = 0; i < d; ++i) {
+        dz[i] = z[d + i];
+        dz[d + i] = f[i];
+      }
+    };
+    State z(Q);
+    z.insert(z.end(), P.begin(), P.end());
+    if (c->method == "rk4")
+      c->rk4.do_step(rhs, z, 0.0, h);
+    else
+      c->rk78.do_step(rhs, z, 0.0, h);
+    Q.assign(z.begin(), z.begin() + static_cast<long>(d));
+    P.assign(z.begin() + static_cast<long>(d), z.end());
   } else {  // explicit_euler
     c->force(Q, c->f);
     for (std::size_t i = 0; i < n; ++i) {

@@ -196,14 +196,57 @@ void measure_map(const MapStudy& s, MapReport& rep) {
   // --- symplecticity and reversibility -------------------------------------------------------
   std::vector<Eigen::VectorXd> states{z0};
   if (zref.size() == z0.size()) states.push_back(zref);
+  // Symplecticity at the step sizes h, 2h and 4h. A symplectic map leaves only the difference
+  // quotient's error at every size; a non-symplectic method of order p leaves O(h^(p+1)), which
+  // at one small step can hide below any tolerance that round-off allows (an eighth-order
+  // Runge-Kutta method: 4e-11 at h = 0.05 on Kepler), but grows by 2^(p+1) with each doubling.
+  // The defect is relative to max(1, |J|^2), the size of J^T W J's entries, so that a map with
+  // a large Jacobian is not failed for its difference quotients' round-off.
   rep.required.push_back("symplectic");
   try {
-    const auto sym = verify::symplecticity_defect(step, states, s.h, 1e-8);
-    rep.line("symplectic", fmt::format("defect |J^T W J - W| = {:.2e} (<= {:.0e}): {}", sym.defect,
-                                       sym.tolerance, sym.passed ? "yes" : "NO"));
-    if (!sym.passed) rep.failed.push_back("symplectic");
-    rep.js["symplecticity"] = {
-        {"defect", sym.defect}, {"tolerance", sym.tolerance}, {"passed", sym.passed}};
+    constexpr double kSymplecticTol = 1e-8;
+    double worst = 0, worst_h = s.h;
+    std::vector<std::string> shown;
+    json per = json::array();
+    for (int k = 0; k < 3; ++k) {
+      const double hk = s.h * std::exp2(k);
+      double dk = 0;
+      try {
+        for (const auto& z : states) {
+          const Eigen::Index n = z.size() / 2;
+          Eigen::MatrixXd W = Eigen::MatrixXd::Zero(2 * n, 2 * n);
+          W.topRightCorner(n, n) = Eigen::MatrixXd::Identity(n, n);
+          W.bottomLeftCorner(n, n) = -Eigen::MatrixXd::Identity(n, n);
+          const Eigen::MatrixXd J = verify::step_jacobian(step, z, hk);
+          if (!J.allFinite()) throw NumericalError("the Jacobian of the map is not finite");
+          const double size = std::max(1.0, J.lpNorm<Eigen::Infinity>());
+          dk = std::max(dk, (J.transpose() * W * J - W).lpNorm<Eigen::Infinity>() / (size * size));
+        }
+      } catch (const NumericalError& e) {
+        if (k == 0) throw;
+        // a step too large for the method: the sizes below it decide
+        shown.push_back(fmt::format("h = {:g}: no step", hk));
+        per.push_back({{"h", hk}, {"defect", nullptr}, {"error", e.what()}});
+        continue;
+      }
+      shown.push_back(fmt::format("h = {:g}: {:.1e}", hk, dk));
+      per.push_back({{"h", hk}, {"defect", dk}});
+      if (dk >= worst) {
+        worst = dk;
+        worst_h = hk;
+      }
+    }
+    const bool ok = worst <= kSymplecticTol;
+    rep.line("symplectic",
+             fmt::format("defect |J^T W J - W| / max(1, |J|^2): {} (each <= {:.0e}): {}",
+                         fmt::join(shown, ", "), kSymplecticTol, ok ? "yes" : "NO"));
+    if (!ok) rep.failed.push_back("symplectic");
+    rep.js["symplecticity"] = {{"defect", worst},
+                               {"at_h", worst_h},
+                               {"by_step_size", per},
+                               {"relative_to", "max(1, |J|_max^2)"},
+                               {"tolerance", kSymplecticTol},
+                               {"passed", ok}};
   } catch (const NumericalError& e) {
     rep.numerical("symplectic", e);
   }
