@@ -69,32 +69,10 @@ const std::vector<Base>& bases() {
   return b;
 }
 
-struct Problem {
-  std::string name, hamiltonian;
-  std::vector<double> q0, p0;
-};
-
-const std::vector<Problem>& problems() {
-  static const std::vector<Problem> p = {
-      {"kepler",
-       "H = |p|^2/2 - 1/|q| (eccentricity 0.5, period 2 pi)",
-       {0.5, 0},
-       {0, std::sqrt(3.0)}},
-      {"pendulum", "H = p^2/2 - cos(q)", {1}, {0.5}},
-      {"henon-heiles", "H = |p|^2/2 + (x^2 + y^2)/2 + x^2 y - y^3/3", {0, 0.1}, {0.35, 0}}};
-  return p;
-}
-
-std::string vec_text(const std::vector<double>& v) {
-  std::vector<std::string> s;
-  for (double x : v) s.push_back(fmt::format("{:.6g}", x));
-  return "(" + fmt::format("{}", fmt::join(s, ", ")) + ")";
-}
-
 // Everything checked before any work.
 struct Plan {
   const Base* base = nullptr;
-  const Problem* problem = nullptr;
+  const TestProblem* problem = nullptr;
   const comp::CatalogueEntry* entry = nullptr;
   std::vector<comp::Stage<mpfr_real>> typed;  // a typed list
   std::vector<double> q0, p0;
@@ -110,7 +88,7 @@ Plan check(const CompositionOptions& o) {
     throw ArgumentError("--composition",
                         "unknown base method '" + o.base + "' (sv, midpoint, se or se-adjoint)");
   const std::string prob = o.problem.empty() ? "kepler" : o.problem;
-  for (const auto& q : problems())
+  for (const auto& q : test_problems())
     if (q.name == prob) p.problem = &q;
   if (!p.problem)
     throw ArgumentError("--problem",

@@ -16,6 +16,23 @@ namespace vibook::cli {
 
 using nlohmann::json;
 
+const std::vector<TestProblem>& test_problems() {
+  static const std::vector<TestProblem> p = {
+      {"kepler",
+       "H = |p|^2/2 - 1/|q| (eccentricity 0.5, period 2 pi)",
+       {0.5, 0},
+       {0, std::sqrt(3.0)}},
+      {"pendulum", "H = p^2/2 - cos(q)", {1}, {0.5}},
+      {"henon-heiles", "H = |p|^2/2 + (x^2 + y^2)/2 + x^2 y - y^3/3", {0, 0.1}, {0.35, 0}}};
+  return p;
+}
+
+std::string vec_text(const std::vector<double>& v) {
+  std::vector<std::string> s;
+  for (double x : v) s.push_back(fmt::format("{:.6g}", x));
+  return "(" + fmt::format("{}", fmt::join(s, ", ")) + ")";
+}
+
 void MapReport::line(const std::string& label, const std::string& text) {
   out << fmt::format("{:<21}{}\n", label, text);
 }

@@ -26,6 +26,17 @@
 
 namespace vibook::cli {
 
+/// The nonlinear test problems of the composition, Galerkin and black-box routes: the name,
+/// the Hamiltonian as printed, and the initial state (the Kepler orbit has eccentricity 0.5).
+struct TestProblem {
+  std::string name, hamiltonian;
+  std::vector<double> q0, p0;
+};
+const std::vector<TestProblem>& test_problems();
+
+/// "(a, b, …)" with 6 significant digits.
+std::string vec_text(const std::vector<double>& v);
+
 /// The report being written: its text lines, its JSON, the parts required by the verdict and
 /// those that failed, and the first numerical failure (for the one line on stderr).
 struct MapReport {

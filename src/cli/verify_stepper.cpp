@@ -50,9 +50,7 @@ namespace {
 using nlohmann::json;
 
 std::string vec_text(const double* v, int n) {
-  std::vector<std::string> s;
-  for (int i = 0; i < n; ++i) s.push_back(fmt::format("{:.6g}", v[i]));
-  return "(" + fmt::format("{}", fmt::join(s, ", ")) + ")";
+  return cli::vec_text(std::vector<double>(v, v + n));
 }
 
 // --- the two kinds of black box ---------------------------------------------------------------
