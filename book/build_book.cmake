@@ -124,6 +124,23 @@ if(NOT rc EQUAL 0)
   message(FATAL_ERROR "composition_audit.py failed (exit ${rc})")
 endif()
 
+# Galerkin variational integrators (the chapter's section "Galerkin variational integrators").
+vibook_verify_case(verify-method-lobatto3.txt 0 --method lobatto:3 --problem kepler)
+# The table of every Galerkin method on three problems takes about two minutes: the full book
+# build (VIBOOK_BOOK_BENCH, ./build.sh book) makes it; the test build says where it comes from.
+if(DEFINED ENV{VIBOOK_BOOK_BENCH})
+  execute_process(COMMAND ${PYTHON3} ${SOURCE_DIR}/book/method_table.py ${VIBOOK}
+                          ${GEN}/method-table.html
+                  RESULT_VARIABLE rc)
+  if(NOT rc EQUAL 0)
+    message(FATAL_ERROR "method_table.py failed (exit ${rc})")
+  endif()
+else()
+  file(WRITE ${GEN}/method-table.html
+       "<p><em>This table is made by the full book build (<code>./build.sh book</code>, about "
+       "two minutes for it); the test build leaves it out.</em></p>\n")
+endif()
+
 # Black boxes (the chapter's section "Any stepper as a black box"): Boost.Odeint's fourth-order
 # McLachlan stepper through the C ABI, which must pass; odeint's velocity Verlet called without
 # reset, which must fail; a Python composition with its pairs swapped, which must fail.

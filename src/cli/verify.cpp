@@ -29,6 +29,7 @@
 #include "args.hpp"
 #include "cli.hpp"
 #include "verify_composition.hpp"
+#include "verify_method.hpp"
 #include "verify_stepper.hpp"
 #include "vibook/core/output_file.hpp"
 #include "vibook/core/precision.hpp"
@@ -57,7 +58,7 @@ struct VerifyOptions {
       t_end = "5", h_list = "0.2,0.1,0.05,0.025,0.0125", expected = "2", order_tol = "0.1",
       h = "0.05", steps = "100000", modified_order = "2", format = "text", json_out, report, floor,
       max_seconds, composition, coefficients, problem, stepper_lib, stepper_cmd, stepper_arg,
-      stepper_timeout;
+      stepper_timeout, method;
   bool json_given = false, report_given = false, timings = false, symmetric = false,
        progress = false, reference = false;
 };
@@ -1257,6 +1258,34 @@ int run(const VerifyOptions& o, const CLI::App& c) {
   }
   // The typed expressions' derivatives are derived symbolically: the limit covers that too.
   const Watchdog watchdog("verify", max_seconds, o.progress);
+  if (c.count("--method") > 0) {
+    // A Galerkin variational integrator from the catalogue (verify_method.cpp).
+    for (const char* opt :
+         {"--ld", "--lagrangian", "--hamiltonian", "--potential", "--dim", "--modified-order",
+          "--format", "--report", "--reference", "--symmetric", "--composition", "--coefficients",
+          "--stepper-lib", "--stepper-cmd", "--stepper-arg", "--stepper-timeout"})
+      if (c.count(opt) > 0)
+        throw ArgumentError(opt, "does not apply to --method (see vibook verify --help)");
+    MethodOptions mo;
+    mo.method = o.method;
+    mo.problem = o.problem;
+    mo.q0 = o.q0;
+    mo.p0 = o.p0;
+    mo.t_end = o.t_end;
+    mo.h_list = o.h_list;
+    mo.expected = o.expected;
+    mo.order_tol = o.order_tol;
+    mo.h = o.h;
+    mo.steps = o.steps;
+    mo.floor = o.floor;
+    mo.json_out = o.json_out;
+    mo.json_given = o.json_given;
+    mo.t_end_given = c.count("--t-end") > 0;
+    mo.h_list_given = c.count("--h-list") > 0;
+    mo.expected_given = c.count("--expected-order") > 0;
+    mo.order_tol_given = c.count("--order-tol") > 0;
+    return run_method(mo);
+  }
   const bool stepper = c.count("--stepper-lib") > 0 || c.count("--stepper-cmd") > 0;
   if (stepper) {
     // Another program's stepper as a black box (verify_stepper.cpp).
@@ -1328,9 +1357,12 @@ int run(const VerifyOptions& o, const CLI::App& c) {
   if (c.count("--coefficients") > 0)
     throw ArgumentError("--coefficients", "applies only with --composition");
   if (c.count("--problem") > 0)
-    throw ArgumentError("--problem", "applies only with --composition or a black-box stepper");
+    throw ArgumentError("--problem",
+                        "applies only with --method, --composition or a black-box stepper");
   if (o.ld.empty() && c.count("--ld") == 0)
-    throw ArgumentError("--ld", "is required (or --composition BASE --coefficients LIST|NAME)");
+    throw ArgumentError("--ld",
+                        "is required (or --method NAME:S, --composition BASE "
+                        "--coefficients LIST|NAME, --stepper-lib or --stepper-cmd)");
   progress::set_stage("reading the expressions and deriving L_d's derivatives");
   const int dim = o.dim.empty() ? 0 : static_cast<int>(parse_integer("--dim", o.dim));
   if (!o.dim.empty() && (dim < 1 || dim > verify::kMaxDim))
@@ -1372,6 +1404,10 @@ std::function<int()> add_verify_command(CLI::App& app) {
                 "V(...) and grad(V)(...), e.g. 'h*((q1-q0)^2/(2*h^2) - "
                 "(V(q0)+4*V((q0+q1)/2)+V(q1))/6)'; u^2 is |u|^2, [a, b] a vector (required "
                 "unless --composition is given)");
+  c->add_option("--method", o->method,
+                "verify a catalogue method instead of an --ld: gauss:S (S = 1-4) or lobatto:S "
+                "(S = 2-5), the Galerkin variational integrator with S stages (Gauss "
+                "collocation, order 2S; Lobatto IIIA-IIIB, order 2S-2)");
   c->add_option("--composition", o->composition,
                 "verify a composition of this base method instead of an --ld: sv, midpoint, se "
                 "or se-adjoint (order conditions at 120 digits, measured order, symplecticity, "
@@ -1382,8 +1418,8 @@ std::function<int()> add_verify_command(CLI::App& app) {
                 "application, e.g. '7/24*,3/8,3/8*,-25/24,1*' (decimals or ratios; '*' marks the "
                 "adjoint)");
   c->add_option("--problem", o->problem,
-                "with --composition or a stepper: the nonlinear test problem, kepler (default, "
-                "eccentricity 0.5), pendulum or henon-heiles");
+                "with --method, --composition or a stepper: the nonlinear test problem, kepler "
+                "(default, eccentricity 0.5), pendulum or henon-heiles");
   c->add_option("--stepper-lib", o->stepper_lib,
                 "verify another library's one-step method as a black box: a shared library "
                 "with the C ABI of vibook/verify/stepper_abi.h (needs --expected-order; the "

@@ -1,0 +1,360 @@
+/// \file galerkin.hpp
+/// \brief Galerkin variational integrators (Marsden & West 2001, §2.6; Hairer, Lubich &
+/// Wanner, *Geometric Numerical Integration*, §VI.6.3): the discrete Lagrangian is the action
+/// of a polynomial of degree s through the step, evaluated by an s-node quadrature rule, with
+/// the polynomial's interior control points eliminated by the discrete Euler–Lagrange solver.
+///
+///   L_d(q0, q1, h) = ext over Q^1 … Q^{s−1} of  h Σ_i b_i L(q(c_i h), q̇(c_i h)),
+///   q(τh) = Σ_ν ℓ_ν(τ) Q^ν,  Q^0 = q0, Q^s = q1, control times d_ν = ν/s,
+///
+/// in vibook's scaling L_d ≈ h·L. With Gauss–Legendre nodes it is the s-stage Gauss collocation
+/// method (order 2s); with Gauss–Lobatto nodes the s-stage Lobatto IIIA–IIIB pair (order
+/// 2s − 2). HLW Theorem VI.6.4 states the equivalence with the partitioned Runge–Kutta method
+/// a_ij = ∫_0^{c_i} ℓ̃_j, â_ij = b_j(1 − a_ji/b_i) (ℓ̃_j the Lagrange polynomials on the nodes);
+/// the doctests check it step by step (galerkin_test.cpp), against PartitionedRungeKutta below.
+///
+/// The quadrature nodes and weights are computed from their defining equations (roots of the
+/// Legendre polynomial P_s, or of P'_{s−1} with the end points, by Newton's method in long
+/// double), not typed.
+///
+/// One step: given (q0, p0), Newton's method on the s·N unknowns (Q^1 … Q^{s−1}, q1) together,
+///   ∂A/∂Q^ν = 0 (ν = 1 … s−1),   p0 + ∂A/∂Q^0 = 0,
+/// then p1 = ∂A/∂Q^s, with A the quadrature action; every derivative, the Newton Jacobian (a
+/// block of A's Hessian) included, by nested forward AutoDiff on the one callable L(q, v). The
+/// unknowns are carried as increments Q^ν = q0 + h W_ν (see step()), so that the momenta are
+/// not differences of positions over h.
+///
+/// Chapter: \ref chapter-verify.
+#pragma once
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "vibook/core/autodiff.hpp"
+#include "vibook/core/errors.hpp"
+#include "vibook/core/newton.hpp"
+#include "vibook/core/types.hpp"
+
+namespace vibook {
+
+/// A quadrature rule on [0, 1]: nodes c_i and weights b_i.
+struct Quadrature {
+  std::string name;  ///< "gauss" or "lobatto"
+  std::vector<double> c, b;
+  int order = 0;  ///< the order of the variational integrator built on it (2s or 2s − 2)
+};
+
+namespace galerkin_detail {
+
+// P_n(x) and P_n'(x) on [−1, 1] by the three-term recurrence.
+inline void legendre(int n, long double x, long double& p, long double& dp) {
+  long double p0 = 1, p1 = x;
+  if (n == 0) {
+    p = 1;
+    dp = 0;
+    return;
+  }
+  for (int k = 2; k <= n; ++k) {
+    const long double p2 = ((2 * k - 1) * x * p1 - (k - 1) * p0) / k;
+    p0 = p1;
+    p1 = p2;
+  }
+  p = p1;
+  dp = n * (x * p1 - p0) / (x * x - 1);  // valid off ±1 (Gauss nodes and Lobatto interiors)
+}
+
+// Lagrange basis polynomial j on the nodes x, and its derivative, at t.
+inline long double lagrange(const std::vector<long double>& x, std::size_t j, long double t) {
+  long double r = 1;
+  for (std::size_t m = 0; m < x.size(); ++m)
+    if (m != j) r *= (t - x[m]) / (x[j] - x[m]);
+  return r;
+}
+inline long double lagrange_derivative(const std::vector<long double>& x, std::size_t j,
+                                       long double t) {
+  long double sum = 0;
+  for (std::size_t k = 0; k < x.size(); ++k) {
+    if (k == j) continue;
+    long double term = 1 / (x[j] - x[k]);
+    for (std::size_t m = 0; m < x.size(); ++m)
+      if (m != j && m != k) term *= (t - x[m]) / (x[j] - x[m]);
+    sum += term;
+  }
+  return sum;
+}
+
+}  // namespace galerkin_detail
+
+/// The s-node Gauss–Legendre rule on [0, 1] (exact for degree 2s − 1), 1 ≤ s ≤ 8.
+inline Quadrature gauss_rule(int s) {
+  if (s < 1 || s > 8) throw std::invalid_argument("gauss_rule: s must lie in 1..8");
+  Quadrature q{"gauss", {}, {}, 2 * s};
+  for (int i = 1; i <= s; ++i) {
+    long double x = std::cos(3.14159265358979323846L * (i - 0.25L) / (s + 0.5L)), p, dp;
+    for (int it = 0; it < 100; ++it) {
+      galerkin_detail::legendre(s, x, p, dp);
+      const long double dx = p / dp;
+      x -= dx;
+      if (std::fabs(dx) < 1e-19L) break;
+    }
+    galerkin_detail::legendre(s, x, p, dp);
+    q.c.insert(q.c.begin(), static_cast<double>((1 + x) / 2));  // ascending
+    q.b.insert(q.b.begin(), static_cast<double>(1 / ((1 - x * x) * dp * dp)));
+  }
+  return q;
+}
+
+/// The s-node Gauss–Lobatto rule on [0, 1] (end points included, exact for degree 2s − 3),
+/// 2 ≤ s ≤ 8.
+inline Quadrature lobatto_rule(int s) {
+  if (s < 2 || s > 8) throw std::invalid_argument("lobatto_rule: s must lie in 2..8");
+  Quadrature q{"lobatto", {0.0}, {}, 2 * s - 2};
+  const int n = s - 1;  // interior nodes: the roots of P_n'
+  std::vector<long double> interior;
+  for (int i = 1; i < s - 1; ++i) {
+    long double x = -std::cos(3.14159265358979323846L * i / n), p, dp;
+    for (int it = 0; it < 100; ++it) {
+      // f = P_n', f' = P_n'' = (2x P_n' − n(n+1) P_n)/(1 − x²)
+      galerkin_detail::legendre(n, x, p, dp);
+      const long double d2 = (2 * x * dp - n * (n + 1) * p) / (1 - x * x);
+      const long double dx = dp / d2;
+      x -= dx;
+      if (std::fabs(dx) < 1e-19L) break;
+    }
+    interior.push_back(x);
+  }
+  const long double w_end = 1.0L / (s * (s - 1));  // 2/(s(s−1)) on [−1, 1], halved
+  q.b.push_back(static_cast<double>(w_end));
+  for (long double x : interior) {
+    long double p, dp;
+    galerkin_detail::legendre(n, x, p, dp);
+    q.c.push_back(static_cast<double>((1 + x) / 2));
+    q.b.push_back(static_cast<double>(1 / (s * (s - 1) * p * p)));
+  }
+  q.c.push_back(1.0);
+  q.b.push_back(static_cast<double>(w_end));
+  return q;
+}
+
+/// "gauss:S" or "lobatto:S" (S the number of stages).
+inline Quadrature quadrature_rule(const std::string& family, int s) {
+  if (family == "gauss") return gauss_rule(s);
+  if (family == "lobatto") return lobatto_rule(s);
+  throw std::invalid_argument("quadrature_rule: unknown family '" + family + "'");
+}
+
+/// The Galerkin variational integrator of the file comment for a Lagrangian `L(q, v)` (a
+/// callable templated on the scalar, returning a scalar), N degrees of freedom, S stages
+/// (the polynomial's degree and the number of quadrature nodes). `step` has the interface of
+/// DelIntegrator: it advances (q, p) in place, reports the residual and iterations, and throws
+/// SolveError (leaving q, p unchanged) when Newton does not converge or the result is not
+/// finite.
+template <int N, int S, class Lagrangian>
+class GalerkinIntegrator {
+ public:
+  static constexpr int dim = N;
+  static constexpr int M = (S + 1) * N;  ///< all control points
+  static constexpr int U = S * N;        ///< the unknowns: interior control points and q1
+
+  GalerkinIntegrator(Lagrangian L, Quadrature rule, NewtonOptions options = {})
+      : L_(std::move(L)), rule_(std::move(rule)), options_(options) {
+    if (static_cast<int>(rule_.c.size()) != S)
+      throw std::invalid_argument("GalerkinIntegrator: the rule must have S nodes");
+    std::vector<long double> d(S + 1);
+    for (int nu = 0; nu <= S; ++nu)
+      d[static_cast<std::size_t>(nu)] = static_cast<long double>(nu) / S;
+    for (int i = 0; i < S; ++i)
+      for (int nu = 0; nu <= S; ++nu) {
+        const long double t = rule_.c[static_cast<std::size_t>(i)];
+        ell_[i][nu] =
+            static_cast<double>(galerkin_detail::lagrange(d, static_cast<std::size_t>(nu), t));
+        dell_[i][nu] = static_cast<double>(
+            galerkin_detail::lagrange_derivative(d, static_cast<std::size_t>(nu), t));
+      }
+  }
+
+  const Quadrature& rule() const { return rule_; }
+
+  /// The quadrature action A(Z) = h Σ b_i L(q(c_i h), q̇(c_i h)) of the control points
+  /// Z = (Q^0, …, Q^S), on any scalar.
+  template <class T>
+  T action(const Vec<T, M>& Z, double h) const {
+    T sum = constant<T>(0.0);
+    for (int i = 0; i < S; ++i) {
+      Vec<T, N> q, v;
+      for (int k = 0; k < N; ++k) {
+        q(k) = constant<T>(0.0);
+        v(k) = constant<T>(0.0);
+      }
+      for (int nu = 0; nu <= S; ++nu)
+        for (int k = 0; k < N; ++k) {
+          q(k) = q(k) + constant<T>(ell_[i][nu]) * Z(nu * N + k);
+          v(k) = v(k) + constant<T>(dell_[i][nu] / h) * Z(nu * N + k);
+        }
+      static_assert(ad::returns_scalar<decltype(L_(q, v)), T>, VIBOOK_RETURNS_SCALAR_MESSAGE);
+      sum = sum + constant<T>(rule_.b[static_cast<std::size_t>(i)]) * L_(q, v);
+    }
+    return constant<T>(h) * sum;
+  }
+
+  /// The action over h in increment form, Φ(q0, W) = A/h = Σ_i b_i L(q0 + h Σ_ν ℓ_ν(c_i) W_ν,
+  /// Σ_ν ℓ'_ν(c_i) W_ν), with the control points Q^ν = q0 + h W_ν (W_0 = 0; Σ_ν ℓ'_ν = 0), of
+  /// X = (q0, W_1, …, W_S). The velocities are then sums of W, not differences of positions
+  /// over h, so that round-off does not grow like u/h as the step shrinks.
+  template <class T>
+  T reduced_action(const Vec<T, M>& X, double h) const {
+    T sum = constant<T>(0.0);
+    for (int i = 0; i < S; ++i) {
+      Vec<T, N> q, v;
+      for (int k = 0; k < N; ++k) {
+        T qk = X(k), vk = constant<T>(0.0);
+        for (int nu = 1; nu <= S; ++nu) {
+          qk = qk + constant<T>(h * ell_[i][nu]) * X(nu * N + k);
+          vk = vk + constant<T>(dell_[i][nu]) * X(nu * N + k);
+        }
+        q(k) = qk;
+        v(k) = vk;
+      }
+      static_assert(ad::returns_scalar<decltype(L_(q, v)), T>, VIBOOK_RETURNS_SCALAR_MESSAGE);
+      sum = sum + constant<T>(rule_.b[static_cast<std::size_t>(i)]) * L_(q, v);
+    }
+    return sum;
+  }
+
+  /// One step. With Φ as above, ∂A/∂Q^ν = ∂Φ/∂W_ν (ν ≥ 1) and ∂A/∂Q^0 = h ∂Φ/∂q0 − Σ_ν ∂Φ/∂W_ν,
+  /// so the equations are ∂Φ/∂W_ν = 0 (ν = 1 … S−1) and p0 + h ∂Φ/∂q0 − ∂Φ/∂W_S = 0 for
+  /// W = (W_1 … W_S); then q1 = q0 + h W_S and p1 = ∂Φ/∂W_S = p0 + h ∂Φ/∂q0.
+  SolveReport step(Vec<double, N>& q, Vec<double, N>& p, double h) {
+    const Vec<double, N> q0 = q, p0 = p;
+    Vec<double, U> w;  // guess W_ν = d_ν p0 (the straight line with velocity p0: unit mass)
+    for (int nu = 1; nu <= S; ++nu) w.template segment<N>((nu - 1) * N) = (double(nu) / S) * p0;
+    Vec<double, M> grad;
+    Mat<double, M> hess;
+    auto derivatives = [&](const Vec<double, U>& x) {
+      Vec<double, M> X;
+      X << q0, x;
+      using In = ad::Dual<M, double>;
+      using Out = ad::Dual2<M, double>;
+      // inner derivatives: the gradient; outer ones (whose own derivatives are the Hessian's
+      // columns): seeded with e_k and zero inner parts
+      Vec<Out, M> Y;
+      for (int k = 0; k < M; ++k) {
+        Y(k) = Out(In(X(k), M, k));
+        Y(k).derivatives().setZero();
+        Y(k).derivatives()(k) = In(1.0);
+      }
+      const Out a = reduced_action<Out>(Y, h);
+      grad = a.value().derivatives();
+      for (int j = 0; j < M; ++j) hess.col(j) = a.derivatives()(j).derivatives();
+    };
+    auto fj = [&](const Vec<double, U>& x, Vec<double, U>& F, Mat<double, U>& J) {
+      derivatives(x);
+      // rows: F_0 = p0 + h Φ_q0 − Φ_{W_S}, then Φ_{W_1} … Φ_{W_{S−1}}
+      F.template head<N>() = p0 + h * grad.template head<N>() - grad.template tail<N>();
+      J.template topRows<N>() =
+          h * hess.template block<N, U>(0, N) - hess.template block<N, U>(M - N, N);
+      if constexpr (S > 1) {
+        F.template tail<U - N>() = grad.template segment<U - N>(N);
+        J.template bottomRows<U - N>() = hess.template block<U - N, U>(N, N);
+      }
+    };
+    // The updates are judged against the size of the momenta as well as each component's own
+    // (a component of W near zero would otherwise ask for more than round-off allows).
+    NewtonOptions opt = options_;
+    opt.step_abs = std::max(opt.step_abs, 4 * std::numeric_limits<double>::epsilon() *
+                                              std::max(1.0, p0.template lpNorm<Eigen::Infinity>()));
+    const SolveReport rep = newton_solve<U>(w, fj, opt, "Galerkin step");
+    if (!rep.converged) throw SolveError("Galerkin step", rep);
+    derivatives(w);
+    const Vec<double, N> q1 = q0 + h * w.template tail<N>();
+    // p1 = ∂A/∂Q^S = ∂Φ/∂W_S; at the solution this equals p0 + h ∂Φ/∂q0 (a common shift of all
+    // control points changes A by h ∂Φ/∂q0, and the other partial derivatives are −p0 and 0).
+    // The second form sums b_i ∂L/∂q, not Lagrange-derivative coefficients of size up to S²
+    // times ∂L/∂v, and leaves u|p| of round-off instead of about 10 u|p|.
+    const Vec<double, N> p1 = p0 + h * grad.template head<N>();
+    if (!q1.allFinite() || !p1.allFinite())
+      throw SolveError("Galerkin step: non-finite state", rep);
+    q = q1;
+    p = p1;
+    return rep;
+  }
+
+ private:
+  Lagrangian L_;
+  Quadrature rule_;
+  NewtonOptions options_;
+  double ell_[S][S + 1]{}, dell_[S][S + 1]{};
+};
+
+/// The partitioned Runge–Kutta method HLW Theorem VI.6.4 pairs with the Galerkin integrator on
+/// a rule (c, b): a_ij = ∫_0^{c_i} ℓ̃_j(τ) dτ, â_ij = b_j (1 − a_ji / b_i), for a mechanical
+/// problem H = ½|p|² + V(q) (`Problem::gradient`). The stage equations are solved by fixed-point
+/// iteration (for the doctest's small steps), to round-off. Gauss: â = a (collocation);
+/// Lobatto: a is IIIA, â is IIIB.
+template <class Problem>
+class PartitionedRungeKutta {
+ public:
+  static constexpr int N = Problem::N;
+  PartitionedRungeKutta(Problem P, const Quadrature& rule) : P_(std::move(P)), b_(rule.b) {
+    const std::size_t s = rule.c.size();
+    std::vector<long double> c(rule.c.begin(), rule.c.end());
+    a_.assign(s, std::vector<double>(s));
+    ahat_.assign(s, std::vector<double>(s));
+    // ∫_0^{c_i} ℓ̃_j by the s-node Gauss rule mapped to [0, c_i] (exact: degree s − 1)
+    const Quadrature g = gauss_rule(static_cast<int>(s));
+    for (std::size_t i = 0; i < s; ++i)
+      for (std::size_t j = 0; j < s; ++j) {
+        long double sum = 0;
+        for (std::size_t k = 0; k < s; ++k)
+          sum += g.b[k] * galerkin_detail::lagrange(c, j, c[i] * g.c[k]);
+        a_[i][j] = static_cast<double>(c[i] * sum);
+      }
+    for (std::size_t i = 0; i < s; ++i)
+      for (std::size_t j = 0; j < s; ++j) ahat_[i][j] = b_[j] * (1 - a_[j][i] / b_[i]);
+  }
+
+  const std::vector<std::vector<double>>& a() const { return a_; }
+  const std::vector<std::vector<double>>& ahat() const { return ahat_; }
+
+  void step(Vec<double, N>& q, Vec<double, N>& p, double h) const {
+    const std::size_t s = b_.size();
+    std::vector<Vec<double, N>> Q(s, q), F(s), P(s, p);
+    for (int it = 0; it < 200; ++it) {
+      for (std::size_t j = 0; j < s; ++j) F[j] = -P_.gradient(Q[j]);
+      double change = 0;
+      for (std::size_t i = 0; i < s; ++i) {
+        Vec<double, N> Pi = p;
+        for (std::size_t j = 0; j < s; ++j) Pi += h * ahat_[i][j] * F[j];
+        P[i] = Pi;
+      }
+      for (std::size_t i = 0; i < s; ++i) {
+        Vec<double, N> Qi = q;
+        for (std::size_t j = 0; j < s; ++j) Qi += h * a_[i][j] * P[j];
+        change = std::max(change, (Qi - Q[i]).template lpNorm<Eigen::Infinity>());
+        Q[i] = Qi;
+      }
+      if (change == 0) break;
+    }
+    for (std::size_t j = 0; j < s; ++j) F[j] = -P_.gradient(Q[j]);
+    Vec<double, N> q1 = q, p1 = p;
+    for (std::size_t j = 0; j < s; ++j) {
+      Vec<double, N> Pj = p;
+      for (std::size_t k = 0; k < s; ++k) Pj += h * ahat_[j][k] * F[k];
+      q1 += h * b_[j] * Pj;
+      p1 += h * b_[j] * F[j];
+    }
+    q = q1;
+    p = p1;
+  }
+
+ private:
+  Problem P_;
+  std::vector<double> b_;
+  std::vector<std::vector<double>> a_, ahat_;
+};
+
+}  // namespace vibook

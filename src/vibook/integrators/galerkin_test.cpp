@@ -1,0 +1,110 @@
+// Doctests of the Galerkin variational integrators (galerkin.hpp): the quadrature rules from
+// their defining equations, and HLW Theorem VI.6.4 step by step (the Galerkin discrete
+// Lagrangian with Gauss or Lobatto nodes is the partitioned Runge–Kutta method with
+// a_ij = ∫_0^{c_i} ℓ̃_j and â_ij = b_j(1 − a_ji/b_i)), on the Kepler problem.
+#include "vibook/integrators/galerkin.hpp"
+
+#include <doctest/doctest.h>
+
+#include <cmath>
+
+#include "vibook/kepler/kepler.hpp"
+#include "vibook/problems/problems.hpp"
+
+using namespace vibook;
+
+namespace {
+
+// ∫_0^1 x^k by the rule, minus 1/(k+1).
+double moment_error(const Quadrature& q, int k) {
+  double sum = 0;
+  for (std::size_t i = 0; i < q.c.size(); ++i) sum += q.b[i] * std::pow(q.c[i], k);
+  return sum - 1.0 / (k + 1);
+}
+
+template <class Problem>
+auto mechanical(Problem P) {
+  // the return type declared: an AutoDiff expression returned by value would refer to
+  // temporaries of the lambda
+  return [P](const auto& q, const auto& v) -> std::remove_cvref_t<decltype(q(0))> {
+    using T = std::remove_cvref_t<decltype(q(0))>;
+    return constant<T>(0.5) * squared_norm(v) - P.template potential<T>(q);
+  };
+}
+
+// The largest one-step difference |Φ_Galerkin(z_k) − Φ_PRK(z_k)| along `steps` Galerkin steps of
+// h on Kepler (e = 0.5, from perihelion), relative to |z_k|: each map applied to the same state,
+// so that nothing accumulates.
+template <int S>
+double galerkin_vs_prk(const Quadrature& galerkin_rule, const Quadrature& prk_rule, int steps,
+                       double h) {
+  GalerkinIntegrator<2, S, decltype(mechanical(Kepler{}))> g(mechanical(Kepler{}), galerkin_rule);
+  PartitionedRungeKutta<Kepler> prk(Kepler{}, prk_rule);
+  Vec<double, 2> q(0.5, 0), p(0, std::sqrt(3.0));
+  double worst = 0;
+  for (int k = 0; k < steps; ++k) {
+    Vec<double, 2> q2 = q, p2 = p;
+    g.step(q, p, h);
+    prk.step(q2, p2, h);
+    const double size = std::max(q.lpNorm<Eigen::Infinity>(), p.lpNorm<Eigen::Infinity>());
+    worst = std::max({worst, (q - q2).lpNorm<Eigen::Infinity>() / size,
+                      (p - p2).lpNorm<Eigen::Infinity>() / size});
+  }
+  return worst;
+}
+
+}  // namespace
+
+TEST_CASE("quadrature rules: Gauss exact to degree 2s-1, Lobatto to 2s-3, and no further") {
+  for (int s = 1; s <= 6; ++s) {
+    const Quadrature g = gauss_rule(s);
+    CAPTURE(s);
+    for (int k = 0; k <= 2 * s - 1; ++k) CHECK(std::abs(moment_error(g, k)) <= 4e-16);
+    CHECK(std::abs(moment_error(g, 2 * s)) > 1e-12);  // round-off leaves < 1e-15
+  }
+  for (int s = 2; s <= 6; ++s) {
+    const Quadrature l = lobatto_rule(s);
+    CAPTURE(s);
+    CHECK(l.c.front() == 0.0);
+    CHECK(l.c.back() == 1.0);
+    for (int k = 0; k <= 2 * s - 3; ++k) CHECK(std::abs(moment_error(l, k)) <= 4e-16);
+    CHECK(std::abs(moment_error(l, 2 * s - 2)) > 1e-12);
+  }
+  // known closed forms: Gauss 2 nodes 1/2 ∓ √3/6; Lobatto 3 nodes (0, 1/2, 1), (1/6, 2/3, 1/6)
+  const Quadrature g2 = gauss_rule(2), l3 = lobatto_rule(3);
+  CHECK(std::abs(g2.c[0] - (0.5 - std::sqrt(3.0) / 6)) <= 1e-16);
+  CHECK(std::abs(l3.c[1] - 0.5) <= 1e-16);
+  CHECK(std::abs(l3.b[1] - 2.0 / 3) <= 2e-16);
+  CHECK(std::abs(l3.b[0] - 1.0 / 6) <= 2e-16);
+}
+
+TEST_CASE("Galerkin variational integrators are the partitioned Runge-Kutta methods (HLW VI.6.4)") {
+  // One step of each from the same state, along 40 steps of h = 0.05: equal to 64 units of
+  // round-off relative to the state (both solve their stage equations to round-off; measured:
+  // at most 10 u). A first version that carried the control points themselves, not increments,
+  // differed by 5 to 13 u/h: its momenta were differences of positions over h.
+  constexpr double kH = 0.05;
+  constexpr double kTol = 64 * 2.2e-16;
+  CHECK(galerkin_vs_prk<1>(gauss_rule(1), gauss_rule(1), 40, kH) <= kTol);
+  CHECK(galerkin_vs_prk<2>(gauss_rule(2), gauss_rule(2), 40, kH) <= kTol);
+  CHECK(galerkin_vs_prk<3>(gauss_rule(3), gauss_rule(3), 40, kH) <= kTol);
+  CHECK(galerkin_vs_prk<4>(gauss_rule(4), gauss_rule(4), 40, kH) <= kTol);
+  CHECK(galerkin_vs_prk<2>(lobatto_rule(2), lobatto_rule(2), 40, kH) <= kTol);
+  CHECK(galerkin_vs_prk<3>(lobatto_rule(3), lobatto_rule(3), 40, kH) <= kTol);
+  CHECK(galerkin_vs_prk<4>(lobatto_rule(4), lobatto_rule(4), 40, kH) <= kTol);
+  // the tableaux: Gauss is its own symplectic conjugate; Lobatto IIIA's conjugate is IIIB
+  // (for 3 stages, first column (1/6, 1/6, 1/6), last (0, 0, 0))
+  const PartitionedRungeKutta<Kepler> gauss3(Kepler{}, gauss_rule(3)),
+      lob3(Kepler{}, lobatto_rule(3));
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j) CHECK(std::abs(gauss3.a()[i][j] - gauss3.ahat()[i][j]) <= 1e-15);
+  for (int i = 0; i < 3; ++i) {
+    CHECK(std::abs(lob3.ahat()[i][0] - 1.0 / 6) <= 1e-15);
+    CHECK(std::abs(lob3.ahat()[i][2]) <= 1e-15);
+  }
+  // deliberately different methods are told apart, by far more than the bound: Gauss 2 against
+  // Lobatto 2 (orders 4 and 2), Lobatto 3 against Gauss 3 (orders 4 and 6; the local errors
+  // differ by about h^5)
+  CHECK(galerkin_vs_prk<2>(gauss_rule(2), lobatto_rule(2), 40, kH) > 1000 * kTol);
+  CHECK(galerkin_vs_prk<3>(lobatto_rule(3), gauss_rule(3), 40, kH) > 1000 * kTol);
+}

@@ -1,0 +1,34 @@
+#!/usr/bin/env bash
+# `vibook verify --method gauss:S|lobatto:S`: the Galerkin variational integrators reach their
+# documented orders (2S for Gauss collocation, 2S - 2 for Lobatto IIIA-IIIB) on nonlinear
+# problems, are symplectic and time-reversible; a wrong claim about one fails; bad arguments
+# exit 2 before any work. Usage: verify_method.sh path/to/vibook
+set -u
+V=$1
+# shellcheck source=verify_case.sh
+source "$(dirname "$0")/verify_case.sh"
+
+case_ gauss1 0 "" 'order +(1\.9|2\.0)[0-9]* over .*: yes' '^verdict +PASS' \
+  -- --method gauss:1 --problem pendulum
+case_ gauss2 0 "" 'order +(3\.9|4\.0)[0-9]* over .*: yes' -- --method gauss:2
+case_ gauss3 0 "" 'order +(5\.9|6\.0)[0-9]* over .*: yes' -- --method gauss:3 --problem henon-heiles
+case_ lobatto3 0 "" 'Lobatto IIIA-IIIB' 'order +(3\.9|4\.0)[0-9]* over .*: yes' \
+  'time-reversible .*: yes' -- --method lobatto:3
+case_ lobatto4 0 "" 'order +(5\.9|6\.0)[0-9]* over .*: yes' -- --method lobatto:4 --problem pendulum
+# Lobatto with three stages is of order 4: a claim of 6 (Gauss's order for three stages) fails
+case_ lobatto3-as-6 5 "order,energy" 'expected 6 .*: NO' \
+  -- --method lobatto:3 --expected-order 6
+
+arg no-stages --method --method gauss
+arg family --method --method radau:3
+arg too-many --method --method gauss:9
+arg lobatto-one --method --method lobatto:1
+arg stages-text --method --method gauss:two
+arg with-ld --ld --method gauss:2 --ld 'h*((q1-q0)^2/(2*h^2))' --potential x
+arg with-symmetric --symmetric --method gauss:2 --symmetric
+arg with-composition --composition --method gauss:2 --composition sv --coefficients yoshida4
+arg problem --problem --method gauss:2 --problem double-pendulum
+arg q0 --q0 --method gauss:2 --q0 1
+
+echo "verify_method: $pass passed, $fail failed"
+[ "$fail" = 0 ]
