@@ -87,12 +87,7 @@ Plan check(const CompositionOptions& o) {
   if (!p.base)
     throw ArgumentError("--composition",
                         "unknown base method '" + o.base + "' (sv, midpoint, se or se-adjoint)");
-  const std::string prob = o.problem.empty() ? "kepler" : o.problem;
-  for (const auto& q : test_problems())
-    if (q.name == prob) p.problem = &q;
-  if (!p.problem)
-    throw ArgumentError("--problem",
-                        "unknown problem '" + prob + "' (kepler, pendulum or henon-heiles)");
+  p.problem = &find_test_problem(o.problem);
   if (o.coefficients.empty())
     throw ArgumentError("--coefficients",
                         "is required with --composition: a catalogue name (yoshida4, suzuki4, "
@@ -110,26 +105,7 @@ Plan check(const CompositionOptions& o) {
     if (p.typed.empty() || p.typed.size() > 64)
       throw ArgumentError("--coefficients", "needs 1 to 64 stages");
   }
-  const std::size_t n = p.problem->q0.size();
-  auto vector_or = [&](const std::string& arg, const std::string& text,
-                       const std::vector<double>& dflt) {
-    std::vector<double> v = text.empty() ? dflt : parse_list(arg, text);
-    if (v.size() != n)
-      throw ArgumentError(arg, fmt::format("has {} components; {} has {} degrees of freedom",
-                                           v.size(), p.problem->name, n));
-    for (double x : v)
-      if (!std::isfinite(x)) throw ArgumentError(arg, "must be finite");
-    return v;
-  };
-  p.q0 = vector_or("--q0", o.q0, p.problem->q0);
-  p.p0 = vector_or("--p0", o.p0, p.problem->p0);
-  if (p.problem->name == "kepler" && std::hypot(p.q0[0], p.q0[1]) < 1e-3)
-    throw ArgumentError("--q0", "lies at (or within 1e-3 of) the Kepler singularity q = 0");
-  if (o.t_end_given) {
-    p.study.t_end = parse_number("--t-end", o.t_end);
-    if (!(p.study.t_end > 0) || p.study.t_end > 1e4)
-      throw ArgumentError("--t-end", "must lie in (0, 1e4]");
-  }
+  check_initial_state(o, *p.problem, p.q0, p.p0, p.study);
   if (o.expected_given) {
     const double e = parse_number("--expected-order", o.expected);
     if (!(e > 0 && e <= 10)) throw ArgumentError("--expected-order", "must lie in (0, 10]");

@@ -27,6 +27,14 @@ const std::vector<TestProblem>& test_problems() {
   return p;
 }
 
+const TestProblem& find_test_problem(const std::string& name) {
+  const std::string want = name.empty() ? "kepler" : name;
+  for (const auto& q : test_problems())
+    if (q.name == want) return q;
+  throw ArgumentError("--problem",
+                      "unknown problem '" + want + "' (kepler, pendulum or henon-heiles)");
+}
+
 std::string vec_text(const std::vector<double>& v) {
   std::vector<std::string> s;
   for (double x : v) s.push_back(fmt::format("{:.6g}", x));

@@ -15,6 +15,7 @@
 #include <string>
 #include <vector>
 
+#include <fmt/format.h>
 #include <Eigen/Dense>
 #include <nlohmann/json.hpp>
 
@@ -33,6 +34,10 @@ struct TestProblem {
   std::vector<double> q0, p0;
 };
 const std::vector<TestProblem>& test_problems();
+
+/// The test problem named by --problem (empty: kepler); ArgumentError naming --problem
+/// otherwise.
+const TestProblem& find_test_problem(const std::string& name);
 
 /// "(a, b, …)" with 6 significant digits.
 std::string vec_text(const std::vector<double>& v);
@@ -99,6 +104,33 @@ void check_study_options(const Options& o, MapStudy& s) {
     throw ArgumentError("--steps", "must lie in [1024, 1e8]");
   if (!(s.h > 0) || !std::isfinite(s.h) || s.h * double(s.steps) > 1e9)
     throw ArgumentError("--h", "must be a positive finite step (h·steps at most 1e9)");
+}
+
+/// --q0 and --p0 (default: the problem's), then --t-end into s.t_end, checked before any work
+/// (ArgumentError naming the option). `Options` has the string fields q0, p0, t_end and the
+/// flag t_end_given.
+template <class Options>
+void check_initial_state(const Options& o, const TestProblem& problem, std::vector<double>& q0,
+                         std::vector<double>& p0, MapStudy& s) {
+  const std::size_t n = problem.q0.size();
+  auto vector_or = [&](const std::string& arg, const std::string& text,
+                       const std::vector<double>& dflt) {
+    std::vector<double> v = text.empty() ? dflt : parse_list(arg, text);
+    if (v.size() != n)
+      throw ArgumentError(arg, fmt::format("has {} components; {} has {} degrees of freedom",
+                                           v.size(), problem.name, n));
+    for (double x : v)
+      if (!std::isfinite(x)) throw ArgumentError(arg, "must be finite");
+    return v;
+  };
+  q0 = vector_or("--q0", o.q0, problem.q0);
+  p0 = vector_or("--p0", o.p0, problem.p0);
+  if (problem.name == "kepler" && std::hypot(q0[0], q0[1]) < 1e-3)
+    throw ArgumentError("--q0", "lies at (or within 1e-3 of) the Kepler singularity q = 0");
+  if (o.t_end_given) {
+    s.t_end = parse_number("--t-end", o.t_end);
+    if (!(s.t_end > 0) || s.t_end > 1e4) throw ArgumentError("--t-end", "must lie in (0, 1e4]");
+  }
 }
 
 /// The reference, order, symplecticity, reversibility and energy parts, appended to `r`.
