@@ -82,19 +82,14 @@ auto mechanical_lagrangian(P prob) {
   };
 }
 
+// The one-step map (instantiated for each number of stages and problem); the rest of the
+// report depends on the problem only.
 template <int S, class P>
-int run_problem(const MethodOptions& o, const Plan& p, const P& prob) {
+verify::Step galerkin_step(const P& prob, const Quadrature& rule) {
   constexpr int N = P::N;
-  MapReport rep;
   using Integrator = GalerkinIntegrator<N, S, decltype(mechanical_lagrangian(prob))>;
-  auto integrator = std::make_shared<Integrator>(mechanical_lagrangian(prob), p.rule);
-  Eigen::VectorXd z0(2 * N);
-  for (int i = 0; i < N; ++i) {
-    z0(i) = p.q0[static_cast<std::size_t>(i)];
-    z0(N + i) = p.p0[static_cast<std::size_t>(i)];
-  }
-  MapStudy s = p.study;
-  s.step = [integrator](Eigen::VectorXd& z, double h) {
+  auto integrator = std::make_shared<Integrator>(mechanical_lagrangian(prob), rule);
+  return [integrator](Eigen::VectorXd& z, double h) {
     const Eigen::VectorXd start = z;
     try {
       verify::step_qp<N>(*integrator, z, h);
@@ -105,6 +100,20 @@ int run_problem(const MethodOptions& o, const Plan& p, const P& prob) {
                                        vec_text(pk), e.what()));
     }
   };
+}
+
+template <class P>
+int run_problem(const MethodOptions& o, const Plan& p, const P& prob, verify::Step step) {
+  constexpr int N = P::N;
+  const int S = p.stages;
+  MapReport rep;
+  Eigen::VectorXd z0(2 * N);
+  for (int i = 0; i < N; ++i) {
+    z0(i) = p.q0[static_cast<std::size_t>(i)];
+    z0(N + i) = p.p0[static_cast<std::size_t>(i)];
+  }
+  MapStudy s = p.study;
+  s.step = std::move(step);
   s.z0 = z0;
   s.field = [&prob](const std::vector<dd_real>& y) {
     Vec<dd_real, N> q;
@@ -164,9 +173,11 @@ int run_problem(const MethodOptions& o, const Plan& p, const P& prob) {
 
 template <int S>
 int run_stages(const MethodOptions& o, const Plan& p) {
-  if (p.problem->name == "pendulum") return run_problem<S>(o, p, Pendulum{});
-  if (p.problem->name == "henon-heiles") return run_problem<S>(o, p, HenonHeiles{});
-  return run_problem<S>(o, p, Kepler{});
+  if (p.problem->name == "pendulum")
+    return run_problem(o, p, Pendulum{}, galerkin_step<S>(Pendulum{}, p.rule));
+  if (p.problem->name == "henon-heiles")
+    return run_problem(o, p, HenonHeiles{}, galerkin_step<S>(HenonHeiles{}, p.rule));
+  return run_problem(o, p, Kepler{}, galerkin_step<S>(Kepler{}, p.rule));
 }
 
 }  // namespace

@@ -234,22 +234,50 @@ class GalerkinIntegrator {
     for (int nu = 1; nu <= S; ++nu) w.template segment<N>((nu - 1) * N) = (double(nu) / S) * p0;
     Vec<double, M> grad;
     Mat<double, M> hess;
+    // Φ's gradient and Hessian in X = (q0, W): Φ = Σ_i b_i L(B_i X) with B_i the linear map to
+    // (q, v) at node i, so they are Σ b_i B_iᵀ ∇L and Σ b_i B_iᵀ ∇²L B_i, with ∇L and ∇²L in the
+    // 2N variables (q, v) by nested AutoDiff (small, whatever S is).
     auto derivatives = [&](const Vec<double, U>& x) {
-      Vec<double, M> X;
-      X << q0, x;
-      using In = ad::Dual<M, double>;
-      using Out = ad::Dual2<M, double>;
-      // inner derivatives: the gradient; outer ones (whose own derivatives are the Hessian's
-      // columns): seeded with e_k and zero inner parts
-      Vec<Out, M> Y;
-      for (int k = 0; k < M; ++k) {
-        Y(k) = Out(In(X(k), M, k));
-        Y(k).derivatives().setZero();
-        Y(k).derivatives()(k) = In(1.0);
+      constexpr int K = 2 * N;
+      using In = ad::Dual<K, double>;
+      using Out = ad::Dual2<K, double>;
+      grad.setZero();
+      hess.setZero();
+      for (int i = 0; i < S; ++i) {
+        Eigen::Matrix<double, K, M> B = Eigen::Matrix<double, K, M>::Zero();
+        for (int k = 0; k < N; ++k) {
+          B(k, k) = 1;
+          for (int nu = 1; nu <= S; ++nu) {
+            B(k, nu * N + k) = h * ell_[i][nu];
+            B(N + k, nu * N + k) = dell_[i][nu];
+          }
+        }
+        Vec<double, K> z;
+        for (int k = 0; k < N; ++k) {
+          double qk = q0(k), vk = 0;
+          for (int nu = 1; nu <= S; ++nu) {
+            qk += h * ell_[i][nu] * x((nu - 1) * N + k);
+            vk += dell_[i][nu] * x((nu - 1) * N + k);
+          }
+          z(k) = qk;
+          z(N + k) = vk;
+        }
+        Vec<Out, K> Y;
+        for (int k = 0; k < K; ++k) {
+          Y(k) = Out(In(z(k), K, k));
+          Y(k).derivatives().setZero();
+          Y(k).derivatives()(k) = In(1.0);
+        }
+        const Vec<Out, N> qq = Y.template head<N>(), vv = Y.template tail<N>();
+        static_assert(ad::returns_scalar<decltype(L_(qq, vv)), Out>, VIBOOK_RETURNS_SCALAR_MESSAGE);
+        const Out l = L_(qq, vv);
+        const Vec<double, K> g = l.value().derivatives();
+        Mat<double, K> Hl;
+        for (int j = 0; j < K; ++j) Hl.col(j) = l.derivatives()(j).derivatives();
+        const double b = rule_.b[static_cast<std::size_t>(i)];
+        grad.noalias() += b * (B.transpose() * g);
+        hess.noalias() += b * (B.transpose() * Hl * B);
       }
-      const Out a = reduced_action<Out>(Y, h);
-      grad = a.value().derivatives();
-      for (int j = 0; j < M; ++j) hess.col(j) = a.derivatives()(j).derivatives();
     };
     auto fj = [&](const Vec<double, U>& x, Vec<double, U>& F, Mat<double, U>& J) {
       derivatives(x);
