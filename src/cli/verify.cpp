@@ -569,19 +569,13 @@ int run_verify(const VerifyOptions& o, const verify::TypedDiscreteLagrangian& dl
     std::vector<T> y0(2 * N);
     if (dl.has_hamiltonian()) {
       f = [&](const std::vector<T>& y) {
-        Vec<T, 2 * N> w;
-        for (int i = 0; i < 2 * N; ++i) w(i) = y[static_cast<std::size_t>(i)];
-        using D = ad::Dual<2 * N, T>;
-        Vec<D, 2 * N> W;
-        for (int i = 0; i < 2 * N; ++i) W(i) = D(w(i), 2 * N, i);
-        const Vec<D, N> q = W.template head<N>(), pp = W.template tail<N>();
-        const Vec<T, 2 * N> g = dl.hamiltonian<N, D>(q, pp).derivatives();
-        std::vector<T> r(2 * N);
+        Vec<T, N> q, pp;
         for (int i = 0; i < N; ++i) {
-          r[static_cast<std::size_t>(i)] = g(N + i);
-          r[static_cast<std::size_t>(N + i)] = -g(i);
+          q(i) = y[static_cast<std::size_t>(i)];
+          pp(i) = y[static_cast<std::size_t>(N + i)];
         }
-        return r;
+        const Vec<T, 2 * N> r = dl.hamilton_field<N, T>(q, pp);
+        return std::vector<T>(r.data(), r.data() + 2 * N);
       };
       for (int i = 0; i < N; ++i) {
         y0[static_cast<std::size_t>(i)] = T(p.q0[i]);

@@ -240,16 +240,8 @@ int run_problem(const CompositionOptions& o, const Plan& p, const P& prob) {
     auto wrap = [](auto integrator) {
       auto shared = std::make_shared<decltype(integrator)>(std::move(integrator));
       // A failed solve names the step size and the state it started from.
-      return verify::Step([shared](Eigen::VectorXd& z, double h) {
-        const Eigen::VectorXd z0 = z;
-        try {
-          verify::step_qp<N>(*shared, z, h);
-        } catch (const NumericalError& e) {
-          std::vector<double> q(z0.data(), z0.data() + N), pk(z0.data() + N, z0.data() + 2 * N);
-          throw NumericalError(fmt::format("a step of h = {:g} from q = {}, p = {}: {}", h,
-                                           vec_text(q), vec_text(pk), e.what()));
-        }
-      });
+      return naming_failures(
+          [shared](Eigen::VectorXd& z, double h) { verify::step_qp<N>(*shared, z, h); }, N);
     };
     const std::string& b = p.base->name;
     if (b == "sv")

@@ -21,9 +21,14 @@ const std::vector<TestProblem>& test_problems() {
       {"kepler",
        "H = |p|^2/2 - 1/|q| (eccentricity 0.5, period 2 pi)",
        {0.5, 0},
-       {0, std::sqrt(3.0)}},
-      {"pendulum", "H = p^2/2 - cos(q)", {1}, {0.5}},
-      {"henon-heiles", "H = |p|^2/2 + (x^2 + y^2)/2 + x^2 y - y^3/3", {0, 0.1}, {0.35, 0}}};
+       {0, std::sqrt(3.0)},
+       "p^2/2 - 1/(q^2)^(1/2)"},
+      {"pendulum", "H = p^2/2 - cos(q)", {1}, {0.5}, "p^2/2 - cos(q[1])"},
+      {"henon-heiles",
+       "H = |p|^2/2 + (x^2 + y^2)/2 + x^2 y - y^3/3",
+       {0, 0.1},
+       {0.35, 0},
+       "p^2/2 + (q[1]^2 + q[2]^2)/2 + q[1]^2*q[2] - q[2]^3/3"}};
   return p;
 }
 
@@ -33,6 +38,20 @@ const TestProblem& find_test_problem(const std::string& name) {
     if (q.name == want) return q;
   throw ArgumentError("--problem",
                       "unknown problem '" + want + "' (kepler, pendulum or henon-heiles)");
+}
+
+verify::Step naming_failures(verify::Step raw, int n) {
+  return [raw = std::move(raw), n](Eigen::VectorXd& z, double h) {
+    const Eigen::VectorXd start = z;
+    try {
+      raw(z, h);
+    } catch (const NumericalError& e) {
+      const std::vector<double> q(start.data(), start.data() + n),
+          p(start.data() + n, start.data() + 2 * n);
+      throw NumericalError(fmt::format("a step of h = {:g} from q = {}, p = {}: {}", h, vec_text(q),
+                                       vec_text(p), e.what()));
+    }
+  };
 }
 
 std::string vec_text(const std::vector<double>& v) {

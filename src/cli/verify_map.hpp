@@ -32,12 +32,17 @@ namespace vibook::cli {
 struct TestProblem {
   std::string name, hamiltonian;
   std::vector<double> q0, p0;
+  std::string expression;  ///< H in verify's expression language (the black-box route)
 };
 const std::vector<TestProblem>& test_problems();
 
 /// The test problem named by --problem (empty: kepler); ArgumentError naming --problem
 /// otherwise.
 const TestProblem& find_test_problem(const std::string& name);
+
+/// The step `raw` of an N-degree-of-freedom map, with every NumericalError it throws rewritten
+/// to name the step size and the state the step started from.
+verify::Step naming_failures(verify::Step raw, int n);
 
 /// "(a, b, …)" with 6 significant digits.
 std::string vec_text(const std::vector<double>& v);

@@ -89,17 +89,8 @@ verify::Step galerkin_step(const P& prob, const Quadrature& rule) {
   constexpr int N = P::N;
   using Integrator = GalerkinIntegrator<N, S, decltype(mechanical_lagrangian(prob))>;
   auto integrator = std::make_shared<Integrator>(mechanical_lagrangian(prob), rule);
-  return [integrator](Eigen::VectorXd& z, double h) {
-    const Eigen::VectorXd start = z;
-    try {
-      verify::step_qp<N>(*integrator, z, h);
-    } catch (const NumericalError& e) {
-      std::vector<double> q(start.data(), start.data() + N),
-          pk(start.data() + N, start.data() + 2 * N);
-      throw NumericalError(fmt::format("a step of h = {:g} from q = {}, p = {}: {}", h, vec_text(q),
-                                       vec_text(pk), e.what()));
-    }
-  };
+  return naming_failures(
+      [integrator](Eigen::VectorXd& z, double h) { verify::step_qp<N>(*integrator, z, h); }, N);
 }
 
 template <class P>

@@ -270,27 +270,6 @@ class Command final : public BlackBox {
 
 // --- the system the stepper is meant for ------------------------------------------------------
 
-struct NamedProblem {
-  std::string name, hamiltonian, about;
-  std::vector<double> q0, p0;
-};
-
-const std::vector<NamedProblem>& named_problems() {
-  static const std::vector<NamedProblem> p = {
-      {"kepler",
-       "p^2/2 - 1/(q^2)^(1/2)",
-       "eccentricity 0.5, period 2 pi",
-       {0.5, 0},
-       {0, std::sqrt(3.0)}},
-      {"pendulum", "p^2/2 - cos(q[1])", "", {1}, {0.5}},
-      {"henon-heiles",
-       "p^2/2 + (q[1]^2 + q[2]^2)/2 + q[1]^2*q[2] - q[2]^3/3",
-       "",
-       {0, 0.1},
-       {0.35, 0}}};
-  return p;
-}
-
 struct Plan {
   std::unique_ptr<verify::TypedDiscreteLagrangian> system;
   std::string hamiltonian, system_from;
@@ -310,22 +289,17 @@ Plan check(const StepperOptions& o) {
     throw ArgumentError("--stepper-cmd", "is empty");
   if (!o.problem.empty() && !o.hamiltonian.empty())
     throw ArgumentError("--hamiltonian", "give the system once: --problem or --hamiltonian");
-  const NamedProblem* named = nullptr;
+  const TestProblem* named = nullptr;
   std::vector<double> dq0, dp0;
   if (!o.hamiltonian.empty() || (!o.potential.empty() && o.problem.empty())) {
     p.hamiltonian = o.hamiltonian.empty() ? "p^2/2 + V(q)" : o.hamiltonian;
     p.system_from = o.hamiltonian.empty() ? "--potential" : "--hamiltonian";
   } else {
-    const std::string name = o.problem.empty() ? "kepler" : o.problem;
-    for (const auto& q : named_problems())
-      if (q.name == name) named = &q;
-    if (!named)
-      throw ArgumentError("--problem",
-                          "unknown problem '" + name + "' (kepler, pendulum or henon-heiles)");
+    named = &find_test_problem(o.problem);
     if (!o.potential.empty() || !o.dim.empty())
       throw ArgumentError(o.dim.empty() ? "--potential" : "--dim",
                           "does not apply to --problem (use --hamiltonian for another system)");
-    p.hamiltonian = named->hamiltonian;
+    p.hamiltonian = named->expression;
     p.system_from = "--problem " + named->name;
     dq0 = named->q0;
     dp0 = named->p0;

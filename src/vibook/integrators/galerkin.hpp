@@ -179,55 +179,13 @@ class GalerkinIntegrator {
 
   const Quadrature& rule() const { return rule_; }
 
-  /// The quadrature action A(Z) = h Σ b_i L(q(c_i h), q̇(c_i h)) of the control points
-  /// Z = (Q^0, …, Q^S), on any scalar.
-  template <class T>
-  T action(const Vec<T, M>& Z, double h) const {
-    T sum = constant<T>(0.0);
-    for (int i = 0; i < S; ++i) {
-      Vec<T, N> q, v;
-      for (int k = 0; k < N; ++k) {
-        q(k) = constant<T>(0.0);
-        v(k) = constant<T>(0.0);
-      }
-      for (int nu = 0; nu <= S; ++nu)
-        for (int k = 0; k < N; ++k) {
-          q(k) = q(k) + constant<T>(ell_[i][nu]) * Z(nu * N + k);
-          v(k) = v(k) + constant<T>(dell_[i][nu] / h) * Z(nu * N + k);
-        }
-      static_assert(ad::returns_scalar<decltype(L_(q, v)), T>, VIBOOK_RETURNS_SCALAR_MESSAGE);
-      sum = sum + constant<T>(rule_.b[static_cast<std::size_t>(i)]) * L_(q, v);
-    }
-    return constant<T>(h) * sum;
-  }
-
-  /// The action over h in increment form, Φ(q0, W) = A/h = Σ_i b_i L(q0 + h Σ_ν ℓ_ν(c_i) W_ν,
-  /// Σ_ν ℓ'_ν(c_i) W_ν), with the control points Q^ν = q0 + h W_ν (W_0 = 0; Σ_ν ℓ'_ν = 0), of
-  /// X = (q0, W_1, …, W_S). The velocities are then sums of W, not differences of positions
-  /// over h, so that round-off does not grow like u/h as the step shrinks.
-  template <class T>
-  T reduced_action(const Vec<T, M>& X, double h) const {
-    T sum = constant<T>(0.0);
-    for (int i = 0; i < S; ++i) {
-      Vec<T, N> q, v;
-      for (int k = 0; k < N; ++k) {
-        T qk = X(k), vk = constant<T>(0.0);
-        for (int nu = 1; nu <= S; ++nu) {
-          qk = qk + constant<T>(h * ell_[i][nu]) * X(nu * N + k);
-          vk = vk + constant<T>(dell_[i][nu]) * X(nu * N + k);
-        }
-        q(k) = qk;
-        v(k) = vk;
-      }
-      static_assert(ad::returns_scalar<decltype(L_(q, v)), T>, VIBOOK_RETURNS_SCALAR_MESSAGE);
-      sum = sum + constant<T>(rule_.b[static_cast<std::size_t>(i)]) * L_(q, v);
-    }
-    return sum;
-  }
-
-  /// One step. With Φ as above, ∂A/∂Q^ν = ∂Φ/∂W_ν (ν ≥ 1) and ∂A/∂Q^0 = h ∂Φ/∂q0 − Σ_ν ∂Φ/∂W_ν,
-  /// so the equations are ∂Φ/∂W_ν = 0 (ν = 1 … S−1) and p0 + h ∂Φ/∂q0 − ∂Φ/∂W_S = 0 for
-  /// W = (W_1 … W_S); then q1 = q0 + h W_S and p1 = ∂Φ/∂W_S = p0 + h ∂Φ/∂q0.
+  /// One step. The control points are carried as increments, Q^ν = q0 + h W_ν (W_0 = 0), and
+  /// the action over h as Φ(q0, W) = A/h = Σ_i b_i L(q0 + h Σ_ν ℓ_ν(c_i) W_ν,
+  /// Σ_ν ℓ'_ν(c_i) W_ν): since Σ_ν ℓ'_ν = 0 the velocities are sums of W, not differences of
+  /// positions over h, so round-off does not grow like u/h as the step shrinks. Then
+  /// ∂A/∂Q^ν = ∂Φ/∂W_ν (ν ≥ 1) and ∂A/∂Q^0 = h ∂Φ/∂q0 − Σ_ν ∂Φ/∂W_ν, so the equations are
+  /// ∂Φ/∂W_ν = 0 (ν = 1 … S−1) and p0 + h ∂Φ/∂q0 − ∂Φ/∂W_S = 0 for W = (W_1 … W_S); then
+  /// q1 = q0 + h W_S and p1 = ∂Φ/∂W_S = p0 + h ∂Φ/∂q0.
   SolveReport step(Vec<double, N>& q, Vec<double, N>& p, double h) {
     const Vec<double, N> q0 = q, p0 = p;
     Vec<double, U> w;  // guess W_ν = d_ν p0 (the straight line with velocity p0: unit mass)
