@@ -148,10 +148,13 @@ vibook_verify_case(verify-stepper-odeint.txt 0 --stepper-lib ${STEPPER_LIB}
                    --stepper-arg mclachlan4/kepler --problem kepler --expected-order 4)
 vibook_verify_case(verify-stepper-cached.txt 5 --stepper-lib ${STEPPER_LIB}
                    --stepper-arg velocity_verlet_cached/kepler --expected-order 2 --symmetric)
+vibook_verify_case(verify-stepper-rk78.txt 5 --stepper-lib ${STEPPER_LIB}
+                   --stepper-arg rk78/kepler --expected-order 8 --order-tol 0.5)
 vibook_verify_case(verify-stepper-python.txt 5 --stepper-cmd
                    "python3 ${SOURCE_DIR}/examples/black_box/stepper.py ruth3_swapped pendulum"
                    --problem pendulum --expected-order 3 --steps 4096)
-foreach(f verify-stepper-odeint.txt verify-stepper-cached.txt verify-stepper-python.txt)
+foreach(f verify-stepper-odeint.txt verify-stepper-cached.txt verify-stepper-rk78.txt
+          verify-stepper-python.txt)
   # the build tree's and the source tree's paths are not the reader's
   file(READ ${GEN}/${f} text)
   string(REPLACE "${STEPPER_LIB}" "vibook_odeint_steppers.so" text "${text}")
