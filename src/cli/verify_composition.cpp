@@ -1,90 +1,38 @@
-// `vibook verify --composition BASE --coefficients NAME|LIST` (integrators/composition.hpp):
-// the order conditions of the composition at 120 digits, weight by weight; the measured order
-// on a nonlinear problem against the continuous equations integrated in double-double (never
-// against the method itself); symplecticity and reversibility of the one-step map; the energy's
-// long-time behaviour. Every part is printed, even after one fails; the verdict names the parts
-// that failed.
+// `vibook verify --composition BASE --coefficients NAME|LIST`: the arguments checked before any
+// work, then the measurement of vibook/verify/composition_study.hpp (order conditions at 120
+// digits, measured order, symplecticity, reversibility, energy) printed. Every part is printed,
+// even after one fails; the verdict names the parts that failed.
 #include "verify_composition.hpp"
 #include "verify_map.hpp"
 
-#include <algorithm>
-#include <cmath>
-#include <iostream>
-#include <limits>
-#include <memory>
-#include <optional>
-#include <sstream>
 #include <string>
 #include <vector>
-
-#include <fmt/format.h>
-#include <fmt/ranges.h>
-
-#include <nlohmann/json.hpp>
 
 #include "args.hpp"
 #include "cli.hpp"
 #include "vibook/core/output_file.hpp"
 #include "vibook/core/precision.hpp"
 #include "vibook/integrators/composition.hpp"
-#include "vibook/integrators/kernels.hpp"
-#include "vibook/kepler/kepler.hpp"
-#include "vibook/problems/problems.hpp"
-#include "vibook/verify/reference.hpp"
-#include "vibook/verify/verify.hpp"
+#include "vibook/verify/composition_study.hpp"
 
 namespace vibook::cli {
 
 namespace {
 
-using nlohmann::json;
 namespace comp = vibook::composition;
-
-// The order conditions are evaluated at this many decimal digits.
-constexpr int kDigits = 120;
-// "Satisfied" for the verdict: coefficients rounded to double already leave residuals of
-// 1e-15–1e-13 (Yoshida's 15-digit values 5e-14); a coefficient off in its eleventh digit leaves
-// 1e-11 or more.
-constexpr double kConditionTol = 1e-12;
-// "Visible": a residual above this shows in an order study in double; the expected order of a
-// typed list is the order the conditions give at this tolerance.
-constexpr double kVisibleTol = 1e-8;
-
-struct Base {
-  std::string name;
-  bool symmetric;
-  std::string description;
-};
-
-const std::vector<Base>& bases() {
-  static const std::vector<Base> b = {
-      {"sv", true, "Störmer-Verlet (velocity form), symmetric, order 2"},
-      {"midpoint", true, "the implicit midpoint rule, symmetric, order 2"},
-      {"se", false,
-       "symplectic Euler q1 = q0 + h p0, p1 = p0 - h grad U(q1) (drift, then kick), order 1; its "
-       "adjoint kicks, then drifts"},
-      {"se-adjoint", false,
-       "adjoint symplectic Euler p1 = p0 - h grad U(q0), q1 = q0 + h p1 (kick, then drift), "
-       "order 1; its adjoint is se"}};
-  return b;
-}
 
 // Everything checked before any work.
 struct Plan {
-  const Base* base = nullptr;
+  verify::CompositionSpec spec;
   const TestProblem* problem = nullptr;
-  const comp::CatalogueEntry* entry = nullptr;
-  std::vector<comp::Stage<mpfr_real>> typed;  // a typed list
   std::vector<double> q0, p0;
-  std::optional<double> expected;
   MapStudy study;  // the measurement settings (--t-end, --h-list, --h, --steps, …)
 };
 
 Plan check(const CompositionOptions& o) {
   Plan p;
-  for (const auto& b : bases())
-    if (b.name == o.base) p.base = &b;
-  if (!p.base)
+  p.spec.base = verify::find_composition_base(o.base);
+  if (!p.spec.base)
     throw ArgumentError("--composition",
                         "unknown base method '" + o.base + "' (sv, midpoint, se or se-adjoint)");
   p.problem = &find_test_problem(o.problem);
@@ -92,212 +40,38 @@ Plan check(const CompositionOptions& o) {
     throw ArgumentError("--coefficients",
                         "is required with --composition: a catalogue name (yoshida4, suzuki4, "
                         "yoshida6, yoshida8, mclachlan8, kahanli6, kahanli8, ruth3) or a list");
-  p.entry = comp::find_entry(o.coefficients);
-  if (!p.entry) {
+  p.spec.coefficients = o.coefficients;
+  p.spec.entry = comp::find_entry(o.coefficients);
+  if (!p.spec.entry) {
     const bool looks_like_list = o.coefficients.find_first_of("0123456789") != std::string::npos;
     if (!looks_like_list)
       throw ArgumentError("--coefficients", "no catalogue entry '" + o.coefficients +
                                                 "' (yoshida4, suzuki4, yoshida6, yoshida8, "
                                                 "mclachlan8, kahanli6, kahanli8, ruth3)");
-    const MpfrDigits digits(kDigits);
+    const MpfrDigits digits(verify::kCompositionDigits);
     for (const auto& item : split_list("--coefficients", o.coefficients))
-      p.typed.push_back(comp::parse_stage<mpfr_real>("--coefficients", item));
-    if (p.typed.empty() || p.typed.size() > 64)
+      p.spec.typed.push_back(comp::parse_stage<mpfr_real>("--coefficients", item));
+    if (p.spec.typed.empty() || p.spec.typed.size() > 64)
       throw ArgumentError("--coefficients", "needs 1 to 64 stages");
   }
   check_initial_state(o, *p.problem, p.q0, p.p0, p.study);
   if (o.expected_given) {
     const double e = parse_number("--expected-order", o.expected);
     if (!(e > 0 && e <= 10)) throw ArgumentError("--expected-order", "must lie in (0, 10]");
-    p.expected = e;
+    p.spec.expected = e;
   }
   check_study_options(o, p.study);
   if (o.json_given) check_output_path(o.json_out, "--json-out", true);
   return p;
 }
 
-template <class P>
-int run_problem(const CompositionOptions& o, const Plan& p, const P& prob) {
-  constexpr int N = P::N;
-  MapReport rep;
-  auto line = [&](const std::string& label, const std::string& text) { rep.line(label, text); };
-  json& js = rep.js;
-  std::vector<std::string>& failed = rep.failed;
-  std::vector<std::string>& required = rep.required;
-
-  // --- the stages and their order conditions, at 120 digits -------------------------------
-  std::vector<double> c;
-  std::vector<bool> adj;
-  comp::OrderConditions oc, visible;
-  comp::Refinement rf;
-  bool symmetric = false;
-  {
-    const MpfrDigits digits(kDigits);
-    const comp::Stages<mpfr_real> st =
-        p.entry ? comp::catalogue_stages<mpfr_real>(p.entry->name, kDigits, &rf) : p.typed;
-    for (const auto& s : st) {
-      c.push_back(static_cast<double>(s.c));
-      adj.push_back(s.adjoint);
-    }
-    const int W = std::min(
-        10, std::max(4, int(std::ceil(p.expected.value_or(p.entry ? p.entry->order : 8))) + 1));
-    oc = comp::order_conditions(st, p.base->symmetric, W, kConditionTol);
-    visible = comp::order_conditions(st, p.base->symmetric, W, kVisibleTol);
-    symmetric = comp::is_symmetric(st, p.base->symmetric);
-  }
-  const bool documented_base =
-      p.entry && (p.entry->base == "symmetric" ? p.base->symmetric : p.entry->base == p.base->name);
-  double expected;
-  std::string expected_from;
-  if (p.expected) {
-    expected = *p.expected;
-    expected_from = "--expected-order";
-  } else if (documented_base) {
-    expected = p.entry->order;
-    expected_from = "documented";
-  } else {
-    expected = visible.order;
-    expected_from = fmt::format("the order conditions at tolerance {:.0e}", kVisibleTol);
-  }
-
-  line("composition",
-       fmt::format("{} stages of {}{}", c.size(), p.base->name,
-                   symmetric ? " (symmetric: its own adjoint)" : " (not symmetric)"));
-  line("base method", p.base->description);
-  if (p.entry) {
-    line("coefficients", p.entry->name + ": " + p.entry->source);
-    line("  obtained by",
-         p.entry->derivation + (rf.iterations > 0
-                                    ? fmt::format(" ({} Newton iterations at {} digits; largest "
-                                                  "change from the published digits {:.1e})",
-                                                  rf.iterations, kDigits, rf.max_change)
-                                    : std::string()));
-    if (!rf.published_residual.empty()) {
-      const auto worst =
-          std::max_element(rf.published_residual.begin(), rf.published_residual.end());
-      line("  published digits",
-           fmt::format("satisfy the order conditions to {:.1e} (largest at weight {}); the "
-                       "solution of the conditions is used",
-                       *worst, worst - rf.published_residual.begin() + 1));
-    }
-    if (!documented_base)
-      line("  note", fmt::format("documented for {} (order {}); on {} the expected order comes "
-                                 "from {}",
-                                 p.entry->base == "symmetric" ? "a symmetric base" : p.entry->base,
-                                 p.entry->order, p.base->name,
-                                 p.expected ? "--expected-order" : "the order conditions"));
-  } else {
-    line("coefficients", fmt::format("as typed: {}", o.coefficients));
-  }
-  {
-    std::vector<std::string> parts;
-    for (std::size_t k = 0; k < oc.residual.size(); ++k)
-      if (!p.base->symmetric || k % 2 == 0 || oc.residual[k] > 0)
-        parts.push_back(fmt::format("{}: {:.1e}", k + 1, oc.residual[k]));
-    line("order conditions",
-         fmt::format("residual by weight ({} base, {} digits) {}",
-                     p.base->symmetric ? "symmetric" : "general", kDigits, fmt::join(parts, ", ")));
-  }
-  const bool conditions_ok = oc.order >= int(std::floor(expected + 1e-9));
-  std::string cond_text = fmt::format(
-      "order {} by the conditions (each weight's residual <= {:.0e}); expected {:g} ({}): {}",
-      oc.order, kConditionTol, expected, expected_from, conditions_ok ? "yes" : "NO");
-  if (!conditions_ok && oc.order < oc.max_weight)
-    cond_text += fmt::format(" -- weight {} fails by {:.2e} at the word {}", oc.order + 1,
-                             oc.residual[static_cast<std::size_t>(oc.order)],
-                             oc.worst_word[static_cast<std::size_t>(oc.order)]);
-  if (!conditions_ok && visible.order >= int(std::floor(expected + 1e-9)))
-    cond_text += " (a residual below 1e-8: inexact coefficients rather than a lower order)";
-  line("", cond_text);
-  required.push_back("order conditions");
-  if (!conditions_ok) failed.push_back("order conditions");
-  js["composition"] = {{"base", p.base->name},
-                       {"coefficients", o.coefficients},
-                       {"stages", c},
-                       {"adjoint", adj},
-                       {"symmetric", symmetric},
-                       {"source", p.entry ? p.entry->source : "typed"},
-                       {"derivation", p.entry ? p.entry->derivation : "typed"}};
-  if (rf.iterations > 0)
-    js["composition"]["newton"] = {{"iterations", rf.iterations},
-                                   {"max_change_from_published", rf.max_change},
-                                   {"published_residual_by_weight", rf.published_residual},
-                                   {"final_residual", rf.final_residual}};
-  js["order_conditions"] = {{"digits", kDigits},
-                            {"symmetric_base", p.base->symmetric},
-                            {"residual_by_weight", oc.residual},
-                            {"worst_word", oc.worst_word},
-                            {"tolerance", kConditionTol},
-                            {"order", oc.order},
-                            {"visible_tolerance", kVisibleTol},
-                            {"visible_order", visible.order},
-                            {"expected", expected},
-                            {"expected_from", expected_from},
-                            {"passed", conditions_ok}};
-
-  // --- the integrator ----------------------------------------------------------------------
-  auto make_step = [&]() -> verify::Step {
-    auto wrap = [](auto integrator) {
-      auto shared = std::make_shared<decltype(integrator)>(std::move(integrator));
-      // A failed solve names the step size and the state it started from.
-      return naming_failures(
-          [shared](Eigen::VectorXd& z, double h) { verify::step_qp<N>(*shared, z, h); }, N);
-    };
-    const std::string& b = p.base->name;
-    if (b == "sv")
-      return wrap(comp::Composed<StormerVerlet<P>, StormerVerlet<P>>(
-          StormerVerlet<P>(prob), StormerVerlet<P>(prob), c, adj));
-    if (b == "midpoint")
-      return wrap(comp::Composed<ImplicitMidpoint<P>, ImplicitMidpoint<P>>(
-          ImplicitMidpoint<P>(prob), ImplicitMidpoint<P>(prob), c, adj));
-    if (b == "se")
-      return wrap(comp::Composed<SymplecticEuler<P>, SymplecticEulerAdjoint<P>>(
-          SymplecticEuler<P>(prob), SymplecticEulerAdjoint<P>(prob), c, adj));
-    return wrap(comp::Composed<SymplecticEulerAdjoint<P>, SymplecticEuler<P>>(
-        SymplecticEulerAdjoint<P>(prob), SymplecticEuler<P>(prob), c, adj));
-  };
-  const verify::Step step = make_step();
-  Eigen::VectorXd z0(2 * N);
-  for (int i = 0; i < N; ++i) {
-    z0(i) = p.q0[static_cast<std::size_t>(i)];
-    z0(N + i) = p.p0[static_cast<std::size_t>(i)];
-  }
-  line("problem", fmt::format("{}: {}, q0 = {}, p0 = {}", p.problem->name, p.problem->hamiltonian,
-                              vec_text(p.q0), vec_text(p.p0)));
-
-  MapStudy study = p.study;
-  study.step = step;
-  study.z0 = z0;
-  study.field = [&](const std::vector<dd_real>& y) {
-    using T = dd_real;
-    Vec<T, N> q;
-    for (int i = 0; i < N; ++i) q(i) = y[static_cast<std::size_t>(i)];
-    const Vec<T, N> g = prob.template gradient<T>(q);
-    std::vector<T> r(2 * N);
-    for (int i = 0; i < N; ++i) {
-      r[static_cast<std::size_t>(i)] = y[static_cast<std::size_t>(N + i)];
-      r[static_cast<std::size_t>(N + i)] = -g(i);
-    }
-    return r;
-  };
-  study.H = [&](const Eigen::VectorXd& z) {
-    return energy(prob, Vec<double, N>(z.head<N>()), Vec<double, N>(z.tail<N>()));
-  };
-  study.expected = expected;
-  study.substeps = double(c.size());
-  study.require_reversible = symmetric;
-  study.reversible_note = " (reported only: the composition is not symmetric)";
-  measure_map(study, rep);
-  return rep.finish(o.json_given, o.json_out);
-}
-
 }  // namespace
 
 int run_composition(const CompositionOptions& o) {
   const Plan p = check(o);
-  if (p.problem->name == "pendulum") return run_problem(o, p, Pendulum{});
-  if (p.problem->name == "henon-heiles") return run_problem(o, p, HenonHeiles{});
-  return run_problem(o, p, Kepler{});
+  MapReport rep;
+  verify::measure_composition(p.spec, *p.problem, p.q0, p.p0, p.study, rep);
+  return rep.finish(o.json_given, o.json_out);
 }
 
 }  // namespace vibook::cli

@@ -1,11 +1,6 @@
-// The measurements `vibook verify` makes on a one-step map z = (q, p) ↦ Φ_h(z) of Hamilton's
-// equations, whatever produced the map: a composition of a catalogue method
-// (verify_composition.cpp) or another program's stepper behind the C ABI or the line protocol
-// (verify_stepper.cpp). The reference is the continuous system integrated in double-double
-// (never the method itself); the order is fitted two-sided in a window fixed beforehand;
-// symplecticity and reversibility come from the map's Jacobian and its ρ-conjugate; the energy
-// from a long run. Every part is printed even after one fails; the verdict names the parts that
-// failed.
+// The command's side of the measurements of a one-step map (vibook/verify/map_study.hpp): the
+// options common to the composition, Galerkin and black-box routes, checked before any work,
+// and the report printed with its exit status.
 #pragma once
 
 #include <cmath>
@@ -22,67 +17,29 @@
 #include "args.hpp"
 #include "cli.hpp"
 #include "vibook/core/precision.hpp"
+#include "vibook/verify/map_study.hpp"
 #include "vibook/verify/reference.hpp"
 #include "vibook/verify/verify.hpp"
 
 namespace vibook::cli {
 
-/// The nonlinear test problems of the composition, Galerkin and black-box routes: the name,
-/// the Hamiltonian as printed, and the initial state (the Kepler orbit has eccentricity 0.5).
-struct TestProblem {
-  std::string name, hamiltonian;
-  std::vector<double> q0, p0;
-  std::string expression;  ///< H in verify's expression language (the black-box route)
-};
-const std::vector<TestProblem>& test_problems();
+using verify::MapStudy;
+using verify::measure_map;
+using verify::naming_failures;
+using verify::run_map;
+using verify::test_problems;
+using verify::TestProblem;
+using verify::vec_text;
 
 /// The test problem named by --problem (empty: kepler); ArgumentError naming --problem
 /// otherwise.
 const TestProblem& find_test_problem(const std::string& name);
 
-/// The step `raw` of an N-degree-of-freedom map, with every NumericalError it throws rewritten
-/// to name the step size and the state the step started from.
-verify::Step naming_failures(verify::Step raw, int n);
-
-/// "(a, b, …)" with 6 significant digits.
-std::string vec_text(const std::vector<double>& v);
-
-/// The report being written: its text lines, its JSON, the parts required by the verdict and
-/// those that failed, and the first numerical failure (for the one line on stderr).
-struct MapReport {
-  std::ostringstream out;
-  nlohmann::json js;
-  std::vector<std::string> failed, required;
-  int rc = kOk;
-  std::string first_error;
-
-  /// One line: the label in a column of 21 characters, then the text.
-  void line(const std::string& label, const std::string& text);
-  /// A part stopped by a numerical failure: printed, failed, status 3.
-  void numerical(const std::string& part, const std::exception& e);
+/// The report of a command: the measurement, and the exit status it ends with.
+struct MapReport : verify::MapMeasurement {
   /// The verdict line; the report to stdout, the one-line summary to stderr, the JSON to
   /// `json_out` when given. Returns the exit status (0, 3 or 5; 4 from a failed write).
   int finish(bool json_given, const std::string& json_out);
-};
-
-/// What is measured, and how.
-struct MapStudy {
-  verify::Step step;  ///< one step of the map under test
-  /// Optional: n steps of size h at once (a line-protocol stepper answers one request for a
-  /// whole run); by default `step` n times.
-  std::function<void(Eigen::VectorXd& z, double h, long long n)> propagate;
-  Eigen::VectorXd z0;
-  verify::Field<dd_real> field;  ///< Hamilton's equations, for the reference
-  std::string equations = "Hamilton's equations";
-  verify::Observable H;  ///< the energy
-  double t_end = 5, h = 0.05, order_tol = 0.2, expected = 2;
-  long long steps = 100000;
-  std::vector<double> hs;  ///< --h-list (empty: the walk of step counts)
-  std::optional<double> floor;
-  double substeps = 1;  ///< evaluations of the base method in one step (the walk's cost)
-  double max_substeps = 1e6;
-  bool require_reversible = false;
-  std::string reversible_note;  ///< appended to the line when reversibility is not required
 };
 
 /// The measurement options common to the routes, checked before any work (ArgumentError naming
@@ -137,12 +94,5 @@ void check_initial_state(const Options& o, const TestProblem& problem, std::vect
     if (!(s.t_end > 0) || s.t_end > 1e4) throw ArgumentError("--t-end", "must lie in (0, 1e4]");
   }
 }
-
-/// The reference, order, symplecticity, reversibility and energy parts, appended to `r`.
-void measure_map(const MapStudy& s, MapReport& r);
-
-/// Integrate over [0, T] with steps of h, the last shortened to end at T (verify::integrate),
-/// through `propagate` when the study has one.
-Eigen::VectorXd run_map(const MapStudy& s, const Eigen::VectorXd& z0, double h, double T);
 
 }  // namespace vibook::cli

@@ -1,0 +1,54 @@
+/// \file composition_study.hpp
+/// \brief A composition of a base method (integrators/composition.hpp) measured on a test
+/// problem of map_study.hpp: its order conditions at 120 digits, weight by weight (a
+/// coefficient off in its eleventh digit shows), then the one-step map's measured order,
+/// symplecticity, reversibility and energy. `vibook verify --composition` prints the
+/// measurement; the field audit (field_audit.cpp) records it in the ledger.
+///
+/// Chapter: \ref chapter-verify (section "Compositions").
+#pragma once
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "vibook/core/precision.hpp"
+#include "vibook/integrators/composition.hpp"
+#include "vibook/verify/map_study.hpp"
+
+namespace vibook::verify {
+
+/// The order conditions are evaluated at this many decimal digits.
+constexpr int kCompositionDigits = 120;
+
+/// A base method a composition can be built on.
+struct CompositionBase {
+  std::string name;
+  bool symmetric;
+  std::string description;
+};
+/// sv, midpoint, se, se-adjoint.
+const std::vector<CompositionBase>& composition_bases();
+/// The base of that name, or nullptr.
+const CompositionBase* find_composition_base(const std::string& name);
+
+/// What is composed: a base and either a catalogue entry or stages typed exactly (parsed at
+/// kCompositionDigits digits).
+struct CompositionSpec {
+  const CompositionBase* base = nullptr;
+  const composition::CatalogueEntry* entry = nullptr;
+  composition::Stages<mpfr_real> typed;  ///< used when `entry` is null
+  std::string coefficients;              ///< as given: the catalogue name or the typed list
+  /// The order the composition is held to; without it, the documented order (a catalogue entry
+  /// on its documented base) or the order its conditions give at 1e-8.
+  std::optional<double> expected;
+  std::string expected_from = "--expected-order";  ///< where `expected` came from
+};
+
+/// Measure the composition on `problem` from (q0, p0) with the settings of `study` (its step,
+/// state, field, energy, expected order and reversibility are set here); appended to `rep`.
+void measure_composition(const CompositionSpec& spec, const TestProblem& problem,
+                         const std::vector<double>& q0, const std::vector<double>& p0,
+                         const MapStudy& study, MapMeasurement& rep);
+
+}  // namespace vibook::verify

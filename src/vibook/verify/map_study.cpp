@@ -1,0 +1,328 @@
+// The measurements of a one-step map of Hamilton's equations (map_study.hpp), shared by
+// `vibook verify --composition`, `--method`, the black-box steppers and the field audit.
+#include "vibook/verify/map_study.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include <fmt/format.h>
+#include <fmt/ranges.h>
+
+#include "vibook/core/errors.hpp"
+
+namespace vibook::verify {
+
+using nlohmann::json;
+
+const std::vector<TestProblem>& test_problems() {
+  static const std::vector<TestProblem> p = {
+      {"kepler",
+       "H = |p|^2/2 - 1/|q| (eccentricity 0.5, period 2 pi)",
+       {0.5, 0},
+       {0, std::sqrt(3.0)},
+       "p^2/2 - 1/(q^2)^(1/2)"},
+      {"pendulum", "H = p^2/2 - cos(q)", {1}, {0.5}, "p^2/2 - cos(q[1])"},
+      {"henon-heiles",
+       "H = |p|^2/2 + (x^2 + y^2)/2 + x^2 y - y^3/3",
+       {0, 0.1},
+       {0.35, 0},
+       "p^2/2 + (q[1]^2 + q[2]^2)/2 + q[1]^2*q[2] - q[2]^3/3"}};
+  return p;
+}
+
+const TestProblem* find_problem(const std::string& name) {
+  const std::string want = name.empty() ? "kepler" : name;
+  for (const auto& q : test_problems())
+    if (q.name == want) return &q;
+  return nullptr;
+}
+
+Step naming_failures(Step raw, int n) {
+  return [raw = std::move(raw), n](Eigen::VectorXd& z, double h) {
+    const Eigen::VectorXd start = z;
+    try {
+      raw(z, h);
+    } catch (const NumericalError& e) {
+      const std::vector<double> q(start.data(), start.data() + n),
+          p(start.data() + n, start.data() + 2 * n);
+      throw NumericalError(fmt::format("a step of h = {:g} from q = {}, p = {}: {}", h, vec_text(q),
+                                       vec_text(p), e.what()));
+    }
+  };
+}
+
+std::string vec_text(const std::vector<double>& v) {
+  std::vector<std::string> s;
+  for (double x : v) s.push_back(fmt::format("{:.6g}", x));
+  return "(" + fmt::format("{}", fmt::join(s, ", ")) + ")";
+}
+
+void MapMeasurement::line(const std::string& label, const std::string& text) {
+  out << fmt::format("{:<21}{}\n", label, text);
+}
+
+void MapMeasurement::numerical(const std::string& part, const std::exception& e) {
+  line(part, std::string("FAILED (numerical): ") + e.what());
+  failed.push_back(part);
+  numerical_failure = true;
+  if (first_error.empty()) first_error = part + ": " + e.what();
+}
+
+Eigen::VectorXd run_map(const MapStudy& s, const Eigen::VectorXd& z0, double h, double T) {
+  if (!s.propagate) return integrate(s.step, z0, h, T);
+  if (!(h > 0) || !(T >= 0) || !std::isfinite(h) || !std::isfinite(T))
+    throw std::invalid_argument("run_map: need h > 0 and T >= 0, both finite");
+  // The same steps as integrate: n − 1 of h, then the last one shortened to end at T.
+  const long long n = static_cast<long long>(std::ceil(T / h - 1e-9));
+  Eigen::VectorXd z = z0;
+  if (n >= 2) s.propagate(z, h, n - 1);
+  if (n >= 1) s.propagate(z, T - h * double(n - 1), 1);
+  return z;
+}
+
+namespace {
+
+// Without --h-list the order study walks the step counts n = ⌈T·2^(k/4)⌉, k = 0, 1, … (h = T/n,
+// so h ≤ 1 and every run ends exactly at T). The fit takes the points whose error lies in
+// the asymptotic window [1e-12, 1e-6]·max(1, |z(T)|), fixed beforehand whatever the method:
+// above it, compositions with large substeps (Yoshida's eighth order) are still far from their
+// asymptotic range; below it, round-off takes over. The walk stops below the window or when a
+// run would take more than 1e6 substeps; a low-order method that never
+// reaches the window is fitted on its 6 smallest step sizes. fit_order_plateau's search for the
+// round-off plateau applies in both cases.
+constexpr double kWindowLow = 1e-12;
+constexpr double kWindow = 1e-6;
+
+}  // namespace
+
+void measure_map(const MapStudy& s, MapMeasurement& rep) {
+  const Step& step = s.step;
+  const Eigen::VectorXd& z0 = s.z0;
+  // --- the reference: Hamilton's equations in double-double by GBS extrapolation -----------
+  Eigen::VectorXd zref;
+  double ref_error = NAN;
+  try {
+    using T = dd_real;
+    std::vector<T> y0(static_cast<std::size_t>(z0.size()));
+    for (Eigen::Index i = 0; i < z0.size(); ++i) y0[static_cast<std::size_t>(i)] = T(z0(i));
+    const auto r = reference_solution<T>(s.field, y0, s.t_end);
+    zref.resize(z0.size());
+    for (Eigen::Index i = 0; i < z0.size(); ++i)
+      zref(i) = to_double(r.y[static_cast<std::size_t>(i)]);
+    ref_error = r.error;
+    rep.line("reference", fmt::format("{} by GBS extrapolation (order 16) in "
+                                      "double-double, {} macro-steps: estimated error {:.1e}",
+                                      s.equations, r.macro_steps, ref_error));
+    rep.js["reference"] = {{"T", s.t_end},
+                           {"state", std::vector<double>(zref.data(), zref.data() + zref.size())},
+                           {"estimated_error", ref_error},
+                           {"macro_steps", r.macro_steps}};
+  } catch (const NumericalError& e) {
+    rep.numerical("reference", e);
+  }
+
+  // --- measured order -----------------------------------------------------------------------
+  rep.required.push_back("order");
+  if (zref.size() == z0.size()) {
+    try {
+      const double scale = std::max(1.0, zref.lpNorm<Eigen::Infinity>());
+      const double floor =
+          s.floor ? *s.floor
+                  : std::max(10 * ref_error, 16 * std::numeric_limits<double>::epsilon() * scale);
+      std::vector<double> hs, err, windowed;
+      bool fallback = false;
+      if (!s.hs.empty()) {
+        hs = s.hs;
+        for (double h : hs)
+          err.push_back((run_map(s, z0, h, s.t_end) - zref).lpNorm<Eigen::Infinity>());
+        windowed = err;
+      } else {
+        for (int k = 0;; ++k) {
+          const double n = std::ceil(s.t_end * std::exp2(0.25 * k));
+          if (!hs.empty() && std::abs(s.t_end / n - hs.back()) == 0) continue;
+          const double h = s.t_end / n;
+          if (s.substeps * n > s.max_substeps) break;
+          double e = std::numeric_limits<double>::quiet_NaN();
+          try {
+            e = (run_map(s, z0, h, s.t_end) - zref).lpNorm<Eigen::Infinity>();
+          } catch (const NumericalError&) {
+            // a step too large for the base method's solve: no point here
+          }
+          hs.push_back(h);
+          err.push_back(e);
+          const bool in = e <= kWindow * scale && e >= kWindowLow * scale;
+          windowed.push_back(in ? e : std::numeric_limits<double>::quiet_NaN());
+          if (e < kWindowLow * scale) break;
+        }
+        if (std::count_if(windowed.begin(), windowed.end(),
+                          [](double x) { return std::isfinite(x); }) < 3) {
+          fallback = true;
+          windowed = err;
+          for (std::size_t i = 0; i + 6 < windowed.size(); ++i)
+            windowed[i] = std::numeric_limits<double>::quiet_NaN();
+        }
+      }
+      const PlateauFit fit = fit_order_plateau(hs, windowed, floor);
+      const bool ok = std::isfinite(fit.slope) && std::abs(fit.slope - s.expected) < s.order_tol;
+      if (!ok) rep.failed.push_back("order");
+      // The points of the fit, in brief (all of them in the JSON).
+      double hmin = INFINITY, hmax = 0, emin = INFINITY, emax = 0;
+      for (std::size_t i = 0; i < hs.size(); ++i)
+        if (fit.used[i]) {
+          hmin = std::min(hmin, hs[i]);
+          hmax = std::max(hmax, hs[i]);
+          emin = std::min(emin, err[i]);
+          emax = std::max(emax, err[i]);
+        }
+      const std::string points =
+          fit.points > 0
+              ? fmt::format(
+                    "h from {:.3g} to {:.3g}, errors from {:.2e} to {:.2e}; {} of {} runs "
+                    "fitted ({})",
+                    hmax, hmin, emax, emin, fit.points, hs.size(),
+                    !s.hs.empty() ? "--h-list, above the floor and the plateau"
+                    : fallback    ? "the window [1e-12, 1e-6]·scale was not reached: the 6 "
+                                    "smallest step sizes"
+                                  : "errors in the window [1e-12, 1e-6]·scale")
+              : fmt::format("{} runs, none usable", hs.size());
+      rep.line(
+          "order",
+          std::isfinite(fit.slope)
+              ? fmt::format("{:.3f} over {} step sizes at T = {:g} (floor {:.1e}); expected {:g} "
+                            "(|p - {:g}| < {:g}): {}",
+                            fit.slope, fit.points, s.t_end, fit.floor, s.expected, s.expected,
+                            s.order_tol, ok ? "yes" : "NO")
+              : fmt::format("not measured: {} of {} errors lie in the window and above the floor "
+                            "{:.1e} (--h-list to choose the step sizes): NO",
+                            fit.points, hs.size(), fit.floor));
+      rep.line("  points", points);
+      std::vector<bool> used = fit.used;
+      rep.js["order"] = {
+          {"h", hs},
+          {"error", err},
+          {"used_in_fit", used},
+          {"fitted", std::isfinite(fit.slope) ? json(fit.slope) : json(nullptr)},
+          {"floor", fit.floor},
+          {"window",
+           s.hs.empty() && !fallback ? json({kWindowLow * scale, kWindow * scale}) : json(nullptr)},
+          {"fitted_on", !s.hs.empty() ? "--h-list"
+                        : fallback    ? "the 6 smallest step sizes"
+                                      : "the window"},
+          {"expected", s.expected},
+          {"tolerance", s.order_tol},
+          {"passed", ok}};
+    } catch (const NumericalError& e) {
+      rep.numerical("order", e);
+    }
+  } else {
+    rep.line("order", "not measured: no reference solution");
+    rep.failed.push_back("order");
+  }
+
+  // --- symplecticity and reversibility -------------------------------------------------------
+  std::vector<Eigen::VectorXd> states{z0};
+  if (zref.size() == z0.size()) states.push_back(zref);
+  // Symplecticity at the step sizes h, 2h and 4h. A symplectic map leaves only the difference
+  // quotient's error at every size; a non-symplectic method of order p leaves O(h^(p+1)), which
+  // at one small step can hide below any tolerance that round-off allows (an eighth-order
+  // Runge-Kutta method: 4e-11 at h = 0.05 on Kepler), but grows by 2^(p+1) with each doubling.
+  // The defect is relative to max(1, |J|^2), the size of J^T W J's entries, so that a map with
+  // a large Jacobian is not failed for its difference quotients' round-off.
+  rep.required.push_back("symplectic");
+  try {
+    constexpr double kSymplecticTol = 1e-8;
+    double worst = 0, worst_h = s.h;
+    std::vector<std::string> shown;
+    json per = json::array();
+    for (int k = 0; k < 3; ++k) {
+      const double hk = s.h * std::exp2(k);
+      double dk = 0;
+      try {
+        for (const auto& z : states) {
+          const Eigen::Index n = z.size() / 2;
+          Eigen::MatrixXd W = Eigen::MatrixXd::Zero(2 * n, 2 * n);
+          W.topRightCorner(n, n) = Eigen::MatrixXd::Identity(n, n);
+          W.bottomLeftCorner(n, n) = -Eigen::MatrixXd::Identity(n, n);
+          const Eigen::MatrixXd J = step_jacobian(step, z, hk);
+          if (!J.allFinite()) throw NumericalError("the Jacobian of the map is not finite");
+          const double size = std::max(1.0, J.lpNorm<Eigen::Infinity>());
+          dk = std::max(dk, (J.transpose() * W * J - W).lpNorm<Eigen::Infinity>() / (size * size));
+        }
+      } catch (const NumericalError& e) {
+        if (k == 0) throw;
+        // a step too large for the method: the sizes below it decide
+        shown.push_back(fmt::format("h = {:g}: no step", hk));
+        per.push_back({{"h", hk}, {"defect", nullptr}, {"error", e.what()}});
+        continue;
+      }
+      shown.push_back(fmt::format("h = {:g}: {:.1e}", hk, dk));
+      per.push_back({{"h", hk}, {"defect", dk}});
+      if (dk >= worst) {
+        worst = dk;
+        worst_h = hk;
+      }
+    }
+    const bool ok = worst <= kSymplecticTol;
+    rep.line("symplectic",
+             fmt::format("defect |J^T W J - W| / max(1, |J|^2): {} (each <= {:.0e}): {}",
+                         fmt::join(shown, ", "), kSymplecticTol, ok ? "yes" : "NO"));
+    if (!ok) rep.failed.push_back("symplectic");
+    rep.js["symplecticity"] = {{"defect", worst},
+                               {"at_h", worst_h},
+                               {"by_step_size", per},
+                               {"relative_to", "max(1, |J|_max^2)"},
+                               {"tolerance", kSymplecticTol},
+                               {"passed", ok}};
+  } catch (const NumericalError& e) {
+    rep.numerical("symplectic", e);
+  }
+  if (s.require_reversible) rep.required.push_back("time-reversible");
+  try {
+    const auto rev = reversibility_defect(step, states, s.h, 1e-12);
+    rep.line("time-reversible",
+             fmt::format("defect = {:.2e} (<= {:.0e}): {}{}", rev.defect, rev.tolerance,
+                         rev.passed ? "yes" : "NO", s.require_reversible ? "" : s.reversible_note));
+    if (s.require_reversible && !rev.passed) rep.failed.push_back("time-reversible");
+    rep.js["reversibility"] = {{"defect", rev.defect},
+                               {"tolerance", rev.tolerance},
+                               {"required", s.require_reversible},
+                               {"passed", rev.passed}};
+  } catch (const NumericalError& e) {
+    rep.numerical("time-reversible", e);
+  }
+
+  // --- energy -------------------------------------------------------------------------------
+  rep.required.push_back("energy");
+  try {
+    const Observable& H = s.H;
+    const double H0 = H(z0);
+    const double scale =
+        std::max({std::abs(H0), 0.5 * z0.tail(z0.size() / 2).squaredNorm(), 1e-300});
+    const auto en = energy_behaviour(step, H, z0, s.h, s.steps);
+    const long long k1 = std::min<long long>(s.steps, 4096);
+    const auto e1 = energy_behaviour(step, H, z0, s.h, k1);
+    const auto e2 = energy_behaviour(step, H, z0, s.h / 2, 2 * k1);
+    const double h_exp = e1.max_error > 0 && e2.max_error > 0
+                             ? std::log2(e1.max_error / e2.max_error)
+                             : std::numeric_limits<double>::quiet_NaN();
+    // The scaling with h is read only where the run at h/2 stays well above round-off (a
+    // high-order method reaches it at h/2, and its ratio then says nothing about h^p).
+    const double roundoff_h2 =
+        64 * std::sqrt(double(2 * k1)) * std::numeric_limits<double>::epsilon() / 2 * scale;
+    const bool scaling = std::isfinite(h_exp) && e2.max_error > 100 * roundoff_h2;
+    const auto ev =
+        judge_energy(en, scale, s.expected, scaling ? en.max_error / std::exp2(h_exp) : -1);
+    rep.line("energy",
+             fmt::format("{} over {} steps of h = {:g}: {}", ev.verdict, en.steps, s.h, ev.why));
+    if (!ev.passed) rep.failed.push_back("energy");
+    rep.js["energy"] = {{"steps", en.steps},         {"h", s.h},
+                        {"max_error", en.max_error}, {"relative_error", ev.relative},
+                        {"exponent", en.exponent},   {"verdict", ev.verdict},
+                        {"passed", ev.passed}};
+  } catch (const NumericalError& e) {
+    rep.numerical("energy", e);
+  }
+}
+
+}  // namespace vibook::verify

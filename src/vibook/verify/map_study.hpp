@@ -1,0 +1,93 @@
+/// \file map_study.hpp
+/// \brief The measurements `vibook verify` makes on a one-step map z = (q, p) ↦ Φ_h(z) of
+/// Hamilton's equations, whatever produced the map: a composition of a catalogue method, a
+/// Galerkin integrator, or another program's stepper behind the C ABI or the line protocol.
+/// The reference is the continuous system integrated in double-double (never the method
+/// itself); the order is fitted two-sided in a window fixed beforehand; symplecticity (at h,
+/// 2h and 4h) and reversibility come from the map's Jacobian and its ρ-conjugate; the energy
+/// from a long run. Every part is measured even after one fails; `failed` names the parts that
+/// failed. The command (`src/cli`) prints the report and the field audit records it in the
+/// ledger, from the same measurement.
+///
+/// Chapter: \ref chapter-verify.
+#pragma once
+
+#include <cmath>
+#include <functional>
+#include <optional>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include <Eigen/Dense>
+#include <nlohmann/json.hpp>
+
+#include "vibook/core/precision.hpp"
+#include "vibook/verify/reference.hpp"
+#include "vibook/verify/verify.hpp"
+
+namespace vibook::verify {
+
+/// The nonlinear test problems of the composition, Galerkin and black-box routes: the name,
+/// the Hamiltonian as printed, and the initial state (the Kepler orbit has eccentricity 0.5).
+struct TestProblem {
+  std::string name, hamiltonian;
+  std::vector<double> q0, p0;
+  std::string expression;  ///< H in verify's expression language (the black-box route)
+};
+const std::vector<TestProblem>& test_problems();
+
+/// The test problem of that name (empty: kepler), or nullptr.
+const TestProblem* find_problem(const std::string& name);
+
+/// The step `raw` of an N-degree-of-freedom map, with every NumericalError it throws rewritten
+/// to name the step size and the state the step started from.
+verify::Step naming_failures(verify::Step raw, int n);
+
+/// "(a, b, …)" with 6 significant digits.
+std::string vec_text(const std::vector<double>& v);
+
+/// The report being written: its text lines, its JSON, the parts required by the verdict and
+/// those that failed, and the first numerical failure. The command prints it (cli/verify_map);
+/// the field audit (field_audit.cpp) reads its JSON.
+struct MapMeasurement {
+  std::ostringstream out;
+  nlohmann::json js;
+  std::vector<std::string> failed, required;
+  bool numerical_failure = false;
+  std::string first_error;
+
+  /// One line: the label in a column of 21 characters, then the text.
+  void line(const std::string& label, const std::string& text);
+  /// A part stopped by a numerical failure: printed, failed, remembered.
+  void numerical(const std::string& part, const std::exception& e);
+};
+
+/// What is measured, and how.
+struct MapStudy {
+  verify::Step step;  ///< one step of the map under test
+  /// Optional: n steps of size h at once (a line-protocol stepper answers one request for a
+  /// whole run); by default `step` n times.
+  std::function<void(Eigen::VectorXd& z, double h, long long n)> propagate;
+  Eigen::VectorXd z0;
+  verify::Field<dd_real> field;  ///< Hamilton's equations, for the reference
+  std::string equations = "Hamilton's equations";
+  verify::Observable H;  ///< the energy
+  double t_end = 5, h = 0.05, order_tol = 0.2, expected = 2;
+  long long steps = 100000;
+  std::vector<double> hs;  ///< --h-list (empty: the walk of step counts)
+  std::optional<double> floor;
+  double substeps = 1;  ///< evaluations of the base method in one step (the walk's cost)
+  double max_substeps = 1e6;
+  bool require_reversible = false;
+  std::string reversible_note;  ///< appended to the line when reversibility is not required
+};
+
+/// The reference, order, symplecticity, reversibility and energy parts, appended to `r`.
+void measure_map(const MapStudy& s, MapMeasurement& r);
+
+/// Integrate over [0, T] with steps of h, the last shortened to end at T (verify::integrate),
+/// through `propagate` when the study has one.
+Eigen::VectorXd run_map(const MapStudy& s, const Eigen::VectorXd& z0, double h, double T);
+
+}  // namespace vibook::verify
