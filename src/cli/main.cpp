@@ -161,7 +161,7 @@ int cmd_claims(bool json, const std::string& json_out, const std::string& html_d
     };
     write("claims.html", ledger.to_html());
     write("summary.html", ledger.to_summary_html());
-    for (const char* paper : {"S", "V", "SS"})
+    for (const char* paper : {"S", "V", "SS", "A"})
       write(fmt::format("claims-{}.html", paper), ledger.to_html(paper));
     // A chapter shows each claim once: a claim measured by several checks is shown with the
     // most specific of them (the one measuring the fewest claims; the first of equals in the

@@ -1,6 +1,7 @@
 // The claims catalogue: one row per claim of ../shared/CLAIMS.md, in its order.
 // Titles are short forms; the full statement of each claim is in the book's chapters.
 #include "vibook/claims/ledger.hpp"
+#include "vibook/verify/field_audit.hpp"
 
 namespace vibook::claims {
 
@@ -66,7 +67,14 @@ const std::vector<ClaimInfo>& catalogue() {
       {"SS-AA", "SS", "Appendix A",
        "Central-difference modified equation as a convergent arcsin² series"},
   };
-  return rows;
+  // The field audit (issue #25): one claim per published composition, the method's source as
+  // its "paper", and one per deliberately wrong composition (verify/field_audit.hpp).
+  static const std::vector<ClaimInfo> all = [] {
+    std::vector<ClaimInfo> r = rows;
+    for (const auto& a : verify::audit_entries()) r.push_back(a.info);
+    return r;
+  }();
+  return all;
 }
 
 std::string_view paper_statement(std::string_view id) {
@@ -187,6 +195,8 @@ std::string_view paper_statement(std::string_view id) {
   };
   for (const auto& [key, text] : rows)
     if (key == id) return text;
+  for (const auto& a : verify::audit_entries())
+    if (a.info.id == id) return a.statement;
   return {};
 }
 

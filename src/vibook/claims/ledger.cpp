@@ -109,11 +109,12 @@ void Ledger::record(const ClaimResult& r) {
 }
 
 namespace {
-#define VIBOOK_COMPARISON_FIELDS(X)                                                         \
-  X(paper)                                                                                  \
-  X(display)                                                                                \
-  X(label) X(part) X(quote) X(against) X(ours) X(through) X(outcome) X(detail) X(corrected) \
-      X(edit) X(search) X(check) X(role) X(verified)
+#define VIBOOK_COMPARISON_FIELDS(X)                                                        \
+  X(paper)                                                                                 \
+  X(display)                                                                               \
+  X(label)                                                                                 \
+  X(part) X(quote) X(against) X(ours) X(through) X(outcome) X(detail) X(corrected) X(edit) \
+      X(search) X(check) X(role) X(verified)
 }  // namespace
 
 nlohmann::json to_json(const FormulaComparison& c) {
@@ -268,9 +269,12 @@ std::string break_at_underscores(const std::string& s) {
   return out;
 }
 
-// The three papers, in the book's order: key and short citation.
-constexpr std::pair<const char*, const char*> kPapers[] = {
-    {"S", "Sharma et al. 2022"}, {"V", "Vermeeren 2017"}, {"SS", "Shen &amp; Sun 2025"}};
+// The three papers, in the book's order, then the field audit of published methods (each row's
+// source is in its "where" column): key and short citation.
+constexpr std::pair<const char*, const char*> kPapers[] = {{"S", "Sharma et al. 2022"},
+                                                           {"V", "Vermeeren 2017"},
+                                                           {"SS", "Shen &amp; Sun 2025"},
+                                                           {"A", "Field audit: published methods"}};
 
 }  // namespace
 

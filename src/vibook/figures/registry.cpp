@@ -14,6 +14,7 @@
 #include "vibook/modified/checks.hpp"
 #include "vibook/plot/gnuplot.hpp"
 #include "vibook/relativistic/checks.hpp"
+#include "vibook/verify/checks.hpp"
 
 #include <cstdlib>
 
@@ -46,7 +47,8 @@ const std::vector<Check>& registry() {
                                          checks::check_v_t16(),
                                          checks::vermeeren_fig3(),
                                          checks::shen_sun_fig1(),
-                                         checks::check_ss_t13()};
+                                         checks::check_ss_t13(),
+                                         checks::field_audit()};
   return all;
 }
 

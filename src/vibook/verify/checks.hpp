@@ -1,0 +1,19 @@
+/// \file checks.hpp
+/// \brief The checks of the chapter "Verify your own integrator": the field audit of published
+/// composition methods (claims A-…, field_audit.hpp).
+/// The registry (`figures/registry.hpp`) lists these in a fixed order; `vibook claims --check ID`
+/// and the doctests beside them call the same functions.
+///
+/// Chapter: \ref chapter-verify.
+#pragma once
+
+#include "vibook/claims/check.hpp"
+
+namespace vibook::checks {
+
+using claims::Check;
+using claims::Context;
+
+Check field_audit();  ///< field-audit: A-YOSHIDA4 … A-RUTH3, A-WRONG-* (field_audit.cpp)
+
+}  // namespace vibook::checks

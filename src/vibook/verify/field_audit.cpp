@@ -1,0 +1,311 @@
+// The field audit (field_audit.hpp): the catalogue's compositions and the wrong ones, each
+// measured on Kepler and Hénon–Heiles by the measurement `vibook verify --composition` prints
+// (composition_study.hpp), each recorded in the ledger. Chapter: "Verify your own integrator",
+// section "The audit".
+#include "vibook/verify/field_audit.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+
+#include <fmt/format.h>
+#include <fmt/ranges.h>
+
+#include "vibook/core/precision.hpp"
+#include "vibook/integrators/composition.hpp"
+#include "vibook/verify/checks.hpp"
+#include "vibook/verify/composition_study.hpp"
+#include "vibook/verify/map_study.hpp"
+
+namespace vibook::verify {
+
+namespace {
+
+namespace comp = vibook::composition;
+using nlohmann::json;
+
+std::string upper(std::string s) {
+  for (char& c : s) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
+  return s;
+}
+
+const CompositionBase& base_named(const std::string& name) {
+  const CompositionBase* b = find_composition_base(name);
+  if (!b) throw std::logic_error("field audit: no base method '" + name + "'");
+  return *b;
+}
+
+// A published method of the catalogue on `base` (its documented base, or another symmetric one).
+AuditEntry published(const std::string& name, const std::string& base,
+                     const std::string& id_suffix = "") {
+  const comp::CatalogueEntry* e = comp::find_entry(name);
+  if (!e) throw std::logic_error("field audit: no catalogue entry '" + name + "'");
+  const CompositionBase& b = base_named(base);
+  AuditEntry a;
+  a.base = base;
+  a.coefficients = name;
+  const bool palindromic = e->base == "symmetric";
+  const std::string on = palindromic ? fmt::format("{} ({})", base, b.description) : base;
+  a.info = {"A-" + upper(name) + id_suffix, "A", e->source,
+            fmt::format("{} on {}: order {}, symplectic{}", name, base, e->order,
+                        palindromic ? ", symmetric" : "")};
+  a.statement = palindromic
+                    ? fmt::format(
+                          "A palindromic composition of {} stages of a symmetric method of order 2 "
+                          "with order {} for every such base; composed here of {}. Symplectic as a "
+                          "composition of symplectic maps, symmetric (its own adjoint) as a "
+                          "palindrome of a symmetric base.",
+                          e->stages, e->order, on)
+                    : fmt::format(
+                          "A composition of {} stages of {} and its adjoint with order {}; "
+                          "symplectic as a composition of symplectic maps (not symmetric).",
+                          e->stages, base, e->order);
+  return a;
+}
+
+AuditEntry wrong(const std::string& id, const std::string& title, const std::string& what,
+                 const std::string& base, const std::string& coefficients, double claimed,
+                 std::vector<std::string> must_flag) {
+  AuditEntry a;
+  a.info = {id, "A", "deliberately wrong", title};
+  a.statement = fmt::format(
+      "{} Held to order {:g}, a correct audit must fail it on both problems, naming {}.", what,
+      claimed, fmt::join(must_flag, " and "));
+  a.base = base;
+  a.coefficients = coefficients;
+  a.expected = claimed;
+  a.must_flag = std::move(must_flag);
+  return a;
+}
+
+double number_or_nan(const json& j) {
+  return j.is_number() ? j.get<double>() : std::numeric_limits<double>::quiet_NaN();
+}
+
+// What one problem's measurement says, for the note and the values.
+struct Measured {
+  std::string problem;
+  std::vector<std::string> failed;
+  double order = NAN, symplectic = NAN, reversible = NAN, energy = NAN;
+  std::string energy_verdict;
+  json conditions, composition;
+  std::string stopped;  // a measurement that threw: why
+};
+
+Measured measure_row(const AuditEntry& a, const std::string& problem_name) {
+  Measured m;
+  m.problem = problem_name;
+  const TestProblem* problem = find_problem(problem_name);
+  if (!problem) throw std::logic_error("field audit: no test problem '" + problem_name + "'");
+  CompositionSpec spec;
+  spec.base = &base_named(a.base);
+  spec.coefficients = a.coefficients;
+  spec.entry = comp::find_entry(a.coefficients);
+  if (!spec.entry) {
+    const MpfrDigits digits(kCompositionDigits);
+    std::string item;
+    for (std::size_t i = 0; i <= a.coefficients.size(); ++i) {
+      if (i == a.coefficients.size() || a.coefficients[i] == ',') {
+        spec.typed.push_back(comp::parse_stage<mpfr_real>("coefficients", item));
+        item.clear();
+      } else {
+        item += a.coefficients[i];
+      }
+    }
+  }
+  if (a.expected) {
+    spec.expected = a.expected;
+    spec.expected_from = "the order the row claims";
+  }
+  MapMeasurement rep;
+  try {
+    MapStudy study;  // the command's defaults: T = 5, h = 0.05, 1e5 steps, tolerance 0.2
+    measure_composition(spec, *problem, problem->q0, problem->p0, study, rep);
+  } catch (const std::exception& e) {
+    m.stopped = e.what();
+    m.failed.push_back("measurement");
+    return m;
+  }
+  m.failed = rep.failed;
+  const json& js = rep.js;
+  if (js.contains("order")) m.order = number_or_nan(js["order"]["fitted"]);
+  if (js.contains("symplecticity")) m.symplectic = number_or_nan(js["symplecticity"]["defect"]);
+  if (js.contains("reversibility")) m.reversible = number_or_nan(js["reversibility"]["defect"]);
+  if (js.contains("energy")) {
+    m.energy = number_or_nan(js["energy"]["relative_error"]);
+    m.energy_verdict = js["energy"]["verdict"].get<std::string>();
+  }
+  m.conditions = js.value("order_conditions", json::object());
+  m.composition = js.value("composition", json::object());
+  return m;
+}
+
+std::string display_name(const std::string& problem) {
+  return problem == "kepler" ? "Kepler" : problem == "henon-heiles" ? "Hénon–Heiles" : problem;
+}
+
+std::string brief(const Measured& m) {
+  if (!m.stopped.empty())
+    return fmt::format("{}: the measurement stopped: {}", display_name(m.problem), m.stopped);
+  return fmt::format(
+      "{}: order {:.2f}, symplectic defect {:.1e}, reversibility defect {:.1e}, "
+      "energy {} (relative error {:.1e}){}",
+      display_name(m.problem), m.order, m.symplectic, m.reversible, m.energy_verdict, m.energy,
+      m.failed.empty() ? std::string(": every part passes")
+                       : fmt::format(": FAILS {}", fmt::join(m.failed, ", ")));
+}
+
+}  // namespace
+
+claims::ClaimResult judge_audit_entry(const AuditEntry& a) {
+  std::vector<Measured> ms;
+  for (const auto& problem : audit_problems()) ms.push_back(measure_row(a, problem));
+  claims::ClaimResult r;
+  r.id = a.info.id;
+  r.source = "field-audit";
+  double worst_sym = 0, worst_rev = 0, worst_energy = 0;
+  for (const auto& m : ms) {
+    r.values.emplace_back("order_" + m.problem, m.order);
+    worst_sym = std::max(worst_sym, m.symplectic);
+    worst_rev = std::max(worst_rev, m.reversible);
+    worst_energy = std::max(worst_energy, m.energy);
+  }
+  // The order conditions do not depend on the problem: read from the first measurement.
+  std::string conditions_text = "Order conditions not evaluated";
+  if (!ms[0].conditions.empty()) {
+    const json& oc = ms[0].conditions;
+    const auto residual = oc["residual_by_weight"].get<std::vector<double>>();
+    const int order = oc["order"].get<int>();
+    const int want = static_cast<int>(std::floor(oc["expected"].get<double>() + 1e-9));
+    double satisfied = 0;  // the largest residual of the weights the order needs
+    for (int k = 0; k < std::min<int>(want, int(residual.size())); ++k)
+      satisfied = std::max(satisfied, residual[static_cast<std::size_t>(k)]);
+    r.values.emplace_back("order_by_conditions", order);
+    r.values.emplace_back("conditions_residual_to_expected_weight", satisfied);
+    conditions_text = fmt::format(
+        "Order conditions at {} digits: order {} (each weight's residual <= {:.0e}), largest "
+        "residual up to weight {} {:.1e}",
+        oc["digits"].get<int>(), order, oc["tolerance"].get<double>(), want, satisfied);
+    if (order < int(residual.size()))
+      conditions_text += fmt::format(", weight {} fails by {:.1e}", order + 1,
+                                     residual[static_cast<std::size_t>(order)]);
+    const json& c = ms[0].composition;
+    if (c.contains("newton")) {
+      const auto pub = c["newton"]["published_residual_by_weight"].get<std::vector<double>>();
+      const double worst_pub = *std::max_element(pub.begin(), pub.end());
+      const double change = c["newton"]["max_change_from_published"].get<double>();
+      r.values.emplace_back("published_digits_residual", worst_pub);
+      r.values.emplace_back("newton_change_from_published", change);
+      conditions_text += fmt::format(
+          "; the published digits satisfy them to {:.1e}, and Newton at 120 digits moves them by "
+          "{:.1e}",
+          worst_pub, change);
+    }
+  }
+  r.values.emplace_back("symplectic_defect_max", worst_sym);
+  r.values.emplace_back("reversibility_defect_max", worst_rev);
+  r.values.emplace_back("energy_relative_error_max", worst_energy);
+  std::vector<std::string> lines;
+  for (const auto& m : ms) lines.push_back(brief(m));
+  const std::string measured = fmt::format("{}. {}.", conditions_text, fmt::join(lines, "; "));
+
+  if (a.must_flag.empty()) {
+    std::vector<std::string> failures;
+    for (const auto& m : ms)
+      if (!m.failed.empty())
+        failures.push_back(
+            fmt::format("{} on {}", fmt::join(m.failed, ", "), display_name(m.problem)));
+    r.status = failures.empty() ? claims::Status::reproduced : claims::Status::not_reproduced;
+    r.note = fmt::format(
+        "Criterion: every part of `vibook verify --composition {} --coefficients {}` passes on "
+        "both problems (order conditions to the documented order at 1e-12; measured order "
+        "within 0.2 of it; symplectic at h, 2h, 4h; reversible when symmetric; energy "
+        "bounded). {}",
+        a.base, a.coefficients, measured);
+    if (!failures.empty()) {
+      r.cause = "does-not-hold";
+      r.headline = fmt::format("{}: fails {}", a.info.title, fmt::join(failures, "; "));
+    }
+  } else {
+    std::vector<std::string> missed;
+    for (const auto& m : ms)
+      for (const auto& part : a.must_flag)
+        if (std::find(m.failed.begin(), m.failed.end(), part) == m.failed.end())
+          missed.push_back(fmt::format("{} on {}", part, display_name(m.problem)));
+    r.status = missed.empty() ? claims::Status::reproduced : claims::Status::not_reproduced;
+    r.note =
+        fmt::format("Criterion: the verdict fails {} on both problems. {}{}",
+                    fmt::join(a.must_flag, " and "), measured,
+                    missed.empty() ? std::string(" Flagged.")
+                                   : fmt::format(" NOT flagged: {}.", fmt::join(missed, ", ")));
+    if (!missed.empty()) {
+      r.cause = "does-not-hold";
+      r.headline =
+          fmt::format("the audit does not flag a wrong composition ({})", fmt::join(missed, ", "));
+    }
+  }
+  return r;
+}
+
+namespace {
+
+std::vector<claims::ClaimResult> run_audit(const claims::Context&) {
+  std::vector<claims::ClaimResult> out;
+  for (const auto& a : audit_entries()) out.push_back(judge_audit_entry(a));
+  return out;
+}
+
+}  // namespace
+
+const std::vector<std::string>& audit_problems() {
+  static const std::vector<std::string> p = {"kepler", "henon-heiles"};
+  return p;
+}
+
+const std::vector<AuditEntry>& audit_entries() {
+  static const std::vector<AuditEntry> rows = [] {
+    std::vector<AuditEntry> r;
+    for (const char* name :
+         {"yoshida4", "suzuki4", "yoshida6", "yoshida8", "mclachlan8", "kahanli6", "kahanli8"})
+      r.push_back(published(name, "sv"));
+    r.push_back(published("yoshida6", "midpoint", "-MIDPOINT"));
+    r.push_back(published("ruth3", "se"));
+    // Yoshida's sixth-order solution A as published (15 digits, stages w3 w2 w1 w0 w1 w2 w3)
+    // with w1 changed in its eleventh digit (-1.17767998417887 -> -1.17767998416887) and
+    // w0 = 1 - 2(w1 + w2 + w3) recomputed, so that the stages still sum to 1.
+    r.push_back(wrong("A-WRONG-DIGIT", "yoshida6 with w1 off by 1e-11 on sv: flagged",
+                      "Yoshida's sixth-order solution A on Störmer–Verlet with w1 changed by "
+                      "1e-11 (the middle stage recomputed so that the stages still sum to 1).",
+                      "sv",
+                      "0.784513610477560,0.235573213359357,-1.17767998416887,1.315186320663906,"
+                      "-1.17767998416887,0.235573213359357,0.784513610477560",
+                      6, {"order conditions"}));
+    r.push_back(wrong("A-WRONG-ADJOINT", "ruth3 with stage and adjoint swapped: flagged",
+                      "Ruth's third-order method with each pair (adjoint, base) applied in the "
+                      "other order: the same coefficients, the same operations, a different "
+                      "composition.",
+                      "se", "3/8,7/24*,-25/24,3/8*,0,1*", 3, {"order conditions", "order"}));
+    r.push_back(wrong("A-WRONG-BASE", "the triple jump on symplectic Euler: flagged",
+                      "Yoshida's fourth-order triple jump built on symplectic Euler (order 1, "
+                      "not symmetric) instead of a symmetric base of order 2.",
+                      "se", "yoshida4", 4, {"order conditions", "order"}));
+    return r;
+  }();
+  return rows;
+}
+
+}  // namespace vibook::verify
+
+namespace vibook::checks {
+
+Check field_audit() {
+  std::vector<std::string> ids;
+  for (const auto& a : verify::audit_entries()) ids.push_back(a.info.id);
+  return {"field-audit",
+          "The field audit: published compositions and deliberately wrong ones on Kepler and "
+          "Hénon–Heiles",
+          false, ids, verify::run_audit};
+}
+
+}  // namespace vibook::checks

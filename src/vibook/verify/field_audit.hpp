@@ -1,0 +1,45 @@
+/// \file field_audit.hpp
+/// \brief The field audit: every published composition of the catalogue
+/// (integrators/composition.hpp) measured as `vibook verify --composition` measures it
+/// (composition_study.hpp) on two nonlinear problems, Kepler (eccentricity 0.5) and Hénon–Heiles,
+/// each row a claim of the ledger with the method's source as its "paper" (key `A`). Beside
+/// them, compositions that are wrong on purpose, whose claim is that the audit flags them: an
+/// audit that passes a known defect, or fails a correct method, certifies nothing.
+///
+/// Chapter: \ref chapter-verify (section "The audit").
+#pragma once
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "vibook/claims/ledger.hpp"
+
+namespace vibook::verify {
+
+/// One row of the audit.
+struct AuditEntry {
+  claims::ClaimInfo info;    ///< ID `A-…`, paper "A", where = the source, title
+  std::string statement;     ///< what the source documents (or what a correct audit must do)
+  std::string base;          ///< the base method (composition_bases())
+  std::string coefficients;  ///< a catalogue name or an exact list, as `--coefficients` takes it
+  std::optional<double> expected;  ///< the order a wrong row claims (catalogue rows: documented)
+  /// Empty for a published method; for a wrong one, the parts its verdict must fail on every
+  /// problem ("order conditions", "order").
+  std::vector<std::string> must_flag;
+};
+
+/// The rows, in the book's order: the catalogue's methods, then the wrong ones.
+const std::vector<AuditEntry>& audit_entries();
+
+/// The two problems of the audit.
+const std::vector<std::string>& audit_problems();
+
+/// Measure one row on both problems and judge it by the criterion fixed in the chapter: a
+/// published method is `reproduced` when every part of the command's verdict passes on both
+/// problems; a wrong one is `reproduced` (flagged) when its verdict fails every part of
+/// `must_flag` on both. Otherwise `not-reproduced`, with the cause `does-not-hold` and a
+/// headline naming what failed or what was missed.
+claims::ClaimResult judge_audit_entry(const AuditEntry& a);
+
+}  // namespace vibook::verify

@@ -1,0 +1,60 @@
+// Doctests of the field audit (field_audit.hpp): the published compositions pass, the wrong ones
+// are flagged, and the judgement itself can fail both ways.
+#include <doctest/doctest.h>
+
+#include "vibook/claims/ledger.hpp"
+#include "vibook/figures/registry.hpp"
+#include "vibook/verify/field_audit.hpp"
+
+using namespace vibook;
+
+TEST_CASE("field audit: every published composition passes, every wrong one is flagged") {
+  const auto* check = figures::find("field-audit");
+  REQUIRE(check != nullptr);
+  const auto results = figures::run_check(*check, {});
+  REQUIRE(results.size() == verify::audit_entries().size());
+  for (const auto& r : results) {
+    INFO(r.id, ": ", r.note);
+    CHECK(r.status == claims::Status::reproduced);
+    // The measured order is on the row, for both problems (a number, not a copied one).
+    CHECK(std::isfinite(r.value("order_kepler")));
+    CHECK(std::isfinite(r.value("order_henon-heiles")));
+  }
+  // Every row is a claim of the ledger, under the audit's key.
+  claims::Ledger ledger;
+  for (const auto& r : results) ledger.record(r);
+  for (const auto& a : verify::audit_entries()) {
+    const auto* row = ledger.find(a.info.id);
+    REQUIRE(row != nullptr);
+    CHECK(row->info.paper == "A");
+    CHECK(!claims::paper_statement(a.info.id).empty());
+  }
+}
+
+TEST_CASE(
+    "field audit: the judgement fails a wrong method presented as published, and a correct "
+    "method presented as wrong") {
+  const auto& entries = verify::audit_entries();
+  auto find = [&](const std::string& id) {
+    for (const auto& a : entries)
+      if (a.info.id == id) return a;
+    FAIL("no audit entry " << id);
+    return entries.front();
+  };
+  // The perturbed sixth-order method held to order 6 as if it were published: not reproduced,
+  // and the headline names the order conditions.
+  verify::AuditEntry digit = find("A-WRONG-DIGIT");
+  digit.must_flag.clear();
+  const auto r1 = verify::judge_audit_entry(digit);
+  CHECK(r1.status == claims::Status::not_reproduced);
+  CHECK(r1.cause == "does-not-hold");
+  CHECK(r1.headline.find("order conditions") != std::string::npos);
+  // The triple jump on Störmer–Verlet (correct) presented as a wrong row that must fail its
+  // order: not flagged, so not reproduced.
+  verify::AuditEntry right = find("A-YOSHIDA4");
+  right.must_flag = {"order"};
+  right.expected = 4;
+  const auto r2 = verify::judge_audit_entry(right);
+  CHECK(r2.status == claims::Status::not_reproduced);
+  CHECK(r2.headline.find("does not flag") != std::string::npos);
+}
