@@ -1,0 +1,147 @@
+// A Galerkin variational integrator measured on a test problem (method_study.hpp): the
+// integrator of integrators/galerkin.hpp with S stages (a polynomial of degree S through the
+// step, the S-node Gauss–Legendre or Gauss–Lobatto quadrature of the action, the interior
+// control points eliminated by Newton's method with the new position) on L = |v|²/2 − V(q);
+// symmetric, so reversibility is part of the verdict. The measurements are those of
+// map_study.hpp, against Hamilton's equations in double-double. `vibook verify --method` prints
+// it; the field audit records it.
+#include "vibook/verify/method_study.hpp"
+
+#include <cmath>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include <fmt/format.h>
+#include <fmt/ranges.h>
+
+#include "vibook/kepler/kepler.hpp"
+#include "vibook/problems/problems.hpp"
+
+namespace vibook::verify {
+
+namespace {
+
+using nlohmann::json;
+
+template <class P>
+auto mechanical_lagrangian(P prob) {
+  // L = |v|²/2 − V(q); the return type declared, as AutoDiff needs (autodiff.hpp)
+  return [prob](const auto& q, const auto& v) -> std::remove_cvref_t<decltype(q(0))> {
+    using T = std::remove_cvref_t<decltype(q(0))>;
+    return constant<T>(0.5) * squared_norm(v) - prob.template potential<T>(q);
+  };
+}
+
+// The one-step map (instantiated for each number of stages and problem); the rest of the
+// report depends on the problem only.
+template <int S, class P>
+Step galerkin_step(const P& prob, const Quadrature& rule) {
+  constexpr int N = P::N;
+  using Integrator = GalerkinIntegrator<N, S, decltype(mechanical_lagrangian(prob))>;
+  auto integrator = std::make_shared<Integrator>(mechanical_lagrangian(prob), rule);
+  return naming_failures(
+      [integrator](Eigen::VectorXd& z, double h) { step_qp<N>(*integrator, z, h); }, N);
+}
+
+template <class P>
+void measure(const MethodSpec& p, const TestProblem& problem, const std::vector<double>& q0,
+             const std::vector<double>& p0, MapStudy s, MapMeasurement& rep, const P& prob,
+             Step step) {
+  constexpr int N = P::N;
+  const int S = p.stages;
+  Eigen::VectorXd z0(2 * N);
+  for (int i = 0; i < N; ++i) {
+    z0(i) = q0[static_cast<std::size_t>(i)];
+    z0(N + i) = p0[static_cast<std::size_t>(i)];
+  }
+  s.step = std::move(step);
+  s.z0 = z0;
+  s.field = [&prob](const std::vector<dd_real>& y) {
+    Vec<dd_real, N> q;
+    for (int i = 0; i < N; ++i) q(i) = y[static_cast<std::size_t>(i)];
+    const Vec<dd_real, N> g = prob.template gradient<dd_real>(q);
+    std::vector<dd_real> r(2 * N);
+    for (int i = 0; i < N; ++i) {
+      r[static_cast<std::size_t>(i)] = y[static_cast<std::size_t>(N + i)];
+      r[static_cast<std::size_t>(N + i)] = -g(i);
+    }
+    return r;
+  };
+  s.H = [&prob](const Eigen::VectorXd& z) {
+    return energy(prob, Vec<double, N>(z.head<N>()), Vec<double, N>(z.tail<N>()));
+  };
+  s.expected = p.expected;
+  // A Galerkin step costs a nested-AutoDiff Hessian per Newton iteration: the walk of step
+  // counts stops at 2e5 stage evaluations a run (compositions: 1e6).
+  s.substeps = S;
+  s.max_substeps = 2e5;
+  s.require_reversible = true;  // Gauss and Lobatto IIIA-IIIB are symmetric
+
+  const bool gauss = p.rule.name == "gauss";
+  auto list = [](const std::vector<double>& v) {
+    std::vector<std::string> t;
+    for (double x : v) t.push_back(fmt::format("{:.12g}", x));
+    return fmt::format("{}", fmt::join(t, ", "));
+  };
+  rep.line(
+      "method",
+      fmt::format("{}:{}, the Galerkin variational integrator: the action of a polynomial of "
+                  "degree {} by {}-node {} quadrature; the {}-stage {} (HLW VI.6.4), "
+                  "symmetric, order {}",
+                  p.rule.name, S, S, S, gauss ? "Gauss-Legendre" : "Gauss-Lobatto", S,
+                  gauss ? "Gauss collocation method" : "Lobatto IIIA-IIIB pair", p.rule.order));
+  rep.line("  nodes", "c = " + list(p.rule.c));
+  rep.line("  weights", "b = " + list(p.rule.b));
+  rep.line("  solved by",
+           fmt::format("Newton's method on the {} interior control points and q1 together "
+                       "({} unknowns), derivatives by nested AutoDiff",
+                       S - 1, S * N));
+  rep.line("expected order", fmt::format("{:g} ({})", p.expected, p.expected_from));
+  rep.line("problem", fmt::format("{}: {}, q0 = {}, p0 = {}", problem.name, problem.hamiltonian,
+                                  vec_text(q0), vec_text(p0)));
+  rep.js["method"] = {{"name", p.name},
+                      {"family", p.rule.name},
+                      {"stages", S},
+                      {"nodes", p.rule.c},
+                      {"weights", p.rule.b},
+                      {"documented_order", p.rule.order},
+                      {"expected", p.expected},
+                      {"expected_from", p.expected_from}};
+  rep.js["problem"] = {{"name", problem.name}, {"q0", q0}, {"p0", p0}};
+  measure_map(s, rep);
+}
+
+template <int S>
+void measure_stages(const MethodSpec& p, const TestProblem& problem, const std::vector<double>& q0,
+                    const std::vector<double>& p0, const MapStudy& s, MapMeasurement& rep) {
+  if (problem.name == "pendulum")
+    return measure(p, problem, q0, p0, s, rep, Pendulum{}, galerkin_step<S>(Pendulum{}, p.rule));
+  if (problem.name == "henon-heiles")
+    return measure(p, problem, q0, p0, s, rep, HenonHeiles{},
+                   galerkin_step<S>(HenonHeiles{}, p.rule));
+  return measure(p, problem, q0, p0, s, rep, Kepler{}, galerkin_step<S>(Kepler{}, p.rule));
+}
+
+}  // namespace
+
+void measure_method(const MethodSpec& spec, const TestProblem& problem,
+                    const std::vector<double>& q0, const std::vector<double>& p0,
+                    const MapStudy& study, MapMeasurement& rep) {
+  switch (spec.stages) {
+    case 1:
+      return measure_stages<1>(spec, problem, q0, p0, study, rep);
+    case 2:
+      return measure_stages<2>(spec, problem, q0, p0, study, rep);
+    case 3:
+      return measure_stages<3>(spec, problem, q0, p0, study, rep);
+    case 4:
+      return measure_stages<4>(spec, problem, q0, p0, study, rep);
+    case 5:
+      return measure_stages<5>(spec, problem, q0, p0, study, rep);
+    default:
+      throw std::invalid_argument("measure_method: 1 to 5 stages");
+  }
+}
+
+}  // namespace vibook::verify
