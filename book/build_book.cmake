@@ -119,20 +119,8 @@ vibook_verify_case(verify-composition-swapped.txt 5 --composition se --coefficie
 
 # Galerkin variational integrators (the chapter's section "Galerkin variational integrators").
 vibook_verify_case(verify-method-lobatto3.txt 0 --method lobatto:3 --problem kepler)
-# The table of every Galerkin method on three problems takes about two minutes: the full book
-# build (VIBOOK_BOOK_BENCH, ./build.sh book) makes it; the test build says where it comes from.
-if(DEFINED ENV{VIBOOK_BOOK_BENCH})
-  execute_process(COMMAND ${PYTHON3} ${SOURCE_DIR}/book/method_table.py ${VIBOOK}
-                          ${GEN}/method-table.html
-                  RESULT_VARIABLE rc)
-  if(NOT rc EQUAL 0)
-    message(FATAL_ERROR "method_table.py failed (exit ${rc})")
-  endif()
-else()
-  file(WRITE ${GEN}/method-table.html
-       "<p><em>This table is made by the full book build (<code>./build.sh book</code>, about "
-       "two minutes for it); the test build leaves it out.</em></p>\n")
-endif()
+# Every Galerkin method on Kepler and Henon-Heiles is the long study field-audit-galerkin (rows
+# A-GAUSS1 ... A-LOBATTO5 of the ledger), measured in step 2 when VIBOOK_LONG_STUDIES is set.
 
 # Black boxes (the chapter's section "Any stepper as a black box"): Boost.Odeint's fourth-order
 # McLachlan stepper through the C ABI, which must pass; odeint's velocity Verlet called without

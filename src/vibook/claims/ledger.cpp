@@ -109,12 +109,15 @@ void Ledger::record(const ClaimResult& r) {
 }
 
 namespace {
-#define VIBOOK_COMPARISON_FIELDS(X)                                                        \
-  X(paper)                                                                                 \
-  X(display)                                                                               \
-  X(label)                                                                                 \
-  X(part) X(quote) X(against) X(ours) X(through) X(outcome) X(detail) X(corrected) X(edit) \
-      X(search) X(check) X(role) X(verified)
+#define VIBOOK_COMPARISON_FIELDS(X)                                                       \
+  X(paper)                                                                                \
+  X(display)                                                                              \
+  X(label)                                                                                \
+  X(part)                                                                                 \
+  X(quote)                                                                                \
+  X(against)                                                                              \
+  X(ours) X(through) X(outcome) X(detail) X(corrected) X(edit) X(search) X(check) X(role) \
+      X(verified)
 }  // namespace
 
 nlohmann::json to_json(const FormulaComparison& c) {
@@ -274,7 +277,7 @@ std::string break_at_underscores(const std::string& s) {
 constexpr std::pair<const char*, const char*> kPapers[] = {{"S", "Sharma et al. 2022"},
                                                            {"V", "Vermeeren 2017"},
                                                            {"SS", "Shen &amp; Sun 2025"},
-                                                           {"A", "Field audit: published methods"}};
+                                                           {"A", "Field audit"}};
 
 }  // namespace
 
@@ -414,6 +417,9 @@ constexpr Kind kKinds[] = {
      "not reproduced: depends on a reading the paper leaves open"},
     {"not-reproduced-edge-of-criterion", "at the edge",
      "not reproduced: at the edge of the criterion fixed beforehand"},
+    {"not-reproduced-pre-asymptotic", "still converging",
+     "not reproduced: the measured order is still converging at the smallest step sizes of the "
+     "window fixed beforehand"},
     {"not-reproduced-unexplained", "no cause given", "not reproduced: cause not given"},
     {"pending", "pending", "pending"}};
 
@@ -428,7 +434,8 @@ std::string kind_of(const ClaimResult& r) {
     case Status::pending:
       return "pending";
     case Status::not_reproduced:
-      if (r.cause == "does-not-hold" || r.cause == "open-reading" || r.cause == "edge-of-criterion")
+      if (r.cause == "does-not-hold" || r.cause == "open-reading" ||
+          r.cause == "edge-of-criterion" || r.cause == "pre-asymptotic")
         return "not-reproduced-" + r.cause;
       return "not-reproduced-unexplained";
   }
@@ -452,23 +459,35 @@ std::vector<std::string> Ledger::unexplained() const {
 std::string Ledger::to_summary_html() const {
   // Claims (the catalogue's IDs) counted once each, by status and cause; the errata (the
   // printed formulas found wrong) counted separately, never as claims.
-  std::string out =
-      "<table class=\"vibook-summary\">\n<tr><th rowspan=\"2\">paper</th><th "
-      "colspan=\"2\">reproduced</th><th rowspan=\"2\">erratum:<br>misprint</th><th "
-      "colspan=\"4\">not reproduced</th><th rowspan=\"2\">pending</th><th "
-      "rowspan=\"2\">claims</th><th rowspan=\"2\">errata<br>found</th></tr>\n<tr>";
-  for (const auto& k : kKinds) {
-    const std::string_view key = k.key;
-    if (key == "erratum-misprint" || key == "pending") continue;
-    out += fmt::format("<th>{}</th>", key == "reproduced" ? "as stated" : k.column);
-  }
-  out += "</tr>\n";
   auto is_claim = [](const Row& r) { return r.info.id.find("-ERR-") == std::string::npos; };
   auto count = [&](std::string_view paper, std::string_view kind) {
     return std::count_if(rows_.begin(), rows_.end(), [&](const Row& r) {
       return is_claim(r) && (paper.empty() || r.info.paper == paper) && kind_of(r.result) == kind;
     });
   };
+  // A cause of "not reproduced" gets a column when some claim has it ("does not hold" always),
+  // so that the table fits the column of the page.
+  std::vector<const Kind*> shown;
+  int causes = 0;
+  for (const auto& k : kKinds) {
+    const std::string_view key = k.key;
+    const bool cause = key.starts_with("not-reproduced-");
+    if (cause && key != "not-reproduced-does-not-hold" && count({}, key) == 0) continue;
+    shown.push_back(&k);
+    causes += cause ? 1 : 0;
+  }
+  std::string out = fmt::format(
+      "<table class=\"vibook-summary\">\n<tr><th rowspan=\"2\">paper</th><th "
+      "colspan=\"2\">reproduced</th><th rowspan=\"2\">erratum:<br>misprint</th><th "
+      "colspan=\"{}\">not reproduced</th><th rowspan=\"2\">pending</th><th "
+      "rowspan=\"2\">claims</th><th rowspan=\"2\">errata<br>found</th></tr>\n<tr>",
+      causes);
+  for (const Kind* k : shown) {
+    const std::string_view key = k->key;
+    if (key == "erratum-misprint" || key == "pending") continue;
+    out += fmt::format("<th>{}</th>", key == "reproduced" ? "as stated" : k->column);
+  }
+  out += "</tr>\n";
   auto errata = [&](std::string_view paper) {
     return std::count_if(rows_.begin(), rows_.end(), [&](const Row& r) {
       return !is_claim(r) && (paper.empty() || r.info.paper == paper) &&
@@ -482,13 +501,13 @@ std::string Ledger::to_summary_html() const {
   };
   for (const auto& [key, name] : kPapers) {
     out += fmt::format("<tr><td>{}</td>", name);
-    for (const auto& k : kKinds)
-      out += fmt::format("<td class=\"kind-{}\">{}</td>", k.key, count(key, k.key));
+    for (const Kind* k : shown)
+      out += fmt::format("<td class=\"kind-{}\">{}</td>", k->key, count(key, k->key));
     out += fmt::format("<td>{}</td><td>{}</td></tr>\n", claims_of(key), errata(key));
   }
   out += "<tr><td><b>all</b></td>";
-  for (const auto& k : kKinds)
-    out += fmt::format("<td class=\"kind-{}\"><b>{}</b></td>", k.key, count({}, k.key));
+  for (const Kind* k : shown)
+    out += fmt::format("<td class=\"kind-{}\"><b>{}</b></td>", k->key, count({}, k->key));
   out += fmt::format("<td><b>{}</b></td><td><b>{}</b></td></tr>\n</table>\n", claims_of({}),
                      errata({}));
   // Each claim that is not simply reproduced, headed by what failed, with a link to its row.

@@ -68,7 +68,8 @@ struct ClaimResult {
   /// errata listed correct it), "does-not-hold" (the statement fails, with the evidence in the
   /// note), "open-reading" (it depends on a reading the paper leaves open; the note shows each),
   /// "edge-of-criterion" (the measurement lies at the criterion fixed beforehand; the note says
-  /// by how much). Empty for a reproduced claim.
+  /// by how much), "pre-asymptotic" (a measured order still converging toward the stated one at
+  /// the smallest step sizes of the window fixed beforehand; the note gives the local slopes). Empty for a reproduced claim.
   std::string cause;
   std::vector<std::string> errata;  ///< the erratum IDs a "misprint" cause refers to
   /// One line naming what failed (a claim not reproduced) or what is misprinted: the claim's

@@ -1,6 +1,6 @@
 /// \file checks.hpp
 /// \brief The checks of the chapter "Verify your own integrator": the field audit of published
-/// composition methods (claims A-…, field_audit.hpp).
+/// composition methods and Galerkin variational integrators (claims A-…, field_audit.hpp).
 /// The registry (`figures/registry.hpp`) lists these in a fixed order; `vibook claims --check ID`
 /// and the doctests beside them call the same functions.
 ///
@@ -15,5 +15,7 @@ using claims::Check;
 using claims::Context;
 
 Check field_audit();  ///< field-audit: A-YOSHIDA4 … A-RUTH3, A-WRONG-* (field_audit.cpp)
+/// field-audit-galerkin: A-GAUSS1 … A-LOBATTO5 (long study, field_audit.cpp)
+Check field_audit_galerkin();
 
 }  // namespace vibook::checks

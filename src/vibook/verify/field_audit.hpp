@@ -21,7 +21,8 @@ namespace vibook::verify {
 struct AuditEntry {
   claims::ClaimInfo info;    ///< ID `A-…`, paper "A", where = the source, title
   std::string statement;     ///< what the source documents (or what a correct audit must do)
-  std::string base;          ///< the base method (composition_bases())
+  std::string method;        ///< a Galerkin method "gauss:S" or "lobatto:S" (then base is empty)
+  std::string base;          ///< a composition's base method (composition_bases())
   std::string coefficients;  ///< a catalogue name or an exact list, as `--coefficients` takes it
   std::optional<double> expected;  ///< the order a wrong row claims (catalogue rows: documented)
   /// Empty for a published method; for a wrong one, the parts its verdict must fail on every
@@ -29,7 +30,8 @@ struct AuditEntry {
   std::vector<std::string> must_flag;
 };
 
-/// The rows, in the book's order: the catalogue's methods, then the wrong ones.
+/// The rows, in the book's order: the catalogue's compositions, the wrong ones, then the
+/// Galerkin methods (measured by the long study field-audit-galerkin).
 const std::vector<AuditEntry>& audit_entries();
 
 /// The two problems of the audit.
@@ -38,8 +40,11 @@ const std::vector<std::string>& audit_problems();
 /// Measure one row on both problems and judge it by the criterion fixed in the chapter: a
 /// published method is `reproduced` when every part of the command's verdict passes on both
 /// problems; a wrong one is `reproduced` (flagged) when its verdict fails every part of
-/// `must_flag` on both. Otherwise `not-reproduced`, with the cause `does-not-hold` and a
-/// headline naming what failed or what was missed.
+/// `must_flag` on both. Otherwise `not-reproduced`, with a headline naming what failed or what
+/// was missed, and the cause `pre-asymptotic` when only the order failed and on each problem
+/// where it did the local slope between the two smallest fitted step sizes lies within the
+/// tolerance of the documented order (the fit's window is still above the asymptotic range),
+/// `does-not-hold` otherwise.
 claims::ClaimResult judge_audit_entry(const AuditEntry& a);
 
 }  // namespace vibook::verify
