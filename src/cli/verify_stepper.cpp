@@ -15,11 +15,9 @@
 //   When vibook is done it closes the stepper's stdin; the stepper should then exit.
 #include "verify_stepper.hpp"
 
-#include <dlfcn.h>
 #include <fcntl.h>
 #include <poll.h>
 #include <signal.h>
-#include <sys/stat.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -40,6 +38,7 @@
 #include "verify_map.hpp"
 #include "vibook/core/output_file.hpp"
 #include "vibook/modified/engine.hpp"
+#include "vibook/verify/black_box.hpp"
 #include "vibook/verify/expression.hpp"
 #include "vibook/verify/stepper_abi.h"
 
@@ -53,79 +52,9 @@ std::string vec_text(const double* v, int n) {
   return cli::vec_text(std::vector<double>(v, v + n));
 }
 
-// --- the two kinds of black box ---------------------------------------------------------------
+// --- the two kinds of black box: a library (vibook/verify/black_box.hpp) and a command ------
 
-class BlackBox {
- public:
-  virtual ~BlackBox() = default;
-  /// n steps of size h from (q, p), in place; a failure is a NumericalError saying why.
-  virtual void run(double h, long long n, double* q, double* p) = 0;
-};
-
-// A library behind the C ABI (stepper_abi.h), loaded into this process.
-class Library final : public BlackBox {
- public:
-  Library(const std::string& path, const std::string& arg, int dof) {
-    // A bare name would be searched on the library path; the user means the file.
-    const std::string file = path.find('/') == std::string::npos ? "./" + path : path;
-    struct stat st {};
-    if (::stat(file.c_str(), &st) != 0 || !S_ISREG(st.st_mode))
-      throw ArgumentError("--stepper-lib", "'" + path + "' is not a file");
-    handle_ = ::dlopen(file.c_str(), RTLD_NOW | RTLD_LOCAL);
-    if (!handle_) {
-      const char* e = ::dlerror();
-      throw ArgumentError("--stepper-lib",
-                          "cannot be loaded: " + std::string(e ? e : "dlopen failed"));
-    }
-    auto need = [&](const char* name) {
-      void* s = ::dlsym(handle_, name);
-      if (!s)
-        throw ArgumentError("--stepper-lib",
-                            fmt::format("'{}' does not export {} (the vibook "
-                                        "stepper ABI: vibook/verify/stepper_abi.h)",
-                                        path, name));
-      return s;
-    };
-    auto version = reinterpret_cast<int (*)()>(need("vibook_stepper_abi_version"));
-    auto create = reinterpret_cast<void* (*)(int, const char*)>(need("vibook_stepper_create"));
-    step_ = reinterpret_cast<int (*)(void*, double, double*, double*)>(need("vibook_stepper_step"));
-    destroy_ = reinterpret_cast<void (*)(void*)>(need("vibook_stepper_destroy"));
-    message_ = reinterpret_cast<const char* (*)(void*)>(::dlsym(handle_, "vibook_stepper_message"));
-    if (const int v = version(); v != VIBOOK_STEPPER_ABI_VERSION)
-      throw ArgumentError("--stepper-lib", fmt::format("'{}' implements stepper ABI version {}; "
-                                                       "this vibook speaks version {}",
-                                                       path, v, VIBOOK_STEPPER_ABI_VERSION));
-    context_ = create(dof, arg.c_str());
-    if (!context_)
-      throw ArgumentError("--stepper-lib",
-                          fmt::format("vibook_stepper_create({}, \"{}\") returned NULL{}", dof, arg,
-                                      reason(nullptr)));
-  }
-  ~Library() override {
-    if (context_) destroy_(context_);
-    if (handle_) ::dlclose(handle_);
-  }
-  Library(const Library&) = delete;
-  Library& operator=(const Library&) = delete;
-
-  void run(double h, long long n, double* q, double* p) override {
-    for (long long k = 0; k < n; ++k)
-      if (const int status = step_(context_, h, q, p); status != 0)
-        throw NumericalError(
-            fmt::format("vibook_stepper_step returned {}{}", status, reason(context_)));
-  }
-
- private:
-  std::string reason(void* context) const {
-    const char* m = message_ ? message_(context) : nullptr;
-    return m && *m ? std::string(": ") + m : std::string();
-  }
-  void* handle_ = nullptr;
-  void* context_ = nullptr;
-  int (*step_)(void*, double, double*, double*) = nullptr;
-  void (*destroy_)(void*) = nullptr;
-  const char* (*message_)(void*) = nullptr;
-};
+using verify::BlackBox;
 
 // A child process speaking the line protocol (file comment) on its stdin and stdout; its stderr
 // is ours, so a traceback reaches the user.
@@ -378,7 +307,7 @@ int run_n(const StepperOptions& o, const Plan& p) {
   // refused as an argument, before any measurement.
   std::unique_ptr<BlackBox> box;
   if (o.lib_given)
-    box = std::make_unique<Library>(o.lib, o.arg, N);
+    box = std::make_unique<verify::StepperLibrary>(o.lib, o.arg, N);
   else
     box = std::make_unique<Command>(o.cmd, N, p.timeout);
   const std::string which = o.lib_given ? "--stepper-lib" : "--stepper-cmd";

@@ -196,31 +196,11 @@ void measure(const CompositionSpec& p, const std::vector<double>& q0, const std:
         SymplecticEulerAdjoint<P>(prob), SymplecticEuler<P>(prob), c, adj));
   };
   const Step step = make_step();
-  Eigen::VectorXd z0(2 * N);
-  for (int i = 0; i < N; ++i) {
-    z0(i) = q0[static_cast<std::size_t>(i)];
-    z0(N + i) = p0[static_cast<std::size_t>(i)];
-  }
   line("problem", fmt::format("{}: {}, q0 = {}, p0 = {}", problem.name, problem.hamiltonian,
                               vec_text(q0), vec_text(p0)));
 
   study.step = step;
-  study.z0 = z0;
-  study.field = [&](const std::vector<dd_real>& y) {
-    using T = dd_real;
-    Vec<T, N> q;
-    for (int i = 0; i < N; ++i) q(i) = y[static_cast<std::size_t>(i)];
-    const Vec<T, N> g = prob.template gradient<T>(q);
-    std::vector<T> r(2 * N);
-    for (int i = 0; i < N; ++i) {
-      r[static_cast<std::size_t>(i)] = y[static_cast<std::size_t>(N + i)];
-      r[static_cast<std::size_t>(N + i)] = -g(i);
-    }
-    return r;
-  };
-  study.H = [&](const Eigen::VectorXd& z) {
-    return energy(prob, Vec<double, N>(z.head<N>()), Vec<double, N>(z.tail<N>()));
-  };
+  set_problem(study, problem, q0, p0);
   study.expected = expected;
   study.substeps = double(c.size());
   study.require_reversible = symmetric;

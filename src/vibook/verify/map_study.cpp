@@ -5,11 +5,15 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <stdexcept>
 
 #include <fmt/format.h>
 #include <fmt/ranges.h>
 
 #include "vibook/core/errors.hpp"
+#include "vibook/integrators/kernels.hpp"
+#include "vibook/kepler/kepler.hpp"
+#include "vibook/problems/problems.hpp"
 
 namespace vibook::verify {
 
@@ -67,6 +71,46 @@ void MapMeasurement::numerical(const std::string& part, const std::exception& e)
   failed.push_back(part);
   numerical_failure = true;
   if (first_error.empty()) first_error = part + ": " + e.what();
+}
+
+namespace {
+
+template <class P>
+void set_mechanical(MapStudy& s, const P& prob, const std::vector<double>& q0,
+                    const std::vector<double>& p0) {
+  constexpr int N = P::N;
+  if (q0.size() != std::size_t(N) || p0.size() != std::size_t(N))
+    throw std::invalid_argument("set_problem: the state has the wrong number of components");
+  Eigen::VectorXd z0(2 * N);
+  for (int i = 0; i < N; ++i) {
+    z0(i) = q0[static_cast<std::size_t>(i)];
+    z0(N + i) = p0[static_cast<std::size_t>(i)];
+  }
+  s.z0 = z0;
+  s.field = [prob](const std::vector<dd_real>& y) {
+    Vec<dd_real, N> q;
+    for (int i = 0; i < N; ++i) q(i) = y[static_cast<std::size_t>(i)];
+    const Vec<dd_real, N> g = prob.template gradient<dd_real>(q);
+    std::vector<dd_real> r(2 * N);
+    for (int i = 0; i < N; ++i) {
+      r[static_cast<std::size_t>(i)] = y[static_cast<std::size_t>(N + i)];
+      r[static_cast<std::size_t>(N + i)] = -g(i);
+    }
+    return r;
+  };
+  s.H = [prob](const Eigen::VectorXd& z) {
+    return energy(prob, Vec<double, N>(z.head<N>()), Vec<double, N>(z.tail<N>()));
+  };
+}
+
+}  // namespace
+
+void set_problem(MapStudy& s, const TestProblem& problem, const std::vector<double>& q0,
+                 const std::vector<double>& p0) {
+  if (problem.name == "pendulum") return set_mechanical(s, Pendulum{}, q0, p0);
+  if (problem.name == "henon-heiles") return set_mechanical(s, HenonHeiles{}, q0, p0);
+  if (problem.name == "kepler") return set_mechanical(s, Kepler{}, q0, p0);
+  throw std::invalid_argument("set_problem: no test problem '" + problem.name + "'");
 }
 
 Eigen::VectorXd run_map(const MapStudy& s, const Eigen::VectorXd& z0, double h, double T) {

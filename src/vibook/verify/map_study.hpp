@@ -83,6 +83,11 @@ struct MapStudy {
   std::string reversible_note;  ///< appended to the line when reversibility is not required
 };
 
+/// The test problem's part of a study: z0 = (q0, p0), Hamilton's equations of its typed
+/// potential in double-double (the reference) and its energy (problems/, kepler/).
+void set_problem(MapStudy& s, const TestProblem& problem, const std::vector<double>& q0,
+                 const std::vector<double>& p0);
+
 /// The reference, order, symplecticity, reversibility and energy parts, appended to `r`.
 void measure_map(const MapStudy& s, MapMeasurement& r);
 

@@ -44,33 +44,12 @@ Step galerkin_step(const P& prob, const Quadrature& rule) {
       [integrator](Eigen::VectorXd& z, double h) { step_qp<N>(*integrator, z, h); }, N);
 }
 
-template <class P>
 void measure(const MethodSpec& p, const TestProblem& problem, const std::vector<double>& q0,
-             const std::vector<double>& p0, MapStudy s, MapMeasurement& rep, const P& prob,
-             Step step) {
-  constexpr int N = P::N;
+             const std::vector<double>& p0, MapStudy s, MapMeasurement& rep, Step step) {
+  const int N = static_cast<int>(q0.size());
   const int S = p.stages;
-  Eigen::VectorXd z0(2 * N);
-  for (int i = 0; i < N; ++i) {
-    z0(i) = q0[static_cast<std::size_t>(i)];
-    z0(N + i) = p0[static_cast<std::size_t>(i)];
-  }
   s.step = std::move(step);
-  s.z0 = z0;
-  s.field = [&prob](const std::vector<dd_real>& y) {
-    Vec<dd_real, N> q;
-    for (int i = 0; i < N; ++i) q(i) = y[static_cast<std::size_t>(i)];
-    const Vec<dd_real, N> g = prob.template gradient<dd_real>(q);
-    std::vector<dd_real> r(2 * N);
-    for (int i = 0; i < N; ++i) {
-      r[static_cast<std::size_t>(i)] = y[static_cast<std::size_t>(N + i)];
-      r[static_cast<std::size_t>(N + i)] = -g(i);
-    }
-    return r;
-  };
-  s.H = [&prob](const Eigen::VectorXd& z) {
-    return energy(prob, Vec<double, N>(z.head<N>()), Vec<double, N>(z.tail<N>()));
-  };
+  set_problem(s, problem, q0, p0);
   s.expected = p.expected;
   // A Galerkin step costs a nested-AutoDiff Hessian per Newton iteration: the walk of step
   // counts stops at 2e5 stage evaluations a run (compositions: 1e6).
@@ -116,11 +95,10 @@ template <int S>
 void measure_stages(const MethodSpec& p, const TestProblem& problem, const std::vector<double>& q0,
                     const std::vector<double>& p0, const MapStudy& s, MapMeasurement& rep) {
   if (problem.name == "pendulum")
-    return measure(p, problem, q0, p0, s, rep, Pendulum{}, galerkin_step<S>(Pendulum{}, p.rule));
+    return measure(p, problem, q0, p0, s, rep, galerkin_step<S>(Pendulum{}, p.rule));
   if (problem.name == "henon-heiles")
-    return measure(p, problem, q0, p0, s, rep, HenonHeiles{},
-                   galerkin_step<S>(HenonHeiles{}, p.rule));
-  return measure(p, problem, q0, p0, s, rep, Kepler{}, galerkin_step<S>(Kepler{}, p.rule));
+    return measure(p, problem, q0, p0, s, rep, galerkin_step<S>(HenonHeiles{}, p.rule));
+  return measure(p, problem, q0, p0, s, rep, galerkin_step<S>(Kepler{}, p.rule));
 }
 
 }  // namespace

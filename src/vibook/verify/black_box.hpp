@@ -1,0 +1,43 @@
+/// \file black_box.hpp
+/// \brief A one-step method vibook did not write, as a black box: n steps of size h from
+/// (q, p), in place. StepperLibrary reaches a shared library through the C ABI of
+/// stepper_abi.h (loaded with dlopen, into this process); `vibook verify --stepper-lib` and the
+/// field audit's Boost.Odeint rows use it. (The line protocol of `--stepper-cmd` is the
+/// command's.)
+///
+/// Chapter: \ref chapter-verify (section "Any stepper as a black box").
+#pragma once
+
+#include <string>
+
+namespace vibook::verify {
+
+/// A black-box stepper.
+class BlackBox {
+ public:
+  virtual ~BlackBox() = default;
+  /// n steps of size h from (q, p), in place; a failure is a NumericalError saying why.
+  virtual void run(double h, long long n, double* q, double* p) = 0;
+};
+
+/// A library behind the C ABI (stepper_abi.h), loaded into this process. The constructor
+/// throws ArgumentError naming --stepper-lib when the file is missing, does not load, lacks a
+/// symbol, speaks another ABI version or its create returns NULL (with its message).
+class StepperLibrary final : public BlackBox {
+ public:
+  StepperLibrary(const std::string& path, const std::string& arg, int dof);
+  ~StepperLibrary() override;
+  StepperLibrary(const StepperLibrary&) = delete;
+  StepperLibrary& operator=(const StepperLibrary&) = delete;
+  void run(double h, long long n, double* q, double* p) override;
+
+ private:
+  std::string reason(void* context) const;
+  void* handle_ = nullptr;
+  void* context_ = nullptr;
+  int (*step_)(void*, double, double*, double*) = nullptr;
+  void (*destroy_)(void*) = nullptr;
+  const char* (*message_)(void*) = nullptr;
+};
+
+}  // namespace vibook::verify
