@@ -48,7 +48,8 @@ const std::vector<Check>& registry() {
                                          checks::vermeeren_fig3(),
                                          checks::shen_sun_fig1(),
                                          checks::check_ss_t13(),
-                                         checks::field_audit()};
+                                         checks::field_audit(),
+                                         checks::field_audit_odeint()};
   return all;
 }
 

@@ -15,6 +15,8 @@ using claims::Check;
 using claims::Context;
 
 Check field_audit();  ///< field-audit: A-YOSHIDA4 … A-RUTH3, A-WRONG-* (field_audit.cpp)
+/// field-audit-odeint: A-ODEINT-*, A-WRONG-EXPLICIT-EULER, A-WRONG-CACHED (field_audit.cpp)
+Check field_audit_odeint();
 /// field-audit-galerkin: A-GAUSS1 … A-LOBATTO5 (long study, field_audit.cpp)
 Check field_audit_galerkin();
 

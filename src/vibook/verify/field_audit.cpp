@@ -6,14 +6,23 @@
 
 #include <algorithm>
 #include <cmath>
+#include <fstream>
 #include <limits>
+#include <regex>
+#include <sstream>
 #include <stdexcept>
+
+#include <boost/numeric/odeint/stepper/base/symplectic_rkn_stepper_base.hpp>
+#include <boost/numeric/odeint/stepper/symplectic_rkn_sb3a_m4_mclachlan.hpp>
+#include <boost/numeric/odeint/stepper/symplectic_rkn_sb3a_mclachlan.hpp>
 
 #include <fmt/format.h>
 #include <fmt/ranges.h>
 
 #include "vibook/core/precision.hpp"
 #include "vibook/integrators/composition.hpp"
+#include "vibook/plot/gnuplot.hpp"
+#include "vibook/verify/black_box.hpp"
 #include "vibook/verify/checks.hpp"
 #include "vibook/verify/composition_study.hpp"
 #include "vibook/verify/map_study.hpp"
@@ -102,6 +111,63 @@ AuditEntry galerkin(const std::string& family, int stages) {
   return a;
 }
 
+// A Boost.Odeint stepper through the C ABI (examples/black_box/odeint_steppers.cpp, built as
+// vibook_odeint_steppers.so), held to `order` (the class's order_value, read at compile time).
+AuditEntry odeint_row(const std::string& id, const std::string& stepper, const std::string& cls,
+                      int order, bool symmetric, const std::string& what) {
+  AuditEntry a;
+  a.stepper = stepper;
+  a.expected = order;
+  a.require_reversible = symmetric;
+  a.info = {
+      id, "A",
+      "Boost.Odeint " + std::to_string(BOOST_VERSION / 100000) + "." +
+          std::to_string(BOOST_VERSION / 100 % 1000) + ", " + cls,
+      fmt::format("odeint {}: order {}, symplectic{}", cls, order, symmetric ? ", symmetric" : "")};
+  a.statement = fmt::format(
+      "{} Its order_value is {}; symplectic{}. Measured as a black box through the C ABI.", what,
+      order, symmetric ? " and symmetric" : "");
+  return a;
+}
+
+// The ordinal of a header's Doxygen brief of `cls` ("... of sixth order." -> 6), the brief
+// quoted in `quote`; 0 when the header or the brief is not found.
+int brief_order(const std::string& header, const std::string& cls, std::string& quote) {
+  std::ifstream f(std::string(VIBOOK_BOOST_INCLUDE) + "/" + header);
+  if (!f) return 0;
+  std::stringstream text;
+  text << f.rdbuf();
+  const std::string t = text.str();
+  const auto at = t.find("\\class " + cls);
+  if (at == std::string::npos) return 0;
+  const auto b = t.find("\\brief", at);
+  if (b == std::string::npos) return 0;
+  quote = t.substr(b + 7, t.find('\n', b) - b - 7);
+  while (!quote.empty() && quote.front() == ' ') quote.erase(0, 1);
+  static const char* ordinals[] = {"first", "second",  "third",  "fourth", "fifth",
+                                   "sixth", "seventh", "eighth", "ninth",  "tenth"};
+  const std::regex of_order(R"(of (\w+) order)");
+  std::smatch m;
+  if (!std::regex_search(quote, m, of_order)) return 0;
+  for (int k = 0; k < 10; ++k)
+    if (m[1] == ordinals[k]) return k + 1;
+  return 0;
+}
+
+// The module of examples/black_box/odeint_steppers.cpp: the installed copy for an installed
+// vibook, else the build tree's. Not finding it is an error of the installation, never a
+// finding about a stepper: std::runtime_error.
+std::shared_ptr<StepperLibrary> odeint_module(const std::string& arg, int dof) {
+  std::string path = VIBOOK_ODEINT_STEPPERS;
+  if (auto p = plot::installed_path(VIBOOK_INSTALL_ODEINT_REL); !p.empty()) path = p.string();
+  try {
+    return std::make_shared<StepperLibrary>(path, arg, dof);
+  } catch (const ArgumentError& e) {
+    throw std::runtime_error(std::string("field audit: Boost.Odeint's steppers module: ") +
+                             e.what());
+  }
+}
+
 double number_or_nan(const json& j) {
   return j.is_number() ? j.get<double>() : std::numeric_limits<double>::quiet_NaN();
 }
@@ -113,6 +179,7 @@ struct Measured {
   double order = NAN, symplectic = NAN, reversible = NAN, energy = NAN;
   double expected = NAN, tolerance = NAN;
   double last_slope = NAN;  // between the two smallest step sizes of the fit
+  std::string brief;        // a stepper's Doxygen brief, quoted
   std::string energy_verdict;
   json conditions, composition;
   std::string stopped;  // a measurement that threw: why
@@ -127,6 +194,35 @@ Measured measure_row(const AuditEntry& a, const std::string& problem_name) {
   if (!problem) throw std::logic_error("field audit: no test problem '" + problem_name + "'");
   MapMeasurement rep;
   MapStudy study;  // the command's defaults: T = 5, h = 0.05, 1e5 steps, tolerance 0.2
+  if (!a.stepper.empty()) {
+    // The header's brief and the module are the installation's: not finding them is an error
+    // (std::runtime_error out of the check), never a finding about a stepper.
+    double expected = a.expected.value_or(0);
+    if (!a.brief_header.empty()) {
+      std::string quote;
+      expected = brief_order(a.brief_header, a.brief_class, quote);
+      if (expected == 0)
+        throw std::runtime_error("field audit: no '\\brief ... of <ordinal> order' for " +
+                                 a.brief_class + " in " + VIBOOK_BOOST_INCLUDE + "/" +
+                                 a.brief_header);
+      rep.line("documented", fmt::format("order {:g}, from the brief of {}: \"{}\"", expected,
+                                         a.brief_class, quote));
+      rep.js["brief"] = quote;
+    }
+    const int n = static_cast<int>(problem->q0.size());
+    auto lib = odeint_module(a.stepper + "/" + problem_name, n);
+    study.step = naming_failures(
+        [lib, n](Eigen::VectorXd& z, double h) { lib->run(h, 1, z.data(), z.data() + n); }, n);
+    study.propagate = [lib, n](Eigen::VectorXd& z, double h, long long k) {
+      lib->run(h, k, z.data(), z.data() + n);
+    };
+    set_problem(study, *problem, problem->q0, problem->p0);
+    study.expected = expected;
+    study.require_reversible = a.require_reversible;
+    study.reversible_note = " (reported only: not documented as symmetric)";
+    measure_map(study, rep);  // a failed step is a NumericalError, reported as a part
+    return read(m, rep);
+  }
   if (!a.method.empty()) {
     const auto colon = a.method.find(':');
     MethodSpec spec;
@@ -177,6 +273,7 @@ Measured measure_row(const AuditEntry& a, const std::string& problem_name) {
 Measured read(Measured m, const MapMeasurement& rep) {
   m.failed = rep.failed;
   const json& js = rep.js;
+  if (js.contains("brief")) m.brief = js["brief"].get<std::string>();
   if (js.contains("order")) {
     const json& o = js["order"];
     m.order = number_or_nan(o["fitted"]);
@@ -223,13 +320,21 @@ std::string brief(const Measured& m) {
 
 }  // namespace
 
+namespace {
+std::string check_of(const AuditEntry& a);
+}  // namespace
+
 claims::ClaimResult judge_audit_entry(const AuditEntry& a) {
   std::vector<Measured> ms;
   for (const auto& problem : audit_problems()) ms.push_back(measure_row(a, problem));
   claims::ClaimResult r;
   r.id = a.info.id;
-  r.source = a.method.empty() ? "field-audit" : "field-audit-galerkin";
+  r.source = check_of(a);
+  std::string brief_quote;
+  for (const auto& m : ms)
+    if (!m.brief.empty()) brief_quote = m.brief;
   double worst_sym = 0, worst_rev = 0, worst_energy = 0;
+  r.values.emplace_back("expected_order", ms[0].expected);
   for (const auto& m : ms) {
     r.values.emplace_back("order_" + m.problem, m.order);
     r.values.emplace_back("last_local_slope_" + m.problem, m.last_slope);
@@ -239,10 +344,17 @@ claims::ClaimResult judge_audit_entry(const AuditEntry& a) {
   }
   // The order conditions do not depend on the problem: read from the first measurement.
   std::string conditions_text =
-      a.method.empty() ? "Order conditions not evaluated"
-                       : "A Galerkin method, so no composition conditions; its step equals the "
-                         "partitioned Runge–Kutta method it generates to 64 units in the last "
-                         "place (galerkin_test.cpp)";
+      !a.stepper.empty()
+          ? fmt::format("A black box: vibook_odeint_steppers.so through the C ABI, method {}{}",
+                        a.stepper,
+                        brief_quote.empty()
+                            ? std::string()
+                            : fmt::format("; the order claimed is the brief's: \"{}\" (order {:g})",
+                                          brief_quote, ms[0].expected))
+      : a.method.empty() ? "Order conditions not evaluated"
+                         : "A Galerkin method, so no composition conditions; its step equals the "
+                           "partitioned Runge–Kutta method it generates to 64 units in the last "
+                           "place (galerkin_test.cpp)";
   if (!ms[0].conditions.empty()) {
     const json& oc = ms[0].conditions;
     const auto residual = oc["residual_by_weight"].get<std::vector<double>>();
@@ -288,13 +400,20 @@ claims::ClaimResult judge_audit_entry(const AuditEntry& a) {
             fmt::format("{} on {}", fmt::join(m.failed, ", "), display_name(m.problem)));
     r.status = failures.empty() ? claims::Status::reproduced : claims::Status::not_reproduced;
     const std::string command =
-        a.method.empty() ? fmt::format("--composition {} --coefficients {}", a.base, a.coefficients)
-                         : "--method " + a.method;
+        !a.stepper.empty()
+            ? fmt::format(
+                  "--stepper-lib vibook_odeint_steppers.so --stepper-arg {}/PROBLEM "
+                  "--expected-order {:g}{}",
+                  a.stepper, ms[0].expected, a.require_reversible ? " --symmetric" : "")
+        : a.method.empty()
+            ? fmt::format("--composition {} --coefficients {}", a.base, a.coefficients)
+            : "--method " + a.method;
+    const bool composition = a.method.empty() && a.stepper.empty();
     r.note = fmt::format(
         "Criterion: every part of `vibook verify {}` passes on both problems ({}measured order "
         "within 0.2 of the documented one; symplectic at h, 2h, 4h; reversible when symmetric; "
         "energy bounded). {}",
-        command, a.method.empty() ? "order conditions to the documented order at 1e-12; " : "",
+        command, composition ? "order conditions to the documented order at 1e-12; " : "",
         measured);
     if (!failures.empty()) {
       // Pre-asymptotic: only the order failed, and wherever it did, the local slope at the two
@@ -336,25 +455,26 @@ claims::ClaimResult judge_audit_entry(const AuditEntry& a) {
 
 namespace {
 
-std::vector<claims::ClaimResult> run_compositions(const claims::Context&) {
-  std::vector<claims::ClaimResult> out;
-  for (const auto& a : audit_entries())
-    if (a.method.empty()) out.push_back(judge_audit_entry(a));
-  return out;
+// The check that measures a row.
+std::string check_of(const AuditEntry& a) {
+  return !a.method.empty()    ? "field-audit-galerkin"
+         : !a.stepper.empty() ? "field-audit-odeint"
+                              : "field-audit";
 }
 
-std::vector<claims::ClaimResult> run_galerkin(const claims::Context&) {
-  std::vector<claims::ClaimResult> out;
-  for (const auto& a : audit_entries())
-    if (!a.method.empty()) out.push_back(judge_audit_entry(a));
-  return out;
-}
-
-std::vector<std::string> ids(bool galerkin_rows) {
+std::vector<std::string> ids(const std::string& check) {
   std::vector<std::string> r;
   for (const auto& a : audit_entries())
-    if (a.method.empty() != galerkin_rows) r.push_back(a.info.id);
+    if (check_of(a) == check) r.push_back(a.info.id);
   return r;
+}
+
+// The rows of one check, measured and judged.
+std::vector<claims::ClaimResult> run_rows(const std::string& check) {
+  std::vector<claims::ClaimResult> out;
+  for (const auto& a : audit_entries())
+    if (check_of(a) == check) out.push_back(judge_audit_entry(a));
+  return out;
 }
 
 }  // namespace
@@ -391,6 +511,62 @@ const std::vector<AuditEntry>& audit_entries() {
                       "Yoshida's fourth-order triple jump built on symplectic Euler (order 1, "
                       "not symmetric) instead of a symmetric base of order 2.",
                       "se", "yoshida4", 4, {"order conditions", "order"}));
+    namespace odeint = boost::numeric::odeint;
+    using State = std::vector<double>;
+    r.push_back(odeint_row("A-ODEINT-VERLET", "velocity_verlet", "velocity_verlet", 2, true,
+                           "Boost.Odeint's velocity Verlet, reset before every step (it keeps "
+                           "the last acceleration otherwise). The class has no order_value; its "
+                           "documented order is 2."));
+    r.push_back(odeint_row("A-ODEINT-MCLACHLAN", "mclachlan4", "symplectic_rkn_sb3a_mclachlan",
+                           odeint::symplectic_rkn_sb3a_mclachlan<State>::order_value, true,
+                           "Boost.Odeint's symmetric B3A Runge–Kutta–Nyström method (McLachlan "
+                           "1995), six stages."));
+    r.push_back(odeint_row("A-ODEINT-M4", "mclachlan4_m4", "symplectic_rkn_sb3a_m4_mclachlan",
+                           odeint::symplectic_rkn_sb3a_m4_mclachlan<State>::order_value, true,
+                           "Boost.Odeint's symmetric B3A Runge–Kutta–Nyström method in its M4 "
+                           "form (McLachlan 1995)."));
+    for (auto [id, stepper, cls] :
+         {std::tuple{"A-ODEINT-MCLACHLAN-BRIEF", "mclachlan4", "symplectic_rkn_sb3a_mclachlan"},
+          std::tuple{"A-ODEINT-M4-BRIEF", "mclachlan4_m4", "symplectic_rkn_sb3a_m4_mclachlan"}}) {
+      AuditEntry a;
+      a.stepper = stepper;
+      a.require_reversible = true;
+      a.brief_header = std::string("boost/numeric/odeint/stepper/") + cls + ".hpp";
+      a.brief_class = cls;
+      a.info = {id, "A",
+                "Boost.Odeint " + std::to_string(BOOST_VERSION / 100000) + "." +
+                    std::to_string(BOOST_VERSION / 100 % 1000) + ", " + cls + ", Doxygen brief",
+                fmt::format("odeint {}: the order its Doxygen brief states", cls)};
+      a.statement = fmt::format(
+          "The order the class's Doxygen brief states (read from the installed header {} when "
+          "the check runs, and quoted in the note); symplectic and symmetric.",
+          a.brief_header);
+      r.push_back(a);
+    }
+    {
+      AuditEntry a =
+          odeint_row("A-WRONG-EXPLICIT-EULER", "explicit_euler", "symplectic_euler", 1, false, "");
+      a.info = {"A-WRONG-EXPLICIT-EULER", "A", "deliberately wrong",
+                "explicit Euler sold as symplectic Euler: flagged"};
+      a.statement =
+          "Explicit Euler (q1 = q0 + h p0, p1 = p0 - h grad V(q0)) behind the same ABI, held to "
+          "order 1 as if it were symplectic Euler. A correct audit must fail it on both problems, "
+          "naming symplectic.";
+      a.must_flag = {"symplectic"};
+      r.push_back(a);
+    }
+    {
+      AuditEntry a =
+          odeint_row("A-WRONG-CACHED", "velocity_verlet_cached", "velocity_verlet", 2, true, "");
+      a.info = {"A-WRONG-CACHED", "A", "deliberately wrong",
+                "odeint velocity_verlet without reset: flagged"};
+      a.statement =
+          "Boost.Odeint's velocity_verlet called without reset(): it reuses the acceleration of "
+          "the state it returned last, so the map depends on the previous call. Held to order 2, "
+          "a correct audit must fail it on both problems, naming order and symplectic.";
+      a.must_flag = {"order", "symplectic"};
+      r.push_back(a);
+    }
     for (int s = 1; s <= 4; ++s) r.push_back(galerkin("gauss", s));
     for (int s = 2; s <= 5; ++s) r.push_back(galerkin("lobatto", s));
     return r;
@@ -402,18 +578,29 @@ const std::vector<AuditEntry>& audit_entries() {
 
 namespace vibook::checks {
 
+// (Each check's definition is written out, `return {"ID", ...`: the report links its source.)
 Check field_audit() {
   return {"field-audit",
           "The field audit: published compositions and deliberately wrong ones on Kepler and "
           "Hénon–Heiles",
-          false, verify::ids(false), verify::run_compositions};
+          false, verify::ids("field-audit"),
+          [](const Context&) { return verify::run_rows("field-audit"); }};
+}
+
+Check field_audit_odeint() {
+  return {"field-audit-odeint",
+          "The field audit: Boost.Odeint's steppers through the C ABI, and two wrong ones, on "
+          "Kepler and Hénon–Heiles",
+          false, verify::ids("field-audit-odeint"),
+          [](const Context&) { return verify::run_rows("field-audit-odeint"); }};
 }
 
 Check field_audit_galerkin() {
   return {"field-audit-galerkin",
           "The field audit: Galerkin variational integrators (Gauss 1-4, Lobatto 2-5 nodes) on "
           "Kepler and Hénon–Heiles (long study: about 35 s)",
-          false, verify::ids(true), verify::run_galerkin};
+          false, verify::ids("field-audit-galerkin"),
+          [](const Context&) { return verify::run_rows("field-audit-galerkin"); }};
 }
 
 }  // namespace vibook::checks

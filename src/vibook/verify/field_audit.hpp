@@ -24,14 +24,23 @@ struct AuditEntry {
   std::string method;        ///< a Galerkin method "gauss:S" or "lobatto:S" (then base is empty)
   std::string base;          ///< a composition's base method (composition_bases())
   std::string coefficients;  ///< a catalogue name or an exact list, as `--coefficients` takes it
+  /// A Boost.Odeint stepper of examples/black_box/odeint_steppers.cpp, reached through the C
+  /// ABI (its METHOD; the module gets METHOD/PROBLEM), or empty.
+  std::string stepper;
+  bool require_reversible = false;  ///< for a stepper: its documentation says symmetric
+  /// For a stepper row whose claimed order is what a header's Doxygen brief says: the header
+  /// (under the Boost include directory) and the class; the order is read from the brief's
+  /// ordinal ("of sixth order") when the check runs.
+  std::string brief_header, brief_class;
   std::optional<double> expected;  ///< the order a wrong row claims (catalogue rows: documented)
   /// Empty for a published method; for a wrong one, the parts its verdict must fail on every
   /// problem ("order conditions", "order").
   std::vector<std::string> must_flag;
 };
 
-/// The rows, in the book's order: the catalogue's compositions, the wrong ones, then the
-/// Galerkin methods (measured by the long study field-audit-galerkin).
+/// The rows, in the book's order: the catalogue's compositions, the wrong ones, Boost.Odeint's
+/// steppers through the C ABI (with two wrong ones), then the Galerkin methods (measured by the
+/// long study field-audit-galerkin).
 const std::vector<AuditEntry>& audit_entries();
 
 /// The two problems of the audit.

@@ -12,14 +12,28 @@
 using namespace vibook;
 
 TEST_CASE("field audit: every published composition passes, every wrong one is flagged") {
-  const auto* check = figures::find("field-audit");
-  REQUIRE(check != nullptr);
-  const auto results = figures::run_check(*check, {});
-  std::size_t compositions = 0;
-  for (const auto& a : verify::audit_entries()) compositions += a.method.empty() ? 1 : 0;
-  REQUIRE(results.size() == compositions);
+  std::vector<claims::ClaimResult> results;
+  for (const char* id : {"field-audit", "field-audit-odeint"}) {
+    const auto* check = figures::find(id);
+    REQUIRE(check != nullptr);
+    for (auto& r : figures::run_check(*check, {})) results.push_back(std::move(r));
+  }
+  std::size_t measured = 0;  // every row but the Galerkin ones (a long study)
+  for (const auto& a : verify::audit_entries()) measured += a.method.empty() ? 1 : 0;
+  REQUIRE(results.size() == measured);
   for (const auto& r : results) {
     INFO(r.id, ": ", r.note);
+    if (r.id.ends_with("-BRIEF")) {
+      // The order a Boost header's Doxygen brief states, read when the check runs, against
+      // the stepper's measured order (4 on both problems: what the class's order_value says).
+      const double stated = r.value("expected_order");
+      CHECK(stated >= 1);
+      CHECK(std::abs(r.value("order_kepler") - 4) < 0.2);
+      CHECK(std::abs(r.value("order_henon-heiles") - 4) < 0.2);
+      CHECK(r.status == (std::abs(stated - 4) < 0.2 ? claims::Status::reproduced
+                                                    : claims::Status::not_reproduced));
+      continue;
+    }
     CHECK(r.status == claims::Status::reproduced);
     // The measured order is on the row, for both problems (a number, not a copied one).
     CHECK(std::isfinite(r.value("order_kepler")));
