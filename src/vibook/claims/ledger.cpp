@@ -219,9 +219,11 @@ nlohmann::json Ledger::to_json() const {
 }
 
 std::string Ledger::to_table() const {
-  std::string out = fmt::format("{:<10} {:<23} {}\n", "ID", "STATUS", "TITLE");
+  std::size_t w = 10;  // the longest ID
+  for (const auto& row : rows_) w = std::max(w, row.info.id.size());
+  std::string out = fmt::format("{:<{}} {:<23} {}\n", "ID", w, "STATUS", "TITLE");
   for (const auto& row : rows_) {
-    out += fmt::format("{:<10} {:<23} {}\n", row.info.id, to_string(row.result.status),
+    out += fmt::format("{:<{}} {:<23} {}\n", row.info.id, w, to_string(row.result.status),
                        row.info.title);
     for (const auto& [k, v] : row.result.values) out += fmt::format("{:>36} = {:.6g}\n", k, v);
   }
