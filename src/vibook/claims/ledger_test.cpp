@@ -37,11 +37,12 @@ TEST_CASE("the reproduction report: grouped by paper, one anchored row per claim
   r.source = "sharma-fig2";
   ledger.record(r);
   const std::string html = ledger.to_html();
-  // One heading and one table per paper, in the book's order.
-  CHECK(count(html, "<h2 class=\"vibook-paper\"") == 3);
-  CHECK(count(html, "<table class=\"vibook-claims\">") == 3);
+  // One heading and one table per paper, in the book's order, then the field audit.
+  CHECK(count(html, "<h2 class=\"vibook-paper\"") == 4);
+  CHECK(count(html, "<table class=\"vibook-claims\">") == 4);
   CHECK(html.find("id=\"paper-S\"") < html.find("id=\"paper-V\""));
   CHECK(html.find("id=\"paper-V\"") < html.find("id=\"paper-SS\""));
+  CHECK(html.find("id=\"paper-SS\"") < html.find("id=\"paper-A\""));
   // Every claim once, with its anchor and an evidence cell naming what measured it.
   CHECK(count(html, " id=\"claim-") == catalogue().size());
   const auto row = html.substr(html.find("id=\"claim-S-F2\""));

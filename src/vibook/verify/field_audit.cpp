@@ -326,7 +326,8 @@ std::string check_of(const AuditEntry& a);
 
 claims::ClaimResult judge_audit_entry(const AuditEntry& a) {
   std::vector<Measured> ms;
-  for (const auto& problem : audit_problems()) ms.push_back(measure_row(a, problem));
+  for (const auto& problem : a.problems.empty() ? audit_problems() : a.problems)
+    ms.push_back(measure_row(a, problem));
   claims::ClaimResult r;
   r.id = a.info.id;
   r.source = check_of(a);

@@ -36,6 +36,8 @@ struct AuditEntry {
   /// Empty for a published method; for a wrong one, the parts its verdict must fail on every
   /// problem ("order conditions", "order").
   std::vector<std::string> must_flag;
+  /// The problems it is measured on; empty: audit_problems() (Kepler and Hénon–Heiles).
+  std::vector<std::string> problems;
 };
 
 /// The rows, in the book's order: the catalogue's compositions, the wrong ones, Boost.Odeint's

@@ -83,15 +83,17 @@ TEST_CASE("field audit: a Galerkin row passes at its documented order and fails 
   const auto it = std::find_if(entries.begin(), entries.end(),
                                [](const auto& a) { return a.info.id == "A-GAUSS1"; });
   REQUIRE(it != entries.end());
-  // The implicit midpoint rule as the one-node Gauss Galerkin method: order 2 on both problems.
-  const auto r = verify::judge_audit_entry(*it);
+  // The implicit midpoint rule as the one-node Gauss Galerkin method, on the pendulum only (the
+  // audit's own rows are a long study): order 2.
+  verify::AuditEntry row = *it;
+  row.problems = {"pendulum"};
+  const auto r = verify::judge_audit_entry(row);
   INFO(r.note);
   CHECK(r.status == claims::Status::reproduced);
-  CHECK(std::abs(r.value("order_kepler") - 2) < 0.2);
+  CHECK(std::abs(r.value("order_pendulum") - 2) < 0.2);
   // Held to order 4 it fails, and not as "pre-asymptotic": its local slopes are 2.
-  verify::AuditEntry high = *it;
-  high.expected = 4;
-  const auto w = verify::judge_audit_entry(high);
+  row.expected = 4;
+  const auto w = verify::judge_audit_entry(row);
   CHECK(w.status == claims::Status::not_reproduced);
   CHECK(w.cause == "does-not-hold");
 }
