@@ -147,6 +147,10 @@ endforeach()
 #    VIBOOK_BOOK_BENCH is set (./build.sh book sets it; the test build does not).
 set(BENCH_JSON ${BINARY_DIR}/bench/bench.json)
 set(BENCH_EXE ${BINARY_DIR}/tests/bench/vibook_bench)
+if(DEFINED ENV{VIBOOK_BOOK_BENCH} AND NOT EXISTS ${BENCH_EXE})
+  message(FATAL_ERROR "VIBOOK_BOOK_BENCH is set but ${BENCH_EXE} is not built (./build.sh book "
+                      "builds it: cmake --build build --target vibook_bench)")
+endif()
 if(DEFINED ENV{VIBOOK_BOOK_BENCH} AND EXISTS ${BENCH_EXE})
   file(MAKE_DIRECTORY ${BINARY_DIR}/bench)
   message(STATUS "Running the benchmarks for the book (about two minutes)")

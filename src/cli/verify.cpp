@@ -1403,9 +1403,9 @@ std::function<int()> add_verify_command(CLI::App& app) {
                 "(S = 2-5), the Galerkin variational integrator with S stages (Gauss "
                 "collocation, order 2S; Lobatto IIIA-IIIB, order 2S-2)");
   c->add_option("--composition", o->composition,
-                "verify a composition of this base method instead of an --ld: sv, midpoint, se "
-                "or se-adjoint (order conditions at 120 digits, measured order, symplecticity, "
-                "reversibility, energy)");
+                "verify a composition of this base method instead of an --ld: sv, midpoint, se, "
+                "se-adjoint, or Shen & Sun's vi1, vi1-adjoint, vi2 (order conditions at 120 "
+                "digits, measured order, symplecticity, reversibility, energy)");
   c->add_option("--coefficients", o->coefficients,
                 "with --composition: a catalogue name (yoshida4, suzuki4, yoshida6, yoshida8, "
                 "mclachlan8, kahanli6, kahanli8, ruth3) or the stages' coefficients in order of "

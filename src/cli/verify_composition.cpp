@@ -34,7 +34,8 @@ Plan check(const CompositionOptions& o) {
   p.spec.base = verify::find_composition_base(o.base);
   if (!p.spec.base)
     throw ArgumentError("--composition",
-                        "unknown base method '" + o.base + "' (sv, midpoint, se or se-adjoint)");
+                        "unknown base method '" + o.base +
+                            "' (sv, midpoint, se, se-adjoint, vi1, vi1-adjoint or vi2)");
   p.problem = &find_test_problem(o.problem);
   if (o.coefficients.empty())
     throw ArgumentError("--coefficients",

@@ -21,6 +21,12 @@ case_ ruth3-typed 0 "" 'order 3 by the conditions' \
   -- --composition se --coefficients '7/24*,3/8,3/8*,-25/24,1*' --problem pendulum
 case_ kahanli6-midpoint 0 "" 'order 6 by the conditions' \
   -- --composition midpoint --coefficients kahanli6 --steps 4096
+case_ yoshida4-vi2 0 "" 'order 4 by the conditions' "Shen & Sun's VI-2" \
+  -- --composition vi2 --coefficients yoshida4 --problem henon-heiles
+case_ ruth3-vi1 0 "" 'order 3 by the conditions' \
+  -- --composition vi1 --coefficients ruth3 --problem kepler
+case_ triple-jump-vi1 5 "order conditions,order,energy" 'order 1 by the conditions' \
+  -- --composition vi1 --coefficients yoshida4 --expected-order 4
 case_ perturbed 5 "order conditions" 'weight 3 fails by' 'inexact coefficients' \
   -- --composition sv --coefficients "$Y6P" --expected-order 6
 case_ swapped 5 "order conditions,order,energy" 'order 2 by the conditions' \

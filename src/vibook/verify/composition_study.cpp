@@ -16,6 +16,7 @@
 #include <fmt/ranges.h>
 
 #include "vibook/integrators/kernels.hpp"
+#include "vibook/integrators/splitting.hpp"
 #include "vibook/kepler/kepler.hpp"
 #include "vibook/problems/problems.hpp"
 
@@ -30,7 +31,17 @@ const std::vector<CompositionBase>& composition_bases() {
        "adjoint kicks, then drifts"},
       {"se-adjoint", false,
        "adjoint symplectic Euler p1 = p0 - h grad U(q0), q1 = q0 + h p1 (kick, then drift), "
-       "order 1; its adjoint is se"}};
+       "order 1; its adjoint is se"},
+      {"vi1", false,
+       "Shen & Sun's VI-1 (3.3): symplectic-Euler sub-steps of H_i = p_i^2/2 + phi^[i], one per "
+       "coordinate, the potential split phi^[1] = phi^[2] = phi/2, order 1; its adjoint is "
+       "vi1-adjoint"},
+      {"vi1-adjoint", false,
+       "the adjoint of Shen & Sun's VI-1, the sub-steps reversed and each adjoint, order 1; its "
+       "adjoint is vi1"},
+      {"vi2", true,
+       "Shen & Sun's VI-2 (3.15), VI-1 after its adjoint at half steps, the potential split in "
+       "halves, symmetric, order 2"}};
   return b;
 }
 
@@ -192,8 +203,21 @@ void measure(const CompositionSpec& p, const std::vector<double>& q0, const std:
     if (b == "se")
       return wrap(comp::Composed<SymplecticEuler<P>, SymplecticEulerAdjoint<P>>(
           SymplecticEuler<P>(prob), SymplecticEulerAdjoint<P>(prob), c, adj));
-    return wrap(comp::Composed<SymplecticEulerAdjoint<P>, SymplecticEuler<P>>(
-        SymplecticEulerAdjoint<P>(prob), SymplecticEuler<P>(prob), c, adj));
+    if (b == "se-adjoint")
+      return wrap(comp::Composed<SymplecticEulerAdjoint<P>, SymplecticEuler<P>>(
+          SymplecticEulerAdjoint<P>(prob), SymplecticEuler<P>(prob), c, adj));
+    // Shen & Sun 2025 §3: the splitting methods, potential split α = 1/2 (splitting.hpp).
+    using Kernel = SplittingKernel<WeightedSplit<P>>;
+    const auto split = WeightedSplit<P>::alpha(0.5, prob);
+    if (b == "vi1")
+      return wrap(comp::Composed<Kernel, Kernel>(Kernel(split, SplittingMethod::vi1),
+                                                 Kernel(split, SplittingMethod::vi1_adjoint), c,
+                                                 adj));
+    if (b == "vi1-adjoint")
+      return wrap(comp::Composed<Kernel, Kernel>(Kernel(split, SplittingMethod::vi1_adjoint),
+                                                 Kernel(split, SplittingMethod::vi1), c, adj));
+    return wrap(comp::Composed<Kernel, Kernel>(Kernel(split, SplittingMethod::vi2),
+                                               Kernel(split, SplittingMethod::vi2), c, adj));
   };
   const Step step = make_step();
   line("problem", fmt::format("{}: {}, q0 = {}, p0 = {}", problem.name, problem.hamiltonian,

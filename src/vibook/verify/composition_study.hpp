@@ -27,7 +27,7 @@ struct CompositionBase {
   bool symmetric;
   std::string description;
 };
-/// sv, midpoint, se, se-adjoint.
+/// sv, midpoint, se, se-adjoint, vi1, vi1-adjoint, vi2.
 const std::vector<CompositionBase>& composition_bases();
 /// The base of that name, or nullptr.
 const CompositionBase* find_composition_base(const std::string& name);

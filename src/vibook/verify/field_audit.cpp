@@ -60,17 +60,23 @@ AuditEntry published(const std::string& name, const std::string& base,
   a.info = {"A-" + upper(name) + id_suffix, "A", e->source,
             fmt::format("{} on {}: order {}, symplectic{}", name, base, e->order,
                         palindromic ? ", symmetric" : "")};
-  a.statement = palindromic
-                    ? fmt::format(
-                          "A palindromic composition of {} stages of a symmetric method of order 2 "
-                          "with order {} for every such base; composed here of {}. Symplectic as a "
-                          "composition of symplectic maps, symmetric (its own adjoint) as a "
-                          "palindrome of a symmetric base.",
-                          e->stages, e->order, on)
-                    : fmt::format(
-                          "A composition of {} stages of {} and its adjoint with order {}; "
-                          "symplectic as a composition of symplectic maps (not symmetric).",
-                          e->stages, base, e->order);
+  if (palindromic)
+    a.statement = fmt::format(
+        "A palindromic composition of {} stages of a symmetric method of order 2 with order {} "
+        "for every such base; composed here of {}. Symplectic as a composition of symplectic "
+        "maps, symmetric (its own adjoint) as a palindrome of a symmetric base.",
+        e->stages, e->order, on);
+  else if (e->base == base)
+    a.statement = fmt::format(
+        "A composition of {} stages of {} and its adjoint with order {}; symplectic as a "
+        "composition of symplectic maps (not symmetric).",
+        e->stages, base, e->order);
+  else
+    a.statement = fmt::format(
+        "Documented as {} stages of {} and its adjoint with order {}. Its order conditions are "
+        "those of any first-order base with its adjoint, so the same stages of {} ({}) have order "
+        "{}; symplectic (not symmetric).",
+        e->stages, e->base, e->order, base, b.description, e->order);
   return a;
 }
 
@@ -492,7 +498,9 @@ const std::vector<AuditEntry>& audit_entries() {
          {"yoshida4", "suzuki4", "yoshida6", "yoshida8", "mclachlan8", "kahanli6", "kahanli8"})
       r.push_back(published(name, "sv"));
     r.push_back(published("yoshida6", "midpoint", "-MIDPOINT"));
+    r.push_back(published("yoshida6", "vi2", "-VI2"));
     r.push_back(published("ruth3", "se"));
+    r.push_back(published("ruth3", "vi1", "-VI1"));
     // Yoshida's sixth-order solution A as published (15 digits, stages w3 w2 w1 w0 w1 w2 w3)
     // with w1 changed in its eleventh digit (-1.17767998417887 -> -1.17767998416887) and
     // w0 = 1 - 2(w1 + w2 + w3) recomputed, so that the stages still sum to 1.
