@@ -75,8 +75,10 @@ int cmd_figures(std::vector<std::string> ids, const fs::path& out) {
     for (const auto& c : figures::registry()) {
       if (c.is_figure) todo.push_back(&c);
     }
+    // A long study without a figure (field-audit-galerkin) is a check: `vibook claims` runs it.
     if (figures::long_studies_enabled())
-      for (const auto& c : figures::long_studies()) todo.push_back(&c);
+      for (const auto& c : figures::long_studies())
+        if (c.is_figure) todo.push_back(&c);
   } else {
     for (const auto& id : ids) {
       const auto* c = figures::find(id);
