@@ -17,6 +17,11 @@ const TestProblem& find_test_problem(const std::string& name) {
                                        "' (kepler, pendulum or henon-heiles)");
 }
 
+void MapReport::variational_order_not_derived(const std::string& reason) {
+  line("variational order", "not derived: " + reason);
+  js["variational_order"] = {{"derived", false}, {"reason", reason}};
+}
+
 int MapReport::finish(bool json_given, const std::string& json_out) {
   js["verdict"] = {{"passed", failed.empty()}, {"failed", failed}, {"required", required}};
   line("verdict", fmt::format("{} ({})", failed.empty() ? "PASS" : "FAIL",

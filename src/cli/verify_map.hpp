@@ -37,6 +37,9 @@ const TestProblem& find_test_problem(const std::string& name);
 
 /// The report of a command: the measurement, and the exit status it ends with.
 struct MapReport : verify::MapMeasurement {
+  /// The variational order line of a route the engine does not reach (yet), with the reason;
+  /// the JSON says "derived": false. Nothing is judged on it.
+  void variational_order_not_derived(const std::string& reason);
   /// The verdict line; the report to stdout, the one-line summary to stderr, the JSON to
   /// `json_out` when given. Returns the exit status (0, 3 or 5; 4 from a failed write).
   int finish(bool json_given, const std::string& json_out);

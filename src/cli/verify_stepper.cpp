@@ -403,6 +403,9 @@ int run_n(const StepperOptions& o, const Plan& p) {
                       {"p0", p.p0}};
   measure_map(s, rep);
   box.reset();  // the child process ends before the report is printed
+  rep.variational_order_not_derived(
+      "a black-box stepper has no discrete Lagrangian to expand; its order is "
+      "the measured one");
   return rep.finish(o.json_given, o.json_out);
 }
 

@@ -639,6 +639,96 @@ int run_verify(const VerifyOptions& o, const verify::TypedDiscreteLagrangian& dl
   }
   js["order"] = jorder;
 
+  // --- 3b. the variational order from the engine (Marsden & West 2001, §2.3.1) ---------------
+  // L_d − L_d^E along the solutions of the intended L, expanded in h to the expected order: the
+  // first term that does not vanish is h^{r+1}, r the variational order. It is judged like the
+  // measured order, two-sided: r must be the expected order (an integer), so that every term
+  // below h^{p+1} vanishes and the h^{p+1} term does not.
+  json jvar;
+  const bool var_judged = p.expected == std::floor(p.expected) && p.expected <= modified::max_order;
+  const int var_k = static_cast<int>(std::min<double>(std::ceil(p.expected), modified::max_order));
+  if (N > 3) {
+    phases.push_back({"variational order", "skipped",
+                      "the symbolic engine is run for at most 3 dimensions", kOk, 0});
+    line("variational order", "not derived: the symbolic engine is run for at most 3 dimensions");
+  } else if (run("variational order", [&] {
+               jvar["checked_to"] = fmt::format("h^{}", var_k + 1);
+               jvar["expected"] = p.expected;
+               jvar["source"] =
+                   "engine: L_d - L_d^E along the solutions of the intended L, expanded about the "
+                   "step's midpoint (Marsden & West 2001, Sec. 2.3.1)";
+               int r = 0;
+               std::string first_term;
+               if (dl.has_hamiltonian() && !consistent) {
+                 // The Legendre transform of H is not the limit of L_d/h (consistency, above):
+                 // the h^1 term of L_d − L_d^E does not vanish.
+                 jvar["lagrangian_from"] = "none: h^-1 L_d does not tend to the Lagrangian of H";
+                 first_term = "the h^1 term, see consistency";
+               } else {
+                 std::lock_guard<std::mutex> lock(modified::ginac_mutex());
+                 auto jets = std::make_shared<modified::JetSpace>(N);
+                 modified::Engine engine(
+                     modified::symbolic_dl<N>(Ld, jets, "typed discrete Lagrangian"), var_k);
+                 modified::ex L;
+                 if (dl.has_hamiltonian()) {
+                   // The Lagrangian of H: the leading term of L_d/h, which the consistency part
+                   // has checked to be H's Legendre transform.
+                   L = engine.l_disc().at(0);
+                   jvar["lagrangian_from"] = "the leading term of h^-1 L_d, checked against H";
+                 } else {
+                   Vec<modified::ex, N> X, V;
+                   for (int i = 0; i < N; ++i) {
+                     X(i) = jets->x(0, i);
+                     V(i) = jets->x(1, i);
+                   }
+                   L = dl.lagrangian<N, modified::ex>(X, V);
+                   jvar["lagrangian_from"] = "the intended L";
+                 }
+                 const auto vo = engine.variational_order(L);
+                 json terms = json::array();
+                 for (const auto& d : vo.defect)
+                   terms.push_back(modified::canonical_string(d, modified::Format::text));
+                 jvar["defect"] = terms;  // [k]: the coefficient of h^{k+1} in L_d − L_d^E
+                 r = vo.order;
+                 if (r >= 0) first_term = terms[r].get<std::string>();
+               }
+               jvar["order"] = r >= 0 ? json(r) : json(nullptr);
+               const bool agrees_expected = r >= 0 && r == p.expected;
+               if (var_judged) jvar["passed"] = agrees_expected;
+               std::string measured;
+               if (jorder.is_object() && jorder.contains("fitted") &&
+                   jorder["fitted"].is_number()) {
+                 const double slope = jorder["fitted"].get<double>();
+                 const bool agrees = r >= 0 && std::abs(slope - r) < p.order_tol;
+                 jvar["agrees_with_measured"] = agrees;
+                 measured = fmt::format("; measured {:.3f}: {}", slope,
+                                        agrees ? "agrees" : "DISAGREES (a finding)");
+               }
+               const std::string term =
+                   first_term.size() <= 100
+                       ? first_term
+                       : fmt::format("a {}-character expression, in the JSON", first_term.size());
+               const std::string value =
+                   r >= 0
+                       ? fmt::format("{}: L_d - L_d^E = h^{} ({}) + O(h^{})", r, r + 1, term, r + 2)
+                       : fmt::format(
+                             "more than {}: every term of L_d - L_d^E through h^{} "
+                             "vanishes",
+                             var_k, var_k + 1);
+               line("variational order",
+                    value +
+                        (var_judged ? fmt::format("; expected {:g}: {}", p.expected,
+                                                  agrees_expected ? "yes" : "NO")
+                                    : fmt::format("; expected {:g}: not judged (not an integer "
+                                                  "up to {})",
+                                                  p.expected, modified::max_order)) +
+                        measured);
+             })) {
+  } else {
+    failed_line("variational order");
+  }
+  js["variational_order"] = jvar;
+
   // --- 4. symplecticity and reversibility of the one-step map ---------------------------------
   std::vector<Eigen::VectorXd> states{z0};
   if (zref.size() == z0.size()) states.push_back(zref);
@@ -909,6 +999,8 @@ int run_verify(const VerifyOptions& o, const verify::TypedDiscreteLagrangian& dl
   std::vector<std::pair<std::string, const json*>> required = {
       {"consistency", &jcons}, {"order", &jorder}, {"symplecticity", &jsym}, {"energy", &jen}};
   if (o.symmetric && system_reversible) required.emplace_back("reversibility", &jrev);
+  // The variational order, when the engine derived it and the expected order is an integer.
+  if (jvar.contains("passed")) required.emplace_back("variational order", &jvar);
   std::vector<std::string> required_names, failed_checks;
   for (const auto& [name, j] : required) {
     required_names.push_back(name);
@@ -1046,6 +1138,20 @@ int run_verify(const VerifyOptions& o, const verify::TypedDiscreteLagrangian& dl
                       fit.slope, fmt::join(used, ", "), p.t_end, fit.floor, fit.plateau),
           fmt::format("|p − {:g}| < {:g}", p.expected, p.order_tol), order_passed ? "yes" : "no",
           order_passed);
+    }
+    if (phase_of("variational order") && phase_of("variational order")->status == "skipped")
+      row("variational order", "not derived", "—",
+          "skipped: " + phase_of("variational order")->reason, false);
+    else if (failed_row("variational order", "variational order")) {
+      const bool judged = jvar.contains("passed");
+      row("variational order",
+          jvar["order"].is_null()
+              ? "more than " + std::to_string(var_k) + " (L_d − L_d^E vanishes through " +
+                    jvar.value("checked_to", std::string()) + ")"
+              : fmt::format("{}: L_d − L_d^E = O(h^{})", int(jvar["order"]),
+                            int(jvar["order"]) + 1),
+          judged ? fmt::format("r = {:g}, from the engine", p.expected) : "not judged",
+          judged ? (jvar["passed"] ? "yes" : "no") : "—", !judged || bool(jvar["passed"]));
     }
     if (failed_row("symplecticity", "symplecticity"))
       row("symplecticity",

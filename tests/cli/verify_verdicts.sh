@@ -17,25 +17,38 @@ HHARGS=(--potential "$HH" --q0 0,0.1 --p0 0.35,0 --steps 20000)
 # --- wrong discrete Lagrangians: the verdict that should fail does ----------------------------
 # Kinetic term doubled (mass 2): inconsistent with the intended L, so no order against the
 # reference of L, and an energy of ½|p|² + V far from conserved.
-case_ "kinetic doubled" 5 "consistency,order,energy" \
+# Its variational order is 0: L_d − L_d^E starts at h^1 with the extra kinetic energy.
+case_ "kinetic doubled" 5 "consistency,order,energy,variational order" \
   "consistency .*NO, the kinetic part \(terms in v\) is v1\^2\+v2\^2, expected 1/2\*v1\^2\+1/2\*v2\^2" \
-  "order .*: NO" "energy .*: large \(relative error" "verdict  *FAIL \(consistency, order, energy\)" -- \
+  "order .*: NO" "energy .*: large \(relative error" \
+  "variational order  *0: L_d - L_d\^E = h\^1 \(1/2\*v1\^2\+1/2\*v2\^2\) \+ O\(h\^2\); expected 2: NO; measured 0\.0[0-9]*: agrees" \
+  "verdict  *FAIL \(consistency, order, energy, variational order\)" -- \
   --ld 'h*((q1-q0)^2/h^2 - (V(q0)+4*V((q0+q1)/2)+V(q1))/6)' "${HHARGS[@]}"
 # The potential's sign reversed on the pendulum.
-case_ "potential sign" 5 "consistency,order,energy" \
+case_ "potential sign" 5 "consistency,order,energy,variational order" \
   "consistency .*NO, the part without v \(minus the potential\) is -cos\(x\), expected cos\(x\)" \
   "order .*: NO" "energy .*: large" -- \
   --ld 'h*((q1-q0)^2/(2*h^2) + (V(q0)+V(q1))/2)' --potential='-cos(x)' --q0 1 --p0 0.5 --steps 4096
 # A position-dependent mass typed while the default ½|v|² − V is intended: inconsistent.
 PDM='h*( (1+((q0+q1)/2)^2)*((q1-q0)/h)^2/2 - (V(q0)+V(q1))/2 )'
-case_ "mass not intended" 5 "consistency,order,energy" "consistency .*NO, the kinetic part" -- \
+case_ "mass not intended" 5 "consistency,order,energy,variational order" \
+  "consistency .*NO, the kinetic part" "variational order  *0: " -- \
   --ld "$PDM" --potential 'x^2/2+y^2/2' --q0 0.3,0.1 --p0 0.2,0.1 --steps 4096
 # A first-order method claimed to be second order: the order fails, and so does the energy,
-# whose error shrinks like h^1, not h^2.
+# whose error shrinks like h^1, not h^2, and the variational order (1: the h^2 term of
+# L_d − L_d^E does not vanish).
 SE='h*( ((q1-q0)/h)^2/2 - V(q1) )'
-case_ "order claimed too high" 5 "order,energy" "order  *1\.0[0-9]* .*expected 2 .*: NO" \
-  "energy .*bounded, not O\(h\^p\)" -- \
+case_ "order claimed too high" 5 "order,energy,variational order" \
+  "order  *1\.0[0-9]* .*expected 2 .*: NO" "energy .*bounded, not O\(h\^p\)" \
+  "variational order  *1: L_d - L_d\^E = h\^2 \(.*\); expected 2: NO; measured 1\.0[0-9]*: agrees" -- \
   --ld "$SE" --potential='-cos(x)' --q0 1 --p0 0.5 --h 0.005 --steps 20000
+# Simpson's rule on the linear interpolant (the README's example) claimed to be fourth order, as
+# Simpson's rule alone would suggest: the linear path limits it to order 2, measured and
+# variational (its energy error then shrinks like h^2, not the claimed h^4).
+case_ "Simpson claimed order 4" 5 "order,energy,variational order" \
+  "order  *(1\.99|2\.00)[0-9]* .*expected 4 .*: NO" \
+  "variational order  *2: L_d - L_d\^E = h\^3 \(.*\) \+ O\(h\^4\); expected 4: NO; measured (1\.99|2\.00)[0-9]*: agrees" -- \
+  --ld "$SIMPSON" "${HHARGS[@]}" --expected-order 4
 # Störmer–Verlet at ωh = 1.98: stable, but a 98 % energy error is "large" whatever its trend.
 case_ "energy large" 5 "energy" \
   "energy .*h = 1.98.*: large \(relative error 0.98 > 0.01.*shrinks like h\^2" -- \
@@ -53,13 +66,15 @@ case_ "order 2" 0 "" "order  *(1\.99|2\.00)[0-9]* .*: yes" "symplectic .*: yes" 
 # Order 1: symplectic Euler, and its modified Hamiltonian's h^1 term +p sin(x)/2 (for this
 # variant, q1 = q0 + h p0, p1 = p0 − h V'(q1); checked by hand against a numerical run).
 case_ "order 1" 0 "" "order  *(0\.99|1\.0)[0-9]* .*: yes" "time-reversible .*: NO \(reported only" \
+  "variational order  *1: .*expected 1: yes" \
   "H_1 = 1/2\*p1\*sin\(x1\)" "verdict  *PASS" -- \
   --ld "$SE" --potential='-cos(x)' --q0 1 --p0 0.5 --expected-order 1 --h 0.005 --steps 20000
 # Order 4 (a modified-potential Störmer–Verlet, the components and grad(V) of the language),
 # with --h-list reaching the round-off plateau: the plateau is left out of the fit.
 L4='h*( ((q1-q0)/h)^2/2*(1 + h^2/12*(cos(q0[1])+cos(q1[1]))) - (V(q0)+V(q1))/2 - h^2/48*(grad(V)(q0)^2 + grad(V)(q1)^2) )'
 case_ "order 4" 0 "" "order  *(3\.9|4\.0)[0-9]* over .*plateau points left out.*: yes" \
-  "verdict  *PASS" -- \
+  "variational order  *4: L_d - L_d\^E = h\^5 \(.*\) \+ O\(h\^6\); expected 4: yes; measured (3\.9|4\.0)[0-9]*: agrees" \
+  "verdict  *PASS \(consistency, order, symplecticity, energy, variational order\)" -- \
   --ld "$L4" --potential='-cos(x)' --q0 1 --p0 0.5 --expected-order 4 --steps 20000 \
   --h-list 0.2,0.1,0.05,0.025,0.0125,0.00625,0.003125,0.0015625,0.00078125,0.000390625
 # Position-dependent mass, the Lagrangian it was meant for: energy is its Legendre transform.

@@ -251,6 +251,38 @@ const std::vector<ex>& Engine::l_mesh() {
   return lmesh_;
 }
 
+// Marsden & West (2001) §2.3.1, the variational order. Both sides are expanded around the
+// midpoint t of the step [t − h/2, t + h/2]: L_d/h = Σ h^k ℓ_k (V (13), l_disc), and the
+// exact discrete Lagrangian over h, the mean of L along the solution through the step,
+//   (1/h) ∫_{−h/2}^{h/2} L(x(t + s), ẋ(t + s)) ds = Σ_{j even} h^j D^j L / (2^j (j + 1)!).
+// The jets x^{(ℓ)}, ℓ ≥ 2, are then those of the solutions of L: ẍ = F(x, ẋ) and its total
+// derivatives (jets_along with the h-free F).
+VariationalOrder Engine::variational_order(const ex& L) {
+  const auto& l = l_disc();
+  const JetSpace& J = *dl_.jets;
+  progress::set_stage("variational order: L_d − L_d^E to h^" + std::to_string(K_ + 1));
+  std::vector<ex> e;
+  ex DjL = GiNaC::expand(L);
+  for (int k = 0; k <= K_; ++k) {
+    if (k > 0) DjL = GiNaC::expand(J.total(DjL));
+    const ex mean = k % 2 == 0 ? DjL / (GiNaC::pow(numeric(2), k) * GiNaC::factorial(k + 1)) : 0;
+    e.push_back(GiNaC::expand(l[k] - mean));
+  }
+  const auto f0 = solve_for_acceleration(euler_lagrange({L}), 0);
+  std::vector<Series> F;
+  for (const ex& fi : f0[0]) F.push_back(Series::constant(fi));
+  std::vector<std::vector<ex>> uses;
+  for (const ex& ek : e) uses.push_back({ek});
+  const Series d = along(e, jets_along(F, uses, K_ + 1), K_ + 1);
+  VariationalOrder out;
+  out.checked = K_;
+  for (int k = 0; k <= K_; ++k) {
+    out.defect.push_back(GiNaC::expand(d.coeff(k)));
+    if (out.order < 0 && !vanishes(out.defect.back())) out.order = k;
+  }
+  return out;
+}
+
 std::vector<std::vector<ex>> Engine::euler_lagrange(const std::vector<ex>& L) const {
   const JetSpace& J = *dl_.jets;
   std::vector<std::vector<ex>> E;

@@ -165,6 +165,16 @@ Potential parse_potential(const std::string& s);
 SymbolicDL make_discrete_lagrangian(Method m, Potential p, int dim,
                                     std::optional<GiNaC::numeric> alpha = std::nullopt);
 
+/// The result of Engine::variational_order.
+struct VariationalOrder {
+  /// r, the first k with defect[k] ≠ 0; −1 when every coefficient through h^{checked + 1}
+  /// vanishes (the variational order is then more than `checked`).
+  int order = -1;
+  int checked = 0;  ///< the last k computed (the engine's order K)
+  /// L_d − L_d^E = Σ_k h^{k+1} defect[k] along the solutions of L, k = 0…checked.
+  std::vector<ex> defect;
+};
+
 /// Derivations to order K in h, computed on demand and cached.
 class Engine {
  public:
@@ -198,6 +208,16 @@ class Engine {
   /// Series Legendre transform of L_mod,K: H_mod,K(x, p, h) in the symbols x_i, p_i.
   std::vector<ex> h_mod();
 
+  /// Marsden & West (2001) §2.3.1: L_d is of *variational order* r when
+  /// L_d(q(0), q(h), h) − L_d^E(q(0), q(h), h) = O(h^{r+1}) on the solutions q of the
+  /// Euler–Lagrange equations of the intended Lagrangian `L`, where L_d^E (their (2.3.1),
+  /// the exact discrete Lagrangian) is the action of the solution from q(0) to q(h); their
+  /// Theorem 2.3.1 makes the method's order at least r. `L` is written in the jet symbols
+  /// J.x(0, i) and J.x(1, i) and must be regular. The defect is expanded around the step's
+  /// midpoint (V (13) for L_d, the midpoint Taylor rule for the action), the jets of order
+  /// ≥ 2 replaced along ẍ = F(x, ẋ) of L, and tested for zero coefficient by coefficient
+  /// through h^{order()+1}.
+  VariationalOrder variational_order(const ex& L);
   /// The modified equation as a first-order system in (x, p), p = ∂L_mod/∂ẋ the momentum of
   /// the Legendre transform: ẋ_i = ∂H_mod/∂p_i, ṗ_i = −∂H_mod/∂x_i (with the chain rule
   /// through a generic potential's derivatives). Returns {ẋ, ṗ}, each [k][i] the h^k

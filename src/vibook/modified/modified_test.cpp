@@ -179,6 +179,68 @@ TEST_CASE("engine: Legendre transform of L_mod is the Hamiltonian of the modifie
   for (int k = 1; k <= 4; ++k) CHECK(vanishes(s.coeff(k)));
 }
 
+// Marsden & West (2001) §2.3.1: the variational order is the first power of h at which L_d
+// departs from the exact discrete Lagrangian along solutions. Each case has a known answer and
+// the order is two-sided: the coefficient at h^{r+1} is nonzero, every earlier one vanishes.
+TEST_CASE("engine: variational order of discrete Lagrangians with known answers") {
+  using std::cos;
+  // The pendulum, L = v²/2 + cos x (U = −cos x): Störmer–Verlet and the midpoint rule are of
+  // variational order 2, symplectic Euler of order 1, and VI-2 (three points, the interior
+  // node eliminated) of order 2.
+  const auto pendulum_order = [](Method m, int K) {
+    Engine E(make_discrete_lagrangian(m, Potential::pendulum, 1), K);
+    const ex x = E.jets().x(0, 0), v = E.jets().x(1, 0);
+    return E.variational_order(v * v / 2 + cos(x));
+  };
+  for (Method m : {Method::sv, Method::midpoint, Method::vi2}) {
+    const auto r = pendulum_order(m, 3);
+    CHECK(r.order == 2);
+    REQUIRE(r.defect.size() == 4);
+    CHECK(!vanishes(r.defect[2]));
+  }
+  CHECK(pendulum_order(Method::se, 2).order == 1);
+  // Checked only to h^2 (K = 1): every coefficient vanishes, the order is "more than 1".
+  const auto short_check = pendulum_order(Method::sv, 1);
+  CHECK(short_check.order == -1);
+  CHECK(short_check.checked == 1);
+
+  // A nonlinear 1-D potential on templates: the doubled kinetic term is of order 0 (L_d/h does
+  // not tend to L), a potential sampled at q0 only of order 1.
+  auto J = std::make_shared<JetSpace>(1);
+  const ex x = J->x(0, 0), v = J->x(1, 0);
+  const ex L = v * v / 2 - (x * x / 2 + x * x * x * x / 4);
+  auto V = [](const ex& q) { return q * q / 2 + q * q * q * q / 4; };
+  auto doubled = [&](const auto& a, const auto& b, const ex& h) -> ex {
+    return (b(0) - a(0)) * (b(0) - a(0)) / h - h * V((a(0) + b(0)) / 2);
+  };
+  auto left = [&](const auto& a, const auto& b, const ex& h) -> ex {
+    return (b(0) - a(0)) * (b(0) - a(0)) / (2 * h) - h * V(a(0));
+  };
+  const auto rd = Engine(symbolic_dl<1>(doubled, J, "doubled kinetic"), 2).variational_order(L);
+  CHECK(rd.order == 0);
+  CHECK(vanishes(rd.defect[0] - v * v / 2));  // h^-1 L_d − L → v²
+  CHECK(Engine(symbolic_dl<1>(left, J, "left rectangle"), 2).variational_order(L).order == 1);
+
+  // The oscillator L = (v² − x²)/2, whose exact discrete Lagrangian is
+  // ((q0² + q1²) cos h − 2 q0 q1) / (2 sin h) = (q1 − q0)² cot(h)/2 − q0 q1 tan(h/2): with both
+  // functions of h cut after h^{m−1} (m even) it is of variational order exactly m. (Written as
+  // (q0² + q1²)·cot(h)/2 − …, the two 1/h terms cancel only after the expansion, which the
+  // engine's working precision of K + 3 powers does not reach.)
+  const ex Losc = (v * v - x * x) / 2;
+  for (int m : {4, 6}) {
+    auto truncated = [m](const auto& a, const auto& b, const ex& h) -> ex {
+      const GiNaC::symbol s("s");
+      const ex cot = GiNaC::series_to_poly((s * GiNaC::cos(s) / GiNaC::sin(s)).series(s == 0, m));
+      const ex tan = GiNaC::series_to_poly(GiNaC::tan(s / 2).series(s == 0, m));
+      return (b(0) - a(0)) * (b(0) - a(0)) / 2 * cot.subs(s == h) / h -
+             a(0) * b(0) * tan.subs(s == h);
+    };
+    const auto r = Engine(symbolic_dl<1>(truncated, J, "cut exact"), m + 1).variational_order(Losc);
+    INFO("m = " << m);
+    CHECK(r.order == m);
+  }
+}
+
 TEST_CASE("engine: bad input is a typed error") {
   CHECK_THROWS_AS(parse_method("rk4"), ArgumentError);
   CHECK_THROWS_AS(parse_potential("morse"), ArgumentError);
