@@ -192,6 +192,7 @@ class GalerkinIntegrator {
     for (int nu = 1; nu <= S; ++nu) w.template segment<N>((nu - 1) * N) = (double(nu) / S) * p0;
     Vec<double, M> grad;
     Mat<double, M> hess;
+    double phi = 0;  // Φ = A/h at the last evaluation
     // Φ's gradient and Hessian in X = (q0, W): Φ = Σ_i b_i L(B_i X) with B_i the linear map to
     // (q, v) at node i, so they are Σ b_i B_iᵀ ∇L and Σ b_i B_iᵀ ∇²L B_i, with ∇L and ∇²L in the
     // 2N variables (q, v) by nested AutoDiff (small, whatever S is).
@@ -201,6 +202,7 @@ class GalerkinIntegrator {
       using Out = ad::Dual2<K, double>;
       grad.setZero();
       hess.setZero();
+      phi = 0;
       for (int i = 0; i < S; ++i) {
         Eigen::Matrix<double, K, M> B = Eigen::Matrix<double, K, M>::Zero();
         for (int k = 0; k < N; ++k) {
@@ -233,6 +235,7 @@ class GalerkinIntegrator {
         Mat<double, K> Hl;
         for (int j = 0; j < K; ++j) Hl.col(j) = l.derivatives()(j).derivatives();
         const double b = rule_.b[static_cast<std::size_t>(i)];
+        phi += b * l.value().value();
         grad.noalias() += b * (B.transpose() * g);
         hess.noalias() += b * (B.transpose() * Hl * B);
       }
@@ -266,14 +269,21 @@ class GalerkinIntegrator {
       throw SolveError("Galerkin step: non-finite state", rep);
     q = q1;
     p = p1;
+    action_ = h * phi;
     return rep;
   }
+
+  /// The discrete Lagrangian of the last step, L_d(q0, q1, h) = A = h Φ at the solved
+  /// polynomial (Marsden & West's scaling, L_d ≈ ∫ L dt): the quadrature action with the
+  /// interior control points at their extremum for the step's two ends.
+  double action() const { return action_; }
 
  private:
   Lagrangian L_;
   Quadrature rule_;
   NewtonOptions options_;
   double ell_[S][S + 1]{}, dell_[S][S + 1]{};
+  double action_ = 0;
 };
 
 /// The partitioned Runge–Kutta method HLW Theorem VI.6.4 pairs with the Galerkin integrator on

@@ -184,8 +184,10 @@ struct Measured {
   std::vector<std::string> failed;
   double order = NAN, symplectic = NAN, reversible = NAN, energy = NAN;
   double expected = NAN, tolerance = NAN;
-  double last_slope = NAN;  // between the two smallest step sizes of the fit
-  std::string brief;        // a stepper's Doxygen brief, quoted
+  double last_slope = NAN;   // between the two smallest step sizes of the fit
+  double variational = NAN;  // the measured variational order (NaN: not measured, a black box)
+  bool has_variational = false;
+  std::string brief;  // a stepper's Doxygen brief, quoted
   std::string energy_verdict;
   json conditions, composition;
   std::string stopped;  // a measurement that threw: why
@@ -296,6 +298,10 @@ Measured read(Measured m, const MapMeasurement& rep) {
     if (fitted.size() >= 2)
       m.last_slope = std::log(e[fitted[1]] / e[fitted[0]]) / std::log(h[fitted[1]] / h[fitted[0]]);
   }
+  if (js.contains("variational_order") && js["variational_order"].contains("order")) {
+    m.has_variational = true;
+    m.variational = number_or_nan(js["variational_order"]["order"]);
+  }
   if (js.contains("symplecticity")) m.symplectic = number_or_nan(js["symplecticity"]["defect"]);
   if (js.contains("reversibility")) m.reversible = number_or_nan(js["reversibility"]["defect"]);
   if (js.contains("energy")) {
@@ -315,11 +321,13 @@ std::string brief(const Measured& m) {
   if (!m.stopped.empty())
     return fmt::format("{}: the measurement stopped: {}", display_name(m.problem), m.stopped);
   return fmt::format(
-      "{}: order {:.2f} (local slope {:.2f} at the smallest step sizes), symplectic defect {:.1e}, "
-      "reversibility defect {:.1e}, "
+      "{}: order {:.2f} (local slope {:.2f} at the smallest step sizes), {}symplectic defect "
+      "{:.1e}, reversibility defect {:.1e}, "
       "energy {} (relative error {:.1e}){}",
-      display_name(m.problem), m.order, m.last_slope, m.symplectic, m.reversible, m.energy_verdict,
-      m.energy,
+      display_name(m.problem), m.order, m.last_slope,
+      m.has_variational ? fmt::format("variational order {:.2f} (reported), ", m.variational)
+                        : std::string(),
+      m.symplectic, m.reversible, m.energy_verdict, m.energy,
       m.failed.empty() ? std::string(": every part passes")
                        : fmt::format(": FAILS {}", fmt::join(m.failed, ", ")));
 }
@@ -345,6 +353,7 @@ claims::ClaimResult judge_audit_entry(const AuditEntry& a) {
   for (const auto& m : ms) {
     r.values.emplace_back("order_" + m.problem, m.order);
     r.values.emplace_back("last_local_slope_" + m.problem, m.last_slope);
+    if (m.has_variational) r.values.emplace_back("variational_order_" + m.problem, m.variational);
     worst_sym = std::max(worst_sym, m.symplectic);
     worst_rev = std::max(worst_rev, m.reversible);
     worst_energy = std::max(worst_energy, m.energy);

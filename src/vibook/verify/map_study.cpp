@@ -264,6 +264,8 @@ void measure_map(const MapStudy& s, MapMeasurement& rep) {
     rep.failed.push_back("order");
   }
 
+  if (s.generating) measure_variational_order(s, rep);
+
   // --- symplecticity and reversibility -------------------------------------------------------
   std::vector<Eigen::VectorXd> states{z0};
   if (zref.size() == z0.size()) states.push_back(zref);
@@ -366,6 +368,222 @@ void measure_map(const MapStudy& s, MapMeasurement& rep) {
                         {"passed", ev.passed}};
   } catch (const NumericalError& e) {
     rep.numerical("energy", e);
+  }
+}
+
+namespace {
+
+// The walk of the variational order: h = 2^(-j/4) from 1 down to 2^-16, stopping below the
+// window; a method whose defects never enter the window (variational order 0) is fitted on its
+// 6 smallest step sizes, as in the order study.
+constexpr int kVarFirst = 0, kVarLast = 64;
+constexpr double kVarWindowLow = 1e-12, kVarWindow = 1e-8;
+
+// The shooting: q1(p0') = q(h) to a few units in the last place of the positions.
+constexpr int kShootIterations = 30;
+
+}  // namespace
+
+// Marsden & West (2001), §2.3.1: the variational order of L_d, measured along the exact
+// solution (map_study.hpp).
+void measure_variational_order(const MapStudy& s, MapMeasurement& rep) {
+  const Eigen::Index n2 = s.z0.size(), n = n2 / 2;
+  const Eigen::VectorXd p0 = s.z0.tail(n);
+  json jv;
+  try {
+    const double H0 = s.H(s.z0);
+    const double scale = std::max({1.0, std::abs(H0), 0.5 * p0.squaredNorm()});
+    // Hamilton's equations with the action's p·q' as one more component (L = p·q' − H, and H
+    // is constant along the exact solution, so ∫ L dt = ∫ p·q' dt − h H(z)).
+    const Field<dd_real> field = [&s, n](const std::vector<dd_real>& y) {
+      std::vector<dd_real> f = s.field(std::vector<dd_real>(y.begin(), y.end() - 1));
+      dd_real a = 0.0;
+      for (Eigen::Index i = 0; i < n; ++i)
+        a += y[static_cast<std::size_t>(n + i)] * f[static_cast<std::size_t>(i)];
+      f.push_back(a);
+      return f;
+    };
+    const double eps = std::numeric_limits<double>::epsilon();
+    // The points of the exact solution where the defect is measured: z(t) at t = T/4, T/2 and
+    // 3T/4, not the initial state alone. The test problems start at a point of symmetry
+    // (Kepler's perihelion; q·p = 0), where the terms of L_d − L_d^E that are odd under time
+    // reversal vanish, and a method of order 3 shows a defect of h^5 there.
+    std::vector<Eigen::VectorXd> starts;
+    for (int k = 1; k <= 3; ++k) {
+      std::vector<dd_real> y(static_cast<std::size_t>(n2));
+      for (Eigen::Index i = 0; i < n2; ++i) y[static_cast<std::size_t>(i)] = dd_real(s.z0(i));
+      const auto r = reference_solution<dd_real>(s.field, y, s.t_end * k / 4);
+      Eigen::VectorXd z(n2);
+      for (Eigen::Index i = 0; i < n2; ++i) z(i) = to_double(r.y[static_cast<std::size_t>(i)]);
+      starts.push_back(z);
+    }
+
+    // |L_d(q0, q(h), h) − L_d^E| from one state of the orbit; NaN where the method's step or the
+    // shooting fails (a step too large for it).
+    auto defect_from = [&](const Eigen::VectorXd& z0, double h, int& iterations) {
+      std::vector<dd_real> y0;
+      for (Eigen::Index i = 0; i < n2; ++i) y0.emplace_back(z0(i));
+      y0.emplace_back(0.0);
+      const Eigen::VectorXd q0 = z0.head(n);
+      const auto ref = reference_solution<dd_real>(field, y0, h);
+      Eigen::VectorXd target(n);
+      for (Eigen::Index i = 0; i < n; ++i)
+        target(i) = to_double(ref.y[static_cast<std::size_t>(i)]);
+      const dd_real exact = ref.y.back() - dd_real(h) * dd_real(s.H(z0));
+      const double tol = 8 * eps * std::max(1.0, target.lpNorm<Eigen::Infinity>());
+      Eigen::VectorXd p = z0.tail(n);
+      auto shoot = [&](const Eigen::VectorXd& pp, double& Ld) {
+        Eigen::VectorXd z(n2);
+        z << q0, pp;
+        Ld = s.generating(z, h);
+        return Eigen::VectorXd(z.head(n) - target);
+      };
+      for (iterations = 0; iterations < kShootIterations; ++iterations) {
+        double Ld = 0;
+        const Eigen::VectorXd r = shoot(p, Ld);
+        if (!r.allFinite() || !std::isfinite(Ld)) break;
+        if (r.lpNorm<Eigen::Infinity>() <= tol) return std::abs(to_double(dd_real(Ld) - exact));
+        Eigen::MatrixXd J(n, n);
+        for (Eigen::Index k = 0; k < n; ++k) {
+          const double d = 1e-6 * std::max(1.0, std::abs(p(k)));
+          Eigen::VectorXd pp = p, pm = p;
+          pp(k) += d;
+          pm(k) -= d;
+          double unused = 0;
+          J.col(k) = (shoot(pp, unused) - shoot(pm, unused)) / (2 * d);
+        }
+        const Eigen::VectorXd dp = J.fullPivLu().solve(-r);
+        if (!dp.allFinite()) break;
+        p += dp;
+      }
+      return std::numeric_limits<double>::quiet_NaN();
+    };
+    // The largest defect over the points of the orbit.
+    auto defect = [&](double h, int& iterations) {
+      double worst = 0;
+      iterations = 0;
+      for (const auto& z : starts) {
+        int it = 0;
+        const double d = defect_from(z, h, it);
+        iterations = std::max(iterations, it);
+        if (!std::isfinite(d)) return d;
+        worst = std::max(worst, d);
+      }
+      return worst;
+    };
+
+    std::vector<double> hs, ds, windowed;
+    std::vector<int> its;
+    for (int j = kVarFirst; j <= kVarLast; ++j) {
+      const double h = std::exp2(-0.25 * j);
+      int it = 0;
+      double d = std::numeric_limits<double>::quiet_NaN();
+      try {
+        d = defect(h, it);
+      } catch (const NumericalError&) {
+        // a step too large for the method: no point here
+      }
+      hs.push_back(h);
+      ds.push_back(d);
+      its.push_back(it);
+      const bool in = d <= kVarWindow * scale && d >= kVarWindowLow * scale;
+      windowed.push_back(in ? d : std::numeric_limits<double>::quiet_NaN());
+      if (d < kVarWindowLow * scale) break;
+    }
+    // Only the run of points in the window that ends at the smallest step counts: a defect
+    // that changes sign in the pre-asymptotic range passes through the window there too.
+    {
+      std::size_t i = windowed.size();
+      while (i > 0 && !std::isfinite(windowed[i - 1])) --i;  // below the window at the end
+      while (i > 0 && std::isfinite(windowed[i - 1])) --i;   // the run
+      for (std::size_t k = 0; k < i; ++k) windowed[k] = std::numeric_limits<double>::quiet_NaN();
+    }
+    bool fallback = false;
+    if (std::count_if(windowed.begin(), windowed.end(), [](double x) { return std::isfinite(x); }) <
+        4) {
+      fallback = true;
+      windowed = ds;
+      for (std::size_t i = 0; i + 6 < windowed.size(); ++i)
+        windowed[i] = std::numeric_limits<double>::quiet_NaN();
+    }
+    // log d = a + (r + 1) log h + c h: the defect is a power series in h, and its next term
+    // changes the local slope by O(h), which a plain fit over the window reads as a lower
+    // order (the local slopes of a sixth-order composition on Kepler climb from 6.2 to 6.9
+    // across the window).
+    std::vector<bool> used(hs.size(), false);
+    std::vector<std::size_t> pts;
+    for (std::size_t i = 0; i < hs.size(); ++i)
+      if (std::isfinite(windowed[i]) && windowed[i] > 0) pts.push_back(i);
+    double exponent = std::numeric_limits<double>::quiet_NaN(), plain = exponent;
+    if (pts.size() >= 3) {
+      const Eigen::Index m = static_cast<Eigen::Index>(pts.size());
+      Eigen::MatrixXd A(m, 3);
+      Eigen::VectorXd y(m);
+      for (Eigen::Index i = 0; i < m; ++i) {
+        const std::size_t k = pts[static_cast<std::size_t>(i)];
+        A.row(i) << 1.0, std::log(hs[k]), hs[k];
+        y(i) = std::log(windowed[k]);
+        used[k] = true;
+      }
+      plain = A.leftCols(2).colPivHouseholderQr().solve(y)(1);
+      exponent = m >= 4 ? Eigen::VectorXd(A.colPivHouseholderQr().solve(y))(1) : plain;
+    }
+    const double r = exponent - 1;
+    const bool agrees_expected = std::isfinite(r) && std::abs(r - s.expected) < s.order_tol;
+    double hmin = INFINITY, hmax = 0;
+    for (std::size_t i = 0; i < hs.size(); ++i)
+      if (used[i]) {
+        hmin = std::min(hmin, hs[i]);
+        hmax = std::max(hmax, hs[i]);
+      }
+    std::string measured;
+    if (rep.js.contains("order") && rep.js["order"]["fitted"].is_number() && std::isfinite(r)) {
+      const double slope = rep.js["order"]["fitted"].get<double>();
+      const bool agrees = std::abs(slope - r) < s.order_tol;
+      jv["agrees_with_measured"] = agrees;
+      measured = fmt::format("; measured order {:.3f}: {}", slope, agrees ? "agrees" : "differs");
+    }
+    rep.line(
+        "variational order",
+        std::isfinite(r)
+            ? fmt::format("{:.2f} (measured; reported, not part of the verdict): "
+                          "|L_d - L_d^E| ~ h^{:.2f}; expected {:g}: {}{}",
+                          r, exponent, s.expected, agrees_expected ? "agrees" : "differs", measured)
+            : fmt::format("not measured: {} of {} defects usable", pts.size(), hs.size()));
+    if (!pts.empty())
+      rep.line(
+          "  points",
+          fmt::format("largest over z(T/4), z(T/2), z(3T/4); h from {:.3g} to {:.3g}, {} of {} "
+                      "step sizes fitted ({}); L_d is {}",
+                      hmax, hmin, pts.size(), hs.size(),
+                      fallback ? "the window [1e-12, 1e-8]·scale was not reached: the 6 "
+                                 "smallest step sizes"
+                               : "defects in the window [1e-12, 1e-8]·scale, with an O(h) "
+                                 "correction",
+                      s.generating_from));
+    jv["h"] = hs;
+    jv["defect"] = ds;
+    jv["shooting_iterations"] = its;
+    jv["used_in_fit"] = used;
+    jv["fitted_exponent"] = std::isfinite(exponent) ? json(exponent) : json(nullptr);
+    jv["plain_fit_exponent"] = std::isfinite(plain) ? json(plain) : json(nullptr);
+    jv["order"] = std::isfinite(r) ? json(r) : json(nullptr);
+    jv["window"] = fallback ? json(nullptr) : json({kVarWindowLow * scale, kVarWindow * scale});
+    jv["expected"] = s.expected;
+    jv["tolerance"] = s.order_tol;
+    jv["source"] =
+        "measured: L_d(q0, q(h), h) - the action of the exact solution, Marsden & West 2001, "
+        "Sec. 2.3.1; L_d is " +
+        s.generating_from;
+    jv["derived"] = false;
+    jv["measured"] = true;
+    jv["agrees_with_expected"] = agrees_expected;
+    jv["judged"] = false;
+    rep.js["variational_order"] = jv;
+  } catch (const NumericalError& e) {
+    // reported only: a failure here is printed, and the verdict does not depend on it
+    rep.line("variational order", std::string("not measured (numerical): ") + e.what());
+    rep.js["variational_order"] = {{"measured", false}, {"error", e.what()}};
   }
 }
 

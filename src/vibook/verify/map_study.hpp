@@ -63,6 +63,13 @@ struct MapMeasurement {
   void numerical(const std::string& part, const std::exception& e);
 };
 
+/// One step of a variational method that also gives its discrete Lagrangian along the step:
+/// advances z = (q, p) in place and returns L_d(q0, q1, h) in Marsden & West's scaling
+/// (L_d ≈ the action ∫ L dt over the step). For a composition it is the sum of the stages'
+/// discrete Lagrangians at the positions the stages pass through (the interior points of the
+/// composed L_d); for a Galerkin method the quadrature action at the solved polynomial.
+using GeneratingStep = std::function<double(Eigen::VectorXd& z, double h)>;
+
 /// What is measured, and how.
 struct MapStudy {
   verify::Step step;  ///< one step of the map under test
@@ -81,6 +88,10 @@ struct MapStudy {
   double max_substeps = 1e6;
   bool require_reversible = false;
   std::string reversible_note;  ///< appended to the line when reversibility is not required
+  /// Optional: the method's step with its discrete Lagrangian. When given, the variational
+  /// order is measured and reported beside the order (measure_variational_order).
+  GeneratingStep generating;
+  std::string generating_from;  ///< how the step's L_d is formed, for the report
 };
 
 /// The test problem's part of a study: z0 = (q0, p0), Hamilton's equations of its typed
@@ -90,6 +101,18 @@ void set_problem(MapStudy& s, const TestProblem& problem, const std::vector<doub
 
 /// The reference, order, symplecticity, reversibility and energy parts, appended to `r`.
 void measure_map(const MapStudy& s, MapMeasurement& r);
+
+/// The variational order, measured (Marsden & West 2001, §2.3.1): L_d is of variational
+/// order r when L_d(q(0), q(h), h) − ∫_0^h L dt = O(h^{r+1}) along the exact solutions. For each
+/// h of a walk and each of the states z(T/4), z(T/2), z(3T/4) of the exact solution, the exact
+/// side is the action of the reference solution (Hamilton's equations in double-double, with
+/// ∫ p·q' dt as an extra component, less h·H); the method's side is `generating` from the
+/// momentum that makes its q1 equal the exact q(h) (Newton, central-difference Jacobian). The
+/// exponent r + 1 is fitted to the largest of the three defects in the window
+/// [1e-12, 1e-8]·scale, scale = max(1, |H0|, ½|p0|²), with an O(h) correction term. Reported
+/// (text and JSON "variational_order"), never part of the verdict: in double precision the
+/// window of an eighth-order method is still pre-asymptotic.
+void measure_variational_order(const MapStudy& s, MapMeasurement& r);
 
 /// Integrate over [0, T] with steps of h, the last shortened to end at T (verify::integrate),
 /// through `propagate` when the study has one.

@@ -35,20 +35,32 @@ auto mechanical_lagrangian(P prob) {
 
 // The one-step map (instantiated for each number of stages and problem); the rest of the
 // report depends on the problem only.
+// With it, the step that also returns the step's discrete Lagrangian (the variational order).
 template <int S, class P>
-Step galerkin_step(const P& prob, const Quadrature& rule) {
+std::pair<Step, GeneratingStep> galerkin_step(const P& prob, const Quadrature& rule) {
   constexpr int N = P::N;
   using Integrator = GalerkinIntegrator<N, S, decltype(mechanical_lagrangian(prob))>;
   auto integrator = std::make_shared<Integrator>(mechanical_lagrangian(prob), rule);
-  return naming_failures(
-      [integrator](Eigen::VectorXd& z, double h) { step_qp<N>(*integrator, z, h); }, N);
+  auto generating = std::make_shared<Integrator>(mechanical_lagrangian(prob), rule);
+  return {naming_failures(
+              [integrator](Eigen::VectorXd& z, double h) { step_qp<N>(*integrator, z, h); }, N),
+          [generating](Eigen::VectorXd& z, double h) {
+            step_qp<N>(*generating, z, h);
+            return generating->action();
+          }};
 }
 
 void measure(const MethodSpec& p, const TestProblem& problem, const std::vector<double>& q0,
-             const std::vector<double>& p0, MapStudy s, MapMeasurement& rep, Step step) {
+             const std::vector<double>& p0, MapStudy s, MapMeasurement& rep,
+             std::pair<Step, GeneratingStep> steps) {
   const int N = static_cast<int>(q0.size());
   const int S = p.stages;
-  s.step = std::move(step);
+  s.step = std::move(steps.first);
+  s.generating = std::move(steps.second);
+  s.generating_from = fmt::format(
+      "the {}-node quadrature action of the degree-{} polynomial through (q0, q1), its interior "
+      "control points solved",
+      S, S);
   set_problem(s, problem, q0, p0);
   s.expected = p.expected;
   // A Galerkin step costs a nested-AutoDiff Hessian per Newton iteration: the walk of step
