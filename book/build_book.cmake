@@ -117,6 +117,20 @@ vibook_verify_case(verify-composition-perturbed.txt 5 --composition sv --coeffic
 vibook_verify_case(verify-composition-swapped.txt 5 --composition se --coefficients
                    "3/8,7/24*,-25/24,3/8*,0,1*" --expected-order 3)
 
+# A method from its tableau (the chapter's section "A method from its tableau"), run in
+# examples/tableaus so that the report names the file as a reader would type it: Lobatto
+# IIIA-IIIB must pass, Lobatto IIIA for both halves must fail (not symplectic).
+function(vibook_verify_tableau out want file)
+  execute_process(COMMAND ${VIBOOK} verify --tableau ${file} ${ARGN} OUTPUT_FILE ${GEN}/${out}
+                  WORKING_DIRECTORY ${SOURCE_DIR}/examples/tableaus
+                  ERROR_VARIABLE err RESULT_VARIABLE rc)
+  if(NOT rc EQUAL want)
+    message(FATAL_ERROR "vibook verify (${out}) exited ${rc}, expected ${want}: ${err}")
+  endif()
+endfunction()
+vibook_verify_tableau(verify-tableau-lobatto3.txt 0 lobatto3-iiia-iiib.json)
+vibook_verify_tableau(verify-tableau-iiia.txt 5 wrong-lobatto3-iiia-only.json)
+
 # Galerkin variational integrators (the chapter's section "Galerkin variational integrators").
 vibook_verify_case(verify-method-lobatto3.txt 0 --method lobatto:3 --problem kepler)
 # Every Galerkin method on Kepler and Henon-Heiles is the long study field-audit-galerkin (rows

@@ -19,6 +19,7 @@
 #include "verify_composition.hpp"
 #include "verify_method.hpp"
 #include "verify_stepper.hpp"
+#include "verify_tableau.hpp"
 #include "verify_typed.hpp"
 #include "vibook/core/output_file.hpp"
 #include "vibook/core/progress.hpp"
@@ -127,6 +128,37 @@ int run(const VerifyOptions& o, const CLI::App& c) {
   }
   // The typed expressions' derivatives are derived symbolically: the limit covers that too.
   const Watchdog watchdog("verify", max_seconds, o.progress);
+  if (c.count("--method") > 0 && c.count("--tableau") > 0)
+    throw ArgumentError("--tableau", "does not apply to --method: give one method");
+  if (c.count("--tableau") > 0) {
+    // A partitioned Runge-Kutta method from its tableau (verify_tableau.cpp).
+    for (const char* opt :
+         {"--ld", "--lagrangian", "--hamiltonian", "--potential", "--dim", "--modified-order",
+          "--format", "--report", "--reference", "--composition", "--coefficients", "--stepper-lib",
+          "--stepper-cmd", "--stepper-arg", "--stepper-timeout"})
+      if (c.count(opt) > 0)
+        throw ArgumentError(opt, "does not apply to --tableau (see vibook verify --help)");
+    TableauOptions to;
+    to.file = o.tableau;
+    to.problem = o.problem;
+    to.q0 = o.q0;
+    to.p0 = o.p0;
+    to.t_end = o.t_end;
+    to.h_list = o.h_list;
+    to.expected = o.expected;
+    to.order_tol = o.order_tol;
+    to.h = o.h;
+    to.steps = o.steps;
+    to.floor = o.floor;
+    to.json_out = o.json_out;
+    to.json_given = o.json_given;
+    to.t_end_given = c.count("--t-end") > 0;
+    to.h_list_given = c.count("--h-list") > 0;
+    to.expected_given = c.count("--expected-order") > 0;
+    to.order_tol_given = c.count("--order-tol") > 0;
+    to.symmetric = o.symmetric;
+    return run_tableau(to);
+  }
   if (c.count("--method") > 0) {
     // A Galerkin variational integrator from the catalogue (verify_method.cpp).
     for (const char* opt :
@@ -159,7 +191,7 @@ int run(const VerifyOptions& o, const CLI::App& c) {
   if (stepper) {
     // Another program's stepper as a black box (verify_stepper.cpp).
     for (const char* opt : {"--ld", "--lagrangian", "--composition", "--coefficients",
-                            "--modified-order", "--format", "--report", "--reference"})
+                            "--modified-order", "--format", "--report", "--reference", "--tableau"})
       if (c.count(opt) > 0)
         throw ArgumentError(opt,
                             "does not apply to a black-box stepper (see vibook verify --help)");
@@ -230,7 +262,7 @@ int run(const VerifyOptions& o, const CLI::App& c) {
                         "applies only with --method, --composition or a black-box stepper");
   if (o.ld.empty() && c.count("--ld") == 0)
     throw ArgumentError("--ld",
-                        "is required (or --method NAME:S, --composition BASE "
+                        "is required (or --method NAME:S, --tableau FILE, --composition BASE "
                         "--coefficients LIST|NAME, --stepper-lib or --stepper-cmd)");
   progress::set_stage("reading the expressions and deriving L_d's derivatives");
   const int dim = o.dim.empty() ? 0 : static_cast<int>(parse_integer("--dim", o.dim));
@@ -277,6 +309,10 @@ std::function<int()> add_verify_command(CLI::App& app) {
                 "verify a catalogue method instead of an --ld: gauss:S (S = 1-4) or lobatto:S "
                 "(S = 2-5), the Galerkin variational integrator with S stages (Gauss "
                 "collocation, order 2S; Lobatto IIIA-IIIB, order 2S-2)");
+  c->add_option("--tableau", o->tableau,
+                "verify a partitioned Runge-Kutta method instead of an --ld: a JSON file with "
+                "the tableau (a, b; ahat, bhat for the momenta; order, symmetric, name, source), "
+                "entries as decimals or ratios such as \"5/24\"; see examples/tableaus");
   c->add_option("--composition", o->composition,
                 "verify a composition of this base method instead of an --ld: sv, midpoint, se, "
                 "se-adjoint, or Shen & Sun's vi1, vi1-adjoint, vi2 (order conditions at 120 "
@@ -287,7 +323,8 @@ std::function<int()> add_verify_command(CLI::App& app) {
                 "application, e.g. '7/24*,3/8,3/8*,-25/24,1*' (decimals or ratios; '*' marks the "
                 "adjoint)");
   c->add_option("--problem", o->problem,
-                "with --method, --composition or a stepper: the nonlinear test problem, kepler "
+                "with --method, --tableau, --composition or a stepper: the nonlinear test "
+                "problem, kepler "
                 "(default, eccentricity 0.5), pendulum or henon-heiles");
   c->add_option("--stepper-lib", o->stepper_lib,
                 "verify another library's one-step method as a black box: a shared library "

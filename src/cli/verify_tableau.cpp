@@ -1,0 +1,52 @@
+// `vibook verify --tableau FILE` (issue #25): the file and the other arguments checked before
+// any work, then the measurement of vibook/verify/tableau_study.hpp printed.
+#include "verify_tableau.hpp"
+
+#include <string>
+#include <vector>
+
+#include "args.hpp"
+#include "verify_map.hpp"
+#include "vibook/core/output_file.hpp"
+#include "vibook/verify/tableau_study.hpp"
+
+namespace vibook::cli {
+
+namespace {
+
+struct Plan {
+  verify::TableauSpec spec;
+  const TestProblem* problem = nullptr;
+  std::vector<double> q0, p0;
+  MapStudy study;  // the measurement settings
+};
+
+Plan check(const TableauOptions& o) {
+  Plan p;
+  p.spec = verify::read_tableau(o.file);
+  p.problem = &find_test_problem(o.problem);
+  check_initial_state(o, *p.problem, p.q0, p.p0, p.study);
+  if (o.expected_given) {
+    p.spec.expected = parse_number("--expected-order", o.expected);
+    if (!(p.spec.expected > 0 && p.spec.expected <= 10))
+      throw ArgumentError("--expected-order", "must lie in (0, 10]");
+    p.spec.expected_from = "--expected-order";
+  } else if (!p.spec.documented_order) {
+    throw ArgumentError("--expected-order",
+                        "is required: the tableau file '" + o.file + "' has no 'order'");
+  }
+  check_study_options(o, p.study);
+  if (o.json_given) check_output_path(o.json_out, "--json-out", true);
+  return p;
+}
+
+}  // namespace
+
+int run_tableau(const TableauOptions& o) {
+  const Plan p = check(o);
+  MapReport rep;
+  verify::measure_tableau(p.spec, *p.problem, p.q0, p.p0, p.study, o.symmetric, rep);
+  return rep.finish(o.json_given, o.json_out);
+}
+
+}  // namespace vibook::cli

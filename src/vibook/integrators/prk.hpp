@@ -1,0 +1,143 @@
+/// \file prk.hpp
+/// \brief A partitioned Runge–Kutta method from its tableau, for a mechanical problem
+/// H = ½|p|² + U(q): the route `vibook verify --tableau FILE` takes any pair (a, b) for q and
+/// (â, b̂) for p, explicit or implicit.
+///
+/// **The method** (Hairer, Lubich and Wanner, *Geometric Numerical Integration*, §II.2.2):
+///
+///     P_i = p0 − h Σ_j â_ij ∇U(Q_j),   Q_i = q0 + h Σ_j a_ij P_j,
+///     p1  = p0 − h Σ_i b̂_i ∇U(Q_i),    q1  = q0 + h Σ_i b_i P_i.
+///
+/// With q' = p the momenta stages enter linearly, so the stages are solved in the increments
+/// W_i = (Q_i − q0)/h alone: W = c̃ p0 − h M ∇U(q0 + h W), with c̃_i = Σ_j a_ij and M = A Â.
+/// Newton's method on W, with the Jacobian I + h² M ⊗ ∇²U(Q) (∇²U by AutoDiff of the
+/// problem's gradient). Carrying increments rather than Q keeps the round-off of q1 − q0 at
+/// u·|W| h instead of u·|q| (the same choice as the Galerkin integrator).
+///
+/// **Symplectic tableaus are variational.** When b = b̂ and b_i â_ij + b_j a_ji = b_i b_j
+/// (HLW §VI.4), the method is the variational partitioned Runge–Kutta method of the
+/// discrete Lagrangian L_d(q0, q1, h) = h Σ_i b_i L(Q_i, Q̇_i) extremized over the stage
+/// velocities (HLW Theorem VI.6.4 for the Galerkin case; Marsden & West 2001, §2.6.5); for
+/// L = ½|v|² − U the stage velocities are Q̇_i = P_i, so along the step
+/// L_d = h Σ_i b_i (½|P_i|² − U(Q_i)), which `action()` returns.
+///
+/// Chapter: \ref chapter-verify (section "A method from its tableau").
+#pragma once
+
+#include <cmath>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "vibook/core/autodiff.hpp"
+#include "vibook/core/errors.hpp"
+#include "vibook/core/newton.hpp"
+#include "vibook/core/types.hpp"
+
+namespace vibook {
+
+/// A partitioned Runge–Kutta tableau in double: the q-part (a, b) and the p-part (â, b̂), s
+/// stages each.
+struct PrkTableau {
+  std::vector<std::vector<double>> a, ahat;
+  std::vector<double> b, bhat;
+  int stages() const { return static_cast<int>(b.size()); }
+};
+
+/// The method of prk.hpp with S stages on a mechanical problem (`Problem::N`,
+/// `Problem::gradient`, a templated `Problem::potential`). `step` has the interface of the
+/// kernels: it advances (q, p) in place, reports the residual and iterations, and throws
+/// SolveError (leaving q and p as they were) when Newton does not converge or the result is
+/// not finite.
+template <int S, class Problem>
+class PartitionedRkMethod {
+ public:
+  static constexpr int N = Problem::N;
+  static constexpr int U = S * N;
+
+  PartitionedRkMethod(Problem P, const PrkTableau& t, NewtonOptions options = {})
+      : P_(std::move(P)), t_(t), options_(options) {
+    if (t_.stages() != S || static_cast<int>(t_.bhat.size()) != S ||
+        static_cast<int>(t_.a.size()) != S || static_cast<int>(t_.ahat.size()) != S)
+      throw std::invalid_argument("PartitionedRkMethod: the tableau must have S stages");
+    for (int i = 0; i < S; ++i) {
+      if (static_cast<int>(t_.a[i].size()) != S || static_cast<int>(t_.ahat[i].size()) != S)
+        throw std::invalid_argument("PartitionedRkMethod: a and ahat must be S x S");
+      double ci = 0;
+      for (int j = 0; j < S; ++j) {
+        ci += t_.a[i][j];
+        double m = 0;
+        for (int k = 0; k < S; ++k) m += t_.a[i][k] * t_.ahat[k][j];
+        M_[i][j] = m;
+      }
+      c_[i] = ci;
+    }
+  }
+
+  SolveReport step(Vec<double, N>& q, Vec<double, N>& p, double h) {
+    const Vec<double, N> q0 = q, p0 = p;
+    // W_i = (Q_i − q0)/h, started from the straight line W_i = c̃_i p0
+    Vec<double, U> w;
+    for (int i = 0; i < S; ++i) w.template segment<N>(i * N) = c_[i] * p0;
+    auto fj = [&](const Vec<double, U>& x, Vec<double, U>& F, Mat<double, U>& J,
+                  bool with_jacobian) {
+      Vec<double, N> g[S];
+      Mat<double, N> Hs[S];
+      for (int k = 0; k < S; ++k) {
+        const Vec<double, N> Qk = q0 + h * x.template segment<N>(k * N);
+        g[k] = P_.gradient(Qk);
+        if (with_jacobian)
+          Hs[k] = ad::jacobian<N>([&](const auto& y) { return P_.gradient(y); }, Qk);
+      }
+      for (int i = 0; i < S; ++i) {
+        Vec<double, N> Fi = x.template segment<N>(i * N) - c_[i] * p0;
+        for (int k = 0; k < S; ++k) Fi += h * M_[i][k] * g[k];
+        F.template segment<N>(i * N) = Fi;
+        if (with_jacobian)
+          for (int k = 0; k < S; ++k) {
+            Mat<double, N> block = (h * h * M_[i][k]) * Hs[k];
+            if (i == k) block += Mat<double, N>::Identity();
+            J.template block<N, N>(i * N, k * N) = block;
+          }
+      }
+    };
+    NewtonOptions opt = options_;
+    opt.step_abs = std::max(opt.step_abs, 4 * std::numeric_limits<double>::epsilon() *
+                                              std::max(1.0, p0.template lpNorm<Eigen::Infinity>()));
+    const SolveReport rep = newton_solve<U>(w, fj, opt, "partitioned Runge-Kutta stages");
+    Vec<double, N> g[S], Pst[S];
+    double action = 0;
+    for (int k = 0; k < S; ++k)
+      g[k] = P_.gradient(Vec<double, N>(q0 + h * w.template segment<N>(k * N)));
+    Vec<double, N> dq = Vec<double, N>::Zero(), dp = Vec<double, N>::Zero();
+    for (int i = 0; i < S; ++i) {
+      Pst[i] = p0;
+      for (int j = 0; j < S; ++j) Pst[i] -= h * t_.ahat[i][j] * g[j];
+      dq += t_.b[i] * Pst[i];
+      dp -= t_.bhat[i] * g[i];
+      const Vec<double, N> Qi = q0 + h * w.template segment<N>(i * N);
+      action += t_.b[i] * (0.5 * Pst[i].squaredNorm() - P_.potential(Qi));
+    }
+    const Vec<double, N> q1 = q0 + h * dq, p1 = p0 + h * dp;
+    if (!q1.allFinite() || !p1.allFinite())
+      throw SolveError("partitioned Runge-Kutta step: non-finite state", rep);
+    q = q1;
+    p = p1;
+    action_ = h * action;
+    return rep;
+  }
+
+  /// h Σ b_i (½|P_i|² − U(Q_i)) of the last step: its discrete Lagrangian L_d(q0, q1, h) when
+  /// the tableau satisfies the symplecticity conditions (file comment).
+  double action() const { return action_; }
+
+ private:
+  Problem P_;
+  PrkTableau t_;
+  NewtonOptions options_;
+  double M_[S][S]{};
+  double c_[S]{};
+  double action_ = 0;
+};
+
+}  // namespace vibook

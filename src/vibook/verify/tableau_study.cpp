@@ -1,0 +1,293 @@
+// A partitioned Runge–Kutta method from a tableau file, measured on a test problem
+// (tableau_study.hpp): the file read and checked, its conditions at 120 digits, the method of
+// integrators/prk.hpp on the problem, and the measurements of map_study.hpp. `vibook verify
+// --tableau` prints it.
+#include "vibook/verify/tableau_study.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <fstream>
+#include <memory>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include <fmt/format.h>
+#include <fmt/ranges.h>
+#include <nlohmann/json.hpp>
+
+#include "vibook/core/errors.hpp"
+#include "vibook/core/precision.hpp"
+#include "vibook/integrators/composition.hpp"
+#include "vibook/kepler/kepler.hpp"
+#include "vibook/problems/problems.hpp"
+
+namespace vibook::verify {
+
+namespace {
+
+using nlohmann::json;
+constexpr int kDigits = 120;
+// "Satisfied": entries typed as ratios leave 1e-120; decimals of 17 or more digits 1e-17.
+constexpr double kConditionTol = 1e-12;
+
+[[noreturn]] void bad(const std::string& path, const std::string& what) {
+  throw ArgumentError("--tableau", "'" + path + "': " + what);
+}
+
+// One entry at 120 digits: a string with a decimal or a ratio, or a JSON number as printed.
+mpfr_real entry(const std::string& path, const std::string& where, const json& j) {
+  std::string text;
+  if (j.is_string())
+    text = j.get<std::string>();
+  else if (j.is_number())
+    text = j.dump();
+  else
+    bad(path, where + " is not a number or a string holding one");
+  if (text.find('*') != std::string::npos) bad(path, where + " ('" + text + "') is not a number");
+  try {
+    return composition::parse_stage<mpfr_real>("--tableau", text).c;
+  } catch (const ArgumentError&) {
+    bad(path, where + " ('" + text + "') is not a decimal number or a ratio such as 5/24");
+  }
+}
+
+std::vector<mpfr_real> row(const std::string& path, const json& j, const std::string& name,
+                           std::size_t s) {
+  if (!j.is_array() || j.size() != s)
+    bad(path, fmt::format("'{}' must be a list of {} entries", name, s));
+  std::vector<mpfr_real> r;
+  for (std::size_t i = 0; i < s; ++i)
+    r.push_back(entry(path, fmt::format("{}[{}]", name, i), j[i]));
+  return r;
+}
+
+std::vector<std::vector<mpfr_real>> matrix(const std::string& path, const json& j,
+                                           const std::string& name, std::size_t s) {
+  if (!j.is_array() || j.size() != s)
+    bad(path, fmt::format("'{}' must be a list of {} rows", name, s));
+  std::vector<std::vector<mpfr_real>> m;
+  for (std::size_t i = 0; i < s; ++i) {
+    if (!j[i].is_array() || j[i].size() != s)
+      bad(path, fmt::format("row {} of '{}' must have {} entries", i, name, s));
+    std::vector<mpfr_real> r;
+    for (std::size_t k = 0; k < s; ++k)
+      r.push_back(entry(path, fmt::format("{}[{}][{}]", name, i, k), j[i][k]));
+    m.push_back(r);
+  }
+  return m;
+}
+
+std::vector<double> to_doubles(const std::vector<mpfr_real>& v) {
+  std::vector<double> d;
+  for (const auto& x : v) d.push_back(static_cast<double>(x));
+  return d;
+}
+
+}  // namespace
+
+TableauSpec read_tableau(const std::string& path) {
+  std::ifstream in(path);
+  if (!in) bad(path, "cannot be read");
+  std::stringstream text;
+  text << in.rdbuf();
+  json j;
+  try {
+    j = json::parse(text.str());
+  } catch (const json::exception& e) {
+    bad(path, std::string("is not JSON (") + e.what() + ")");
+  }
+  if (!j.is_object()) bad(path, "must hold a JSON object with 'a' and 'b'");
+  for (const auto& [key, value] : j.items())
+    if (key != "name" && key != "source" && key != "order" && key != "symmetric" && key != "a" &&
+        key != "b" && key != "ahat" && key != "bhat" && key != "c")
+      bad(path, "unknown key '" + key + "' (name, source, order, symmetric, a, b, ahat, bhat, c)");
+  if (!j.contains("b") || !j["b"].is_array() || j["b"].empty())
+    bad(path, "needs 'b', the list of weights");
+  const std::size_t s = j["b"].size();
+  if (s > static_cast<std::size_t>(kMaxTableauStages))
+    bad(path, fmt::format("has {} stages; at most {}", s, kMaxTableauStages));
+  if (!j.contains("a")) bad(path, "needs 'a', the s x s matrix of the positions' stages");
+
+  TableauSpec t;
+  t.file = path;
+  t.name = j.contains("name") && j["name"].is_string() ? j["name"].get<std::string>() : path;
+  t.source = j.contains("source") && j["source"].is_string() ? j["source"].get<std::string>()
+                                                             : "not given";
+  if (j.contains("order")) {
+    if (!j["order"].is_number() || !(j["order"].get<double>() > 0) || j["order"].get<double>() > 10)
+      bad(path, "'order' must be a number in (0, 10]");
+    t.documented_order = j["order"].get<double>();
+  }
+  if (j.contains("symmetric")) {
+    if (!j["symmetric"].is_boolean()) bad(path, "'symmetric' must be true or false");
+    t.symmetric_documented = j["symmetric"].get<bool>();
+  }
+
+  const MpfrDigits digits(kDigits);
+  const auto b = row(path, j["b"], "b", s);
+  const auto a = matrix(path, j["a"], "a", s);
+  const auto bhat = j.contains("bhat") ? row(path, j["bhat"], "bhat", s) : b;
+  const auto ahat = j.contains("ahat") ? matrix(path, j["ahat"], "ahat", s) : a;
+  auto absd = [](const mpfr_real& x) { return static_cast<double>(x < 0 ? mpfr_real(-x) : x); };
+  mpfr_real sb = 0, sbh = 0;
+  for (std::size_t i = 0; i < s; ++i) {
+    sb += b[i];
+    sbh += bhat[i];
+  }
+  t.weights_residual = std::max(absd(mpfr_real(sb - 1)), absd(mpfr_real(sbh - 1)));
+  if (j.contains("c")) {
+    const auto c = row(path, j["c"], "c", s);
+    t.row_sum_residual = 0;
+    for (std::size_t i = 0; i < s; ++i) {
+      mpfr_real r = 0;
+      for (std::size_t k = 0; k < s; ++k) r += a[i][k];
+      t.row_sum_residual = std::max(t.row_sum_residual, absd(mpfr_real(r - c[i])));
+    }
+  }
+  for (std::size_t i = 0; i < s; ++i) {
+    t.bhat_residual = std::max(t.bhat_residual, absd(mpfr_real(b[i] - bhat[i])));
+    for (std::size_t k = 0; k < s; ++k)
+      t.symplectic_residual =
+          std::max(t.symplectic_residual,
+                   absd(mpfr_real(b[i] * ahat[i][k] + bhat[k] * a[k][i] - b[i] * bhat[k])));
+  }
+  t.symplectic_conditions =
+      t.bhat_residual <= kConditionTol && t.symplectic_residual <= kConditionTol;
+  t.tableau.b = to_doubles(b);
+  t.tableau.bhat = to_doubles(bhat);
+  for (std::size_t i = 0; i < s; ++i) {
+    t.tableau.a.push_back(to_doubles(a[i]));
+    t.tableau.ahat.push_back(to_doubles(ahat[i]));
+  }
+  if (t.documented_order) {
+    t.expected = *t.documented_order;
+    t.expected_from = "the file's 'order'";
+  }
+  return t;
+}
+
+namespace {
+
+template <int S, class P>
+std::pair<Step, GeneratingStep> prk_steps(const P& prob, const PrkTableau& t) {
+  constexpr int N = P::N;
+  using Method = PartitionedRkMethod<S, P>;
+  auto method = std::make_shared<Method>(prob, t);
+  auto generating = std::make_shared<Method>(prob, t);
+  return {naming_failures([method](Eigen::VectorXd& z, double h) { step_qp<N>(*method, z, h); }, N),
+          [generating](Eigen::VectorXd& z, double h) {
+            step_qp<N>(*generating, z, h);
+            return generating->action();
+          }};
+}
+
+template <class P>
+std::pair<Step, GeneratingStep> steps_for(const P& prob, const PrkTableau& t) {
+  switch (t.stages()) {
+    case 1:
+      return prk_steps<1>(prob, t);
+    case 2:
+      return prk_steps<2>(prob, t);
+    case 3:
+      return prk_steps<3>(prob, t);
+    case 4:
+      return prk_steps<4>(prob, t);
+    case 5:
+      return prk_steps<5>(prob, t);
+    case 6:
+      return prk_steps<6>(prob, t);
+    default:
+      throw std::invalid_argument("measure_tableau: 1 to 6 stages");
+  }
+}
+
+std::string list(const std::vector<double>& v) {
+  std::vector<std::string> t;
+  for (double x : v) t.push_back(fmt::format("{:.12g}", x));
+  return fmt::format("{}", fmt::join(t, ", "));
+}
+
+}  // namespace
+
+void measure_tableau(const TableauSpec& spec, const TestProblem& problem,
+                     const std::vector<double>& q0, const std::vector<double>& p0,
+                     const MapStudy& study, bool require_reversible, MapMeasurement& rep) {
+  MapStudy s = study;
+  std::pair<Step, GeneratingStep> steps;
+  if (problem.name == "pendulum")
+    steps = steps_for(Pendulum{}, spec.tableau);
+  else if (problem.name == "henon-heiles")
+    steps = steps_for(HenonHeiles{}, spec.tableau);
+  else
+    steps = steps_for(Kepler{}, spec.tableau);
+  s.step = std::move(steps.first);
+  set_problem(s, problem, q0, p0);
+  s.expected = spec.expected;
+  s.substeps = spec.tableau.stages();
+  s.max_substeps = 1e6;
+  s.require_reversible = require_reversible || spec.symmetric_documented;
+  s.reversible_note = " (reported only: not said to be symmetric)";
+
+  const int S = spec.tableau.stages();
+  rep.line("tableau", fmt::format("{} ({} stages), from {}", spec.name, S, spec.file));
+  rep.line("  source", spec.source);
+  for (int i = 0; i < S; ++i)
+    rep.line(i == 0 ? "  a | ahat" : "", list(spec.tableau.a[static_cast<std::size_t>(i)]) + " | " +
+                                             list(spec.tableau.ahat[static_cast<std::size_t>(i)]));
+  rep.line("  b | bhat", list(spec.tableau.b) + " | " + list(spec.tableau.bhat));
+  rep.line("  solved by", fmt::format("Newton's method on the {} position stages ({} unknowns), "
+                                      "the Hessian of the potential by AutoDiff",
+                                      S, S * static_cast<int>(q0.size())));
+  rep.line("conditions",
+           fmt::format("at {} digits from the entries as written: weights sum to 1 within {:.1e}{}",
+                       kDigits, spec.weights_residual,
+                       spec.row_sum_residual >= 0
+                           ? fmt::format(", c = row sums of a within {:.1e}", spec.row_sum_residual)
+                           : std::string()));
+  rep.line("",
+           fmt::format("symplectic (b = bhat within {:.1e}; b_i ahat_ij + bhat_j a_ji = b_i bhat_j "
+                       "within {:.1e}; each <= {:.0e}): {}",
+                       spec.bhat_residual, spec.symplectic_residual, kConditionTol,
+                       spec.symplectic_conditions ? "yes" : "NO"));
+  rep.line("expected order", fmt::format("{:g} ({})", spec.expected, spec.expected_from));
+  rep.line("problem", fmt::format("{}: {}, q0 = {}, p0 = {}", problem.name, problem.hamiltonian,
+                                  vec_text(q0), vec_text(p0)));
+  rep.js["tableau"] = {
+      {"file", spec.file},
+      {"name", spec.name},
+      {"source", spec.source},
+      {"stages", S},
+      {"a", spec.tableau.a},
+      {"ahat", spec.tableau.ahat},
+      {"b", spec.tableau.b},
+      {"bhat", spec.tableau.bhat},
+      {"documented_order", spec.documented_order ? json(*spec.documented_order) : json(nullptr)},
+      {"symmetric", spec.symmetric_documented}};
+  rep.js["conditions"] = {
+      {"digits", kDigits},
+      {"weights_residual", spec.weights_residual},
+      {"row_sum_residual",
+       spec.row_sum_residual >= 0 ? json(spec.row_sum_residual) : json(nullptr)},
+      {"bhat_residual", spec.bhat_residual},
+      {"symplectic_residual", spec.symplectic_residual},
+      {"tolerance", kConditionTol},
+      {"symplectic", spec.symplectic_conditions}};
+  rep.js["problem"] = {{"name", problem.name}, {"q0", q0}, {"p0", p0}};
+  if (spec.symplectic_conditions) {
+    s.generating = std::move(steps.second);
+    s.generating_from =
+        "h sum_i b_i (|P_i|^2/2 - U(Q_i)) at the solved stages (the tableau is symplectic, so "
+        "the method is variational)";
+  }
+  measure_map(s, rep);
+  if (!spec.symplectic_conditions) {
+    const std::string reason =
+        "the tableau does not satisfy the symplecticity conditions, so the method has no "
+        "discrete Lagrangian";
+    rep.line("variational order", "not defined: " + reason);
+    rep.js["variational_order"] = {{"derived", false}, {"measured", false}, {"reason", reason}};
+  }
+}
+
+}  // namespace vibook::verify

@@ -1,0 +1,66 @@
+/// \file tableau_study.hpp
+/// \brief A partitioned Runge–Kutta method read from a tableau file (integrators/prk.hpp),
+/// measured on a test problem of map_study.hpp: its consistency and symplecticity conditions
+/// evaluated at 120 digits from the entries as written, then the one-step map's measured
+/// order, variational order (for a symplectic tableau), symplecticity, reversibility and energy.
+/// `vibook verify --tableau FILE` prints the measurement.
+///
+/// **The file** is JSON (examples/tableaus/ has four):
+///
+///     { "name": "Lobatto IIIA-IIIB",
+///       "source": "Hairer, Lubich & Wanner, Geometric Numerical Integration, Table II.2.2",
+///       "order": 4, "symmetric": true,
+///       "a":    [["0", "0", "0"], ["5/24", "1/3", "-1/24"], ["1/6", "2/3", "1/6"]],
+///       "b":    ["1/6", "2/3", "1/6"],
+///       "ahat": [["1/6", "-1/6", "0"], ["1/6", "1/3", "0"], ["1/6", "5/6", "0"]],
+///       "bhat": ["1/6", "2/3", "1/6"] }
+///
+/// Entries are strings holding a decimal number or a ratio of two (read exactly), or JSON
+/// numbers (read as the decimal they are printed as). `a` and `b` are required; `ahat`
+/// defaults to `a` and `bhat` to `b` (a Runge–Kutta method); `c` is optional and checked
+/// against the row sums of `a`; `order`, `symmetric`, `name` and `source` are optional.
+///
+/// Chapter: \ref chapter-verify (section "A method from its tableau").
+#pragma once
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "vibook/integrators/prk.hpp"
+#include "vibook/verify/map_study.hpp"
+
+namespace vibook::verify {
+
+/// The largest number of stages a tableau may have.
+constexpr int kMaxTableauStages = 6;
+
+/// A tableau as read, with its conditions evaluated at 120 digits.
+struct TableauSpec {
+  std::string file, name, source;
+  PrkTableau tableau;  ///< the entries rounded to double
+  std::optional<double> documented_order;
+  bool symmetric_documented = false;
+  // Residuals at 120 digits (the largest over the entries of each condition):
+  double weights_residual = 0;         ///< |Σ b_i − 1| and |Σ b̂_i − 1|
+  double row_sum_residual = -1;        ///< |Σ_j a_ij − c_i| where c is given (−1: not given)
+  double bhat_residual = 0;            ///< |b_i − b̂_i|
+  double symplectic_residual = 0;      ///< |b_i â_ij + b̂_j a_ji − b_i b̂_j|
+  bool symplectic_conditions = false;  ///< both of the last two at most 1e-12
+  double expected = 0;
+  std::string expected_from;
+};
+
+/// Read and check a tableau file: ArgumentError naming --tableau for a file that cannot be
+/// read, is not JSON, or whose entries are missing, of the wrong shape, not numbers, or more
+/// than kMaxTableauStages stages. `expected` is set from the file's order when present.
+TableauSpec read_tableau(const std::string& path);
+
+/// Measure the method on `problem` from (q0, p0) with the settings of `study` (its step,
+/// state, field, energy and expected order are set here; reversibility is required when
+/// `require_reversible` is set or the file says the method is symmetric); appended to `rep`.
+void measure_tableau(const TableauSpec& spec, const TestProblem& problem,
+                     const std::vector<double>& q0, const std::vector<double>& p0,
+                     const MapStudy& study, bool require_reversible, MapMeasurement& rep);
+
+}  // namespace vibook::verify
