@@ -119,6 +119,26 @@ Plan check(const VerifyOptions& o, const verify::TypedDiscreteLagrangian& dl) {
   return p;
 }
 
+// The options every one-step-map route shares, as typed, with the flags of those given.
+void set_study_options(StudyOptions& s, const VerifyOptions& o, const CLI::App& c) {
+  s.problem = o.problem;
+  s.q0 = o.q0;
+  s.p0 = o.p0;
+  s.t_end = o.t_end;
+  s.h_list = o.h_list;
+  s.expected = o.expected;
+  s.order_tol = o.order_tol;
+  s.h = o.h;
+  s.steps = o.steps;
+  s.floor = o.floor;
+  s.json_out = o.json_out;
+  s.json_given = o.json_given;
+  s.t_end_given = c.count("--t-end") > 0;
+  s.h_list_given = c.count("--h-list") > 0;
+  s.expected_given = c.count("--expected-order") > 0;
+  s.order_tol_given = c.count("--order-tol") > 0;
+}
+
 int run(const VerifyOptions& o, const CLI::App& c) {
   double max_seconds = 0;
   if (!o.max_seconds.empty()) {
@@ -139,23 +159,8 @@ int run(const VerifyOptions& o, const CLI::App& c) {
       if (c.count(opt) > 0)
         throw ArgumentError(opt, "does not apply to --tableau (see vibook verify --help)");
     TableauOptions to;
+    set_study_options(to, o, c);
     to.file = o.tableau;
-    to.problem = o.problem;
-    to.q0 = o.q0;
-    to.p0 = o.p0;
-    to.t_end = o.t_end;
-    to.h_list = o.h_list;
-    to.expected = o.expected;
-    to.order_tol = o.order_tol;
-    to.h = o.h;
-    to.steps = o.steps;
-    to.floor = o.floor;
-    to.json_out = o.json_out;
-    to.json_given = o.json_given;
-    to.t_end_given = c.count("--t-end") > 0;
-    to.h_list_given = c.count("--h-list") > 0;
-    to.expected_given = c.count("--expected-order") > 0;
-    to.order_tol_given = c.count("--order-tol") > 0;
     to.symmetric = o.symmetric;
     return run_tableau(to);
   }
@@ -168,23 +173,8 @@ int run(const VerifyOptions& o, const CLI::App& c) {
       if (c.count(opt) > 0)
         throw ArgumentError(opt, "does not apply to --method (see vibook verify --help)");
     MethodOptions mo;
+    set_study_options(mo, o, c);
     mo.method = o.method;
-    mo.problem = o.problem;
-    mo.q0 = o.q0;
-    mo.p0 = o.p0;
-    mo.t_end = o.t_end;
-    mo.h_list = o.h_list;
-    mo.expected = o.expected;
-    mo.order_tol = o.order_tol;
-    mo.h = o.h;
-    mo.steps = o.steps;
-    mo.floor = o.floor;
-    mo.json_out = o.json_out;
-    mo.json_given = o.json_given;
-    mo.t_end_given = c.count("--t-end") > 0;
-    mo.h_list_given = c.count("--h-list") > 0;
-    mo.expected_given = c.count("--expected-order") > 0;
-    mo.order_tol_given = c.count("--order-tol") > 0;
     return run_method(mo);
   }
   const bool stepper = c.count("--stepper-lib") > 0 || c.count("--stepper-cmd") > 0;
@@ -196,31 +186,16 @@ int run(const VerifyOptions& o, const CLI::App& c) {
         throw ArgumentError(opt,
                             "does not apply to a black-box stepper (see vibook verify --help)");
     StepperOptions so;
+    set_study_options(so, o, c);
     so.lib = o.stepper_lib;
     so.cmd = o.stepper_cmd;
     so.arg = o.stepper_arg;
     so.timeout = o.stepper_timeout;
-    so.problem = o.problem;
     so.hamiltonian = o.hamiltonian;
     so.potential = o.potential;
     so.dim = o.dim;
-    so.q0 = o.q0;
-    so.p0 = o.p0;
-    so.t_end = o.t_end;
-    so.h_list = o.h_list;
-    so.expected = o.expected;
-    so.order_tol = o.order_tol;
-    so.h = o.h;
-    so.steps = o.steps;
-    so.floor = o.floor;
-    so.json_out = o.json_out;
     so.lib_given = c.count("--stepper-lib") > 0;
     so.cmd_given = c.count("--stepper-cmd") > 0;
-    so.json_given = o.json_given;
-    so.t_end_given = c.count("--t-end") > 0;
-    so.h_list_given = c.count("--h-list") > 0;
-    so.expected_given = c.count("--expected-order") > 0;
-    so.order_tol_given = c.count("--order-tol") > 0;
     so.symmetric = o.symmetric;
     return run_stepper(so);
   }
@@ -235,24 +210,9 @@ int run(const VerifyOptions& o, const CLI::App& c) {
       if (c.count(opt) > 0)
         throw ArgumentError(opt, "does not apply to --composition (see vibook verify --help)");
     CompositionOptions co;
+    set_study_options(co, o, c);
     co.base = o.composition;
     co.coefficients = o.coefficients;
-    co.problem = o.problem;
-    co.q0 = o.q0;
-    co.p0 = o.p0;
-    co.t_end = o.t_end;
-    co.h_list = o.h_list;
-    co.expected = o.expected;
-    co.order_tol = o.order_tol;
-    co.h = o.h;
-    co.steps = o.steps;
-    co.floor = o.floor;
-    co.json_out = o.json_out;
-    co.json_given = o.json_given;
-    co.t_end_given = c.count("--t-end") > 0;
-    co.h_list_given = c.count("--h-list") > 0;
-    co.expected_given = c.count("--expected-order") > 0;
-    co.order_tol_given = c.count("--order-tol") > 0;
     return run_composition(co);
   }
   if (c.count("--coefficients") > 0)

@@ -5,15 +5,14 @@
 
 #include <string>
 
+#include "study_options.hpp"
+
 namespace vibook::cli {
 
 /// The options of a catalogue-method verification, as typed; `given` flags say which the user
 /// set.
-struct MethodOptions {
-  std::string method, problem, q0, p0, t_end, h_list, expected, order_tol, h, steps, floor,
-      json_out;
-  bool json_given = false, t_end_given = false, h_list_given = false, expected_given = false,
-       order_tol_given = false;
+struct MethodOptions : StudyOptions {
+  std::string method;
 };
 
 /// Run it; the exit status as for `vibook verify` (0 pass, 5 a verdict failed, 2, 3, 4).

@@ -5,14 +5,14 @@
 
 #include <string>
 
+#include "study_options.hpp"
+
 namespace vibook::cli {
 
 /// The options of a black-box verification, as typed; `given` flags say which the user set.
-struct StepperOptions {
-  std::string lib, cmd, arg, timeout, problem, hamiltonian, potential, dim, q0, p0, t_end, h_list,
-      expected, order_tol, h, steps, floor, json_out;
-  bool lib_given = false, cmd_given = false, json_given = false, t_end_given = false,
-       h_list_given = false, expected_given = false, order_tol_given = false, symmetric = false;
+struct StepperOptions : StudyOptions {
+  std::string lib, cmd, arg, timeout, hamiltonian, potential, dim;
+  bool lib_given = false, cmd_given = false, symmetric = false;
 };
 
 /// Run it; the exit status as for `vibook verify` (0 pass, 5 a verdict failed, 2, 3, 4).

@@ -1,0 +1,16 @@
+// The options every one-step-map route of `vibook verify` takes (--method, --tableau,
+// --composition, the black-box steppers), as typed; `given` flags say which the user set.
+// verify_map.hpp checks them (check_initial_state, check_study_options).
+#pragma once
+
+#include <string>
+
+namespace vibook::cli {
+
+struct StudyOptions {
+  std::string problem, q0, p0, t_end, h_list, expected, order_tol, h, steps, floor, json_out;
+  bool json_given = false, t_end_given = false, h_list_given = false, expected_given = false,
+       order_tol_given = false;
+};
+
+}  // namespace vibook::cli
