@@ -138,9 +138,26 @@ if typed and mp and sv_k:
         if a and b:
             parts.append(f"{m}: the interpreted tape is {a / b:.1f}&times; faster than nested "
                          "AutoDiff" + (f", native code {a / c:.1f}&times;" if c else ""))
+    vprk = [(k, med[k]) for k in ("vprk_lobatto3_tableau", "vprk_lobatto3_galerkin") if k in med]
+    if vprk and best["midpoint"]:
+        print("<table class=\"vibook-bench\">")
+        print("<tr><th>3-stage Lobatto IIIA&ndash;IIIB on Kepler e = 0.7, h = 1e-3</th>"
+            "<th>ns per step (median)</th><th>Newton iterations per step</th>"
+            "<th>ratio to the typed midpoint rule</th></tr>")
+        vlabels = {"vprk_lobatto3_tableau": "from its tableau (--tableau; Newton on the stages)",
+                   "vprk_lobatto3_galerkin": "Galerkin integrator (--method lobatto:3; nested "
+                                             "AutoDiff of L)"}
+        for key, value in vprk:
+            print(f"<tr><td>{vlabels[key]}</td><td>{value:.0f}</td><td>{its[key]:.2f}</td>"
+                f"<td>{value / best['midpoint']:.1f}</td></tr>")
+        print("</table>")
+        fastest = min(value for _, value in vprk)
+        r = fastest / best["midpoint"]
+        parts.append(f"3-stage Lobatto VPRK within 5&times; the typed midpoint rule "
+                     f"&mdash; {verdict(r <= 5)} (ratio {r:.1f}, the faster of the two rows "
+                     "above; both are compiled for the problem, neither is typed as text)")
     print("<p>Targets of the compiled discrete Lagrangian (#28), evaluated on this run: " +
-        "; ".join(parts) + ". The 3-stage Lobatto VPRK target waits for the methods with "
-        "internal stages (#25).</p>")
+        "; ".join(parts) + ".</p>")
 
 if adaptive:
     print("\n".join(adaptive))

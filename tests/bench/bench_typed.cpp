@@ -11,6 +11,8 @@
 #include <mutex>
 #include <string>
 
+#include "vibook/integrators/galerkin.hpp"
+#include "vibook/integrators/prk.hpp"
 #include "vibook/kepler/kepler.hpp"
 #include "vibook/mechanics/del_solver.hpp"
 #include "vibook/modified/engine.hpp"
@@ -38,7 +40,7 @@ void run(benchmark::State& state, Integrator& vi) {
   double its = 0;
   for (auto _ : state) {
     vibook::Vec<double, 2> q = s0.q, p = s0.p;
-    vi.reset();
+    if constexpr (requires { vi.reset(); }) vi.reset();
     for (int k = 0; k < kSteps; ++k) its += vi.step(q, p, kH).iterations;
     benchmark::DoNotOptimize(q);
     benchmark::DoNotOptimize(p);
@@ -70,6 +72,28 @@ void tree(benchmark::State& state, const char* ld) {
   run(state, vi);
 }
 
+// The 3-stage Lobatto IIIA-IIIB method (#25, #28) on the same problem and step: from its
+// tableau (integrators/prk.hpp, the route of `vibook verify --tableau`: Newton on the stages
+// with the Hessian by AutoDiff of the problem's gradient), and as the Galerkin integrator
+// (integrators/galerkin.hpp, `vibook verify --method lobatto:3`: nested AutoDiff of L).
+void BM_vprk_lobatto3_tableau(benchmark::State& state) {
+  const vibook::PartitionedRungeKutta<vibook::Kepler> coefficients(vibook::Kepler{},
+                                                                   vibook::lobatto_rule(3));
+  const vibook::PrkTableau t{coefficients.a(), coefficients.ahat(), vibook::lobatto_rule(3).b,
+                             vibook::lobatto_rule(3).b};
+  vibook::PartitionedRkMethod<3, vibook::Kepler> vi(vibook::Kepler{}, t);
+  run(state, vi);
+}
+void BM_vprk_lobatto3_galerkin(benchmark::State& state) {
+  auto L = [](const auto& q, const auto& v) -> std::remove_cvref_t<decltype(q(0))> {
+    using T = std::remove_cvref_t<decltype(q(0))>;
+    return vibook::constant<T>(0.5) * vibook::squared_norm(v) -
+           vibook::Kepler{}.template potential<T>(q);
+  };
+  vibook::GalerkinIntegrator<2, 3, decltype(L)> vi(L, vibook::lobatto_rule(3));
+  run(state, vi);
+}
+
 void BM_typed_midpoint_native(benchmark::State& s) { tape(s, kMidpoint, true); }
 void BM_typed_midpoint_tape(benchmark::State& s) { tape(s, kMidpoint, false); }
 void BM_typed_midpoint_autodiff(benchmark::State& s) { tree(s, kMidpoint); }
@@ -85,3 +109,5 @@ BENCHMARK(BM_typed_midpoint_autodiff);
 BENCHMARK(BM_typed_trapezoid_native);
 BENCHMARK(BM_typed_trapezoid_tape);
 BENCHMARK(BM_typed_trapezoid_autodiff);
+BENCHMARK(BM_vprk_lobatto3_tableau);
+BENCHMARK(BM_vprk_lobatto3_galerkin);
