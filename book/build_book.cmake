@@ -76,10 +76,13 @@ if(NOT rc EQUAL 0)
   message(FATAL_ERROR "examples/henon_heiles_simpson failed (exit ${rc}); see ${GEN}/verify-example.txt")
 endif()
 
+# Run in the figures directory, so that the quoted output names the report as a reader would
+# type it, not by a path into this build tree.
 execute_process(COMMAND ${VIBOOK} verify
                         --ld "h*((q1-q0)^2/(2*h^2) - (V(q0)+4*V((q0+q1)/2)+V(q1))/6)"
                         --potential "x^2/2+y^2/2+x^2*y-y^3/3" --q0 0,0.1 --p0 0.35,0
-                        --report ${FIGS}/verify-report
+                        --report verify-report
+                WORKING_DIRECTORY ${FIGS}
                 OUTPUT_FILE ${GEN}/verify-cli.txt RESULT_VARIABLE rc)
 if(NOT rc EQUAL 0)
   message(FATAL_ERROR "vibook verify failed (exit ${rc}); see ${GEN}/verify-cli.txt")

@@ -34,6 +34,10 @@ from selenium import webdriver
 from selenium.webdriver.chrome.service import Service
 
 html_dir = os.path.abspath(sys.argv[1])
+# --forbid PATH (repeatable): a directory of this machine (the source and the build tree) whose
+# path must not appear in any page's text: a reader's book never names where it was built.
+forbidden = [os.path.abspath(sys.argv[i + 1]) for i in range(2, len(sys.argv) - 1)
+             if sys.argv[i] == "--forbid"]
 if not os.path.exists(os.path.join(html_dir, "index.html")):
     sys.exit(f"check_book: {html_dir}/index.html not found; build the book first (./build.sh book)")
 
@@ -210,6 +214,9 @@ browser_pages, seen_kinds = [], set()
 for page in pages:
     with open(os.path.join(html_dir, page), encoding="utf-8", errors="replace") as f:
         text = f.read()
+    for path in forbidden:
+        if path + "/" in text:
+            problems.append(f"{page}: names the machine's directory {path}")
     kind = api_kind(page)
     if kind is None or TEX.search(text) or kind not in seen_kinds:
         browser_pages.append(page)

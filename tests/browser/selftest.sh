@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # The book checker must be able to fail: each defect it looks for (unrendered TeX, a broken
-# image, a broken link, a console error, leaked markup, a report row without anchor or
+# image, a broken link, a console error, leaked markup, a path of the machine, a report row without anchor or
 # evidence, a broken filter, sideways scrolling, a formula cut off, figure text under 12 px, a
 # chapter without previous/next links, quoted code linking to a .cpp's file-local symbol) must
 # be reported, and a clean page must pass.
@@ -59,7 +59,11 @@ HTML
 cat >"$tmp/helper_8cpp.html" <<'HTML'
 <!DOCTYPE html><html><head><title>helper.cpp</title></head><body><a id="a0123">k</a></body></html>
 HTML
-"/usr/bin/python3" "$here/check_book.py" "$tmp" >"$tmp/bad.log" 2>&1
+cat >"$tmp/leak.html" <<HTML
+<!DOCTYPE html><html><head><title>leak</title></head><body>
+<pre>report: $tmp/build/book/figures/verify-report/index.html</pre></body></html>
+HTML
+"/usr/bin/python3" "$here/check_book.py" "$tmp" --forbid "$tmp/build" >"$tmp/bad.log" 2>&1
 rc=$?
 fail=0
 [ $rc -ne 0 ] || { echo "FAIL: checker passed a broken page"; fail=1; }
@@ -77,6 +81,7 @@ grep -q "chapter-bad.html: quoted code links 'k' to a file-local symbol of helpe
 grep -q "reportbad.html: claim row without evidence links: X-2" "$tmp/bad.log" || { echo "FAIL: row without evidence not reported"; fail=1; }
 grep -q "classB.html: broken link classNowhere.html#x" "$tmp/bad.log" || { echo "FAIL: static broken link not reported"; fail=1; }
 grep -q "classB.html: broken image gone.png" "$tmp/bad.log" || { echo "FAIL: static broken image not reported"; fail=1; }
+grep -q "leak.html: names the machine's directory $tmp/build" "$tmp/bad.log" || { echo "FAIL: a build path in a page not reported"; fail=1; }
 grep -q "index.html\|classA.html" "$tmp/bad.log" && { echo "FAIL: a clean page was reported"; fail=1; }
 [ $fail = 0 ] && echo "book checker selftest: passed" || cat "$tmp/bad.log"
 exit $fail
