@@ -44,7 +44,9 @@ def main() -> int:
             if line.startswith("%"):
                 parts.append(f"<p><em>{html.escape(line.lstrip('% '))}</em></p>")
             else:
-                parts.append(f"<p>\\[ {html.escape(line, quote=False)} \\]</p>")
+                # derived, not a paper's equation: no number (the number's room would also
+                # narrow the width at which MathJax breaks the line)
+                parts.append(f"<p>\\[ {html.escape(line, quote=False)} \\notag \\]</p>")
         parts.append("</div>")
         with open(f"{gen}/modified-{name}.html", "w", encoding="utf-8") as out:
             out.write("\n".join(parts) + "\n")

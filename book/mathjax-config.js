@@ -1,7 +1,10 @@
 // vibook book (Doxyfile MATHJAX_CODEFILE): every displayed equation of a page is numbered,
 // (1), (2), ...; a display that restates a paper's equation carries the paper's number
 // instead, written \tag{S 25} in the chapter.
-MathJax.Hub.Config({ TeX: { equationNumbers: { autoNumber: "all" } } });
+// Long formulas (engine-derived expressions, evaluation points in claims' notes) are broken
+// over lines at the width of their column, at top-level operators, as a typesetter would.
+MathJax.Hub.Config({ TeX: { equationNumbers: { autoNumber: "all" } },
+                     SVG: { linebreaks: { automatic: true } } });
 // A formula wider than its column (a long difference or evaluation point in a claim's note)
 // scrolls sideways inside the column instead of widening the page: after typesetting, such
 // a formula gets the class vibook-wide (vibook.css gives it a scroll bar). Only the wide ones:

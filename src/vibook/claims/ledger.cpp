@@ -322,7 +322,17 @@ std::string Ledger::to_html(std::string_view paper_filter,
     std::string note = escape(row.result.note);
     if (row.result.note.size() > kNoteShown + 200) {
       // Cut after the first sentence that ends past kNoteShown characters of the raw note.
-      const std::size_t cut = row.result.note.find(". ", kNoteShown);
+      // (never inside a formula: "\right. " ends a sentence only in the text)
+      const std::string& n = row.result.note;
+      const auto in_math = [&n](std::size_t at) {
+        std::size_t open = 0;
+        for (std::size_t i = n.find("\\(", 0); i < at; i = n.find("\\(", i + 2)) ++open;
+        std::size_t close = 0;
+        for (std::size_t i = n.find("\\)", 0); i < at; i = n.find("\\)", i + 2)) ++close;
+        return open > close;
+      };
+      std::size_t cut = n.find(". ", kNoteShown);
+      while (cut != std::string::npos && in_math(cut)) cut = n.find(". ", cut + 2);
       if (cut != std::string::npos && cut + 2 < row.result.note.size())
         note = escape(row.result.note.substr(0, cut + 1)) +
                "<details><summary>the rest of the note</summary>" +
@@ -339,13 +349,22 @@ std::string Ledger::to_html(std::string_view paper_filter,
     std::string r = fmt::format(
         "<tr class=\"status-{}\"{}><td class=\"claim-id\">{}<br/><span class=\"where\">{}</span>"
         "</td><td class=\"claim-paper\"><b>{}</b>{}</td><td class=\"claim-ours\"><b "
-        "class=\"status\">{}</b><br/>{}<div class=\"note\">{}</div></td>",
+        "class=\"status\">{}</b><br/>{}</td>",
         status, anchor, id_cell, escape(row.info.where), escape(row.info.title),
-        statement.empty() ? std::string() : "<br/>" + escape(statement), status, values, note);
+        statement.empty() ? std::string() : "<br/>" + escape(statement), status, values);
     if (whole)
       r += fmt::format("<td class=\"claim-evidence\" data-source=\"{}\"></td>",
                        escape(row.result.source));
-    return r + "</tr>\n";
+    r += "</tr>\n";
+    // The note (how it was measured, the formulas compared) under the row, across the whole
+    // table: a displayed difference or correction needs the width of the page, not of a column.
+    if (!row.result.note.empty())
+      r += fmt::format(
+          "<tr class=\"claim-note status-{0}\"{1}><td colspan=\"{2}\"><div "
+          "class=\"note\">{3}</div></td></tr>\n",
+          status, whole ? fmt::format(" data-status=\"{}\" data-note-of=\"{}\"", status, id) : "",
+          whole ? 4 : 3, note);
+    return r;
   };
   const std::string header = fmt::format(
       "<table class=\"vibook-claims\">\n<tr><th>ID, where</th><th>The paper's claim (and what "

@@ -46,8 +46,11 @@ TEST_CASE("the reproduction report: grouped by paper, one anchored row per claim
   // Every claim once, with its anchor and an evidence cell naming what measured it.
   CHECK(count(html, " id=\"claim-") == catalogue().size());
   const auto row = html.substr(html.find("id=\"claim-S-F2\""));
-  const auto end = row.find("</tr>");
+  // the row, and the note's full-width row under it
+  const auto end = row.find("</tr>", row.find("</tr>") + 5);
   const std::string tr = row.substr(0, end);
+  CHECK(tr.find("<tr class=\"claim-note status-not-reproduced\" data-status=\"not-reproduced\" "
+                "data-note-of=\"S-F2\"><td colspan=\"4\">") != std::string::npos);
   CHECK(tr.find("data-status=\"not-reproduced\"") != std::string::npos);
   CHECK(tr.find("about 1e-13") != std::string::npos);  // the paper's side
   CHECK(tr.find("avi_<wbr>energy_<wbr>err&nbsp;=&nbsp;2.5e-05") != std::string::npos);  // ours
@@ -56,7 +59,8 @@ TEST_CASE("the reproduction report: grouped by paper, one anchored row per claim
   // A chapter's excerpt: the same columns without anchors or evidence, its IDs linking to
   // the report.
   const std::string excerpt = ledger.to_html({}, {"S-F2"});
-  CHECK(count(excerpt, "<tr class=") == 1);
+  CHECK(count(excerpt, "<tr class=\"status-") == 1);
+  CHECK(count(excerpt, "<tr class=\"claim-note") == 1);
   CHECK(excerpt.find(" id=\"claim-") == std::string::npos);
   CHECK(excerpt.find("report.html#claim-S-F2") != std::string::npos);
   CHECK(excerpt.find("claim-evidence") == std::string::npos);
@@ -79,4 +83,22 @@ TEST_CASE("long notes and long lists of values are folded, nothing is lost") {
   CHECK(html.find("v11&nbsp;=&nbsp;11") != std::string::npos);  // folded, not dropped
   CHECK(html.find("Sentence 0 of the note.") < html.find("<summary>the rest of the note"));
   CHECK(html.find("Last &lt;term&gt;.") != std::string::npos);
+}
+
+TEST_CASE("a long note is never folded inside a formula") {
+  // "\right. " inside \( \) looks like the end of a sentence; the fold waits for the text's.
+  Ledger ledger;
+  ClaimResult r;
+  r.id = "SS-T12";
+  r.status = Status::erratum;
+  r.note = std::string(390, 'x') +
+           " Corrected: \\(\\left[a \\right. \\quad \\left. + b\\right]\\), "
+           "which agrees. " +
+           std::string(300, 'y') + ".";
+  ledger.record(r);
+  const std::string html = ledger.to_html({}, {"SS-T12"});
+  const auto fold = html.find("<details><summary>the rest of the note");
+  REQUIRE(fold != std::string::npos);
+  CHECK(html.rfind("which agrees.", fold) != std::string::npos);  // folded after the formula
+  CHECK(html.find("&#92;right]&#92;)") < fold);  // the formula whole, before the fold
 }

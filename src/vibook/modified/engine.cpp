@@ -794,10 +794,10 @@ std::string format_series(const std::vector<ex>& c, const GiNaC::symbol& h, Form
         break;
       case Format::latex:
         if (!first) os << " + ";
-        if (k == 0)
-          os << "\\left(" << canonical_string(c[k], Format::latex) << "\\right)";
-        else
-          os << "h^{" << k << "}\\left(" << canonical_string(c[k], Format::latex) << "\\right)";
+        // \Bigl( \Bigr) rather than \left( \right): MathJax breaks a long coefficient over
+        // lines only between delimiters of fixed size.
+        if (k > 0) os << (k == 1 ? std::string("h") : "h^{" + std::to_string(k) + "}");
+        os << "\\Bigl(" << canonical_string(c[k], Format::latex) << "\\Bigr)";
         break;
       case Format::python:
         if (!first) os << " + ";

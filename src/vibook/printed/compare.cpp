@@ -838,10 +838,22 @@ claims::ClaimResult erratum_for(const claims::FormulaComparison& c, const std::s
   r.status = found || replaced ? claims::Status::erratum : claims::Status::not_reproduced;
   r.cause = found ? "misprint" : "does-not-hold";
   r.values = {{"printed_agrees", 0.0}, {"small_correction_found", found ? 1.0 : 0.0}};
+  // The corrected display as mathematics, without the paper's tag ("\\quad (39)") and the
+  // punctuation that ends it in the paper.
   std::string corrected = c.corrected;
+  if (const auto tag = corrected.rfind("\\quad");
+      tag != std::string::npos &&
+      corrected.find_first_not_of(" ()0123456789.abcdefghijklmnopqrstuvwxyz,", tag + 5) ==
+          std::string::npos)
+    corrected.erase(tag);
   while (!corrected.empty() &&
          (corrected.back() == ',' || corrected.back() == '.' || corrected.back() == ' '))
     corrected.pop_back();
+  // A display the paper sets over two lines (\\ and an & alignment point) is one line here.
+  for (std::size_t at; (at = corrected.find("\\\\")) != std::string::npos;)
+    corrected.replace(at, 2, " ");
+  std::erase(corrected, '&');
+  if (!corrected.empty()) corrected = "\\(" + corrected + "\\)";
   r.note = fmt::format(
       "Printed {} ({}): {}. {}", c.label, c.part,
       c.outcome == "ill-formed" ? "ill-formed as printed, " + c.detail : "differs, " + c.detail,
