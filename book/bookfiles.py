@@ -23,3 +23,20 @@ def write_text(path, text):
     with open(tmp, "w", encoding="utf-8") as f:
         f.write(text)
     os.replace(tmp, path)
+
+
+def chapter_labels(source_dir):
+    """{page id: label} for the chapters and appendices, in the order of the table of contents
+    on the first page (book/index.md, its `\\subpage` list): chapter-* pages are numbered 1, 2,
+    ..., appendix-* pages lettered A, B, ...; the other pages (report, tables) have none."""
+    with open(os.path.join(source_dir, "book", "index.md"), encoding="utf-8") as f:
+        order = re.findall(r"\\subpage\s+([\w-]+)", f.read())
+    labels, chapters, appendices = {}, 0, 0
+    for page in order:
+        if page.startswith("chapter-"):
+            chapters += 1
+            labels[page] = str(chapters)
+        elif page.startswith("appendix-"):
+            labels[page] = chr(ord("A") + appendices)
+            appendices += 1
+    return labels

@@ -229,7 +229,7 @@ file(COPY ${MATHJAX_SRC}/ DESTINATION ${OUT}/html/mathjax
      REGEX "mathjax/fonts(/.*)?$" EXCLUDE)  # HTML-CSS web fonts: not used by SVG output
 file(COPY ${FIGS} DESTINATION ${OUT}/html)  # CSV and PNG beside the book, for download
 # Every chapter figure numbered, a link to its full-size picture, its caption listing its CSVs.
-execute_process(COMMAND ${PYTHON3} ${SOURCE_DIR}/book/figure_links.py ${OUT}/html
+execute_process(COMMAND ${PYTHON3} ${SOURCE_DIR}/book/figure_links.py ${OUT}/html ${SOURCE_DIR}
                 RESULT_VARIABLE rc)
 if(NOT rc EQUAL 0)
   message(FATAL_ERROR "figure_links.py failed (exit ${rc})")
@@ -239,6 +239,14 @@ execute_process(COMMAND ${PYTHON3} ${SOURCE_DIR}/book/chapter_nav.py ${OUT}/html
                 RESULT_VARIABLE rc)
 if(NOT rc EQUAL 0)
   message(FATAL_ERROR "chapter_nav.py failed (exit ${rc})")
+endif()
+# The first page's map of the papers (figures, statements, equations -> the book) and the
+# search entries for claim IDs, equation numbers and figures.
+execute_process(COMMAND ${PYTHON3} ${SOURCE_DIR}/book/paper_map.py ${OUT}/html ${SOURCE_DIR}
+                        ${OUT}/claims.json ${OUT}/displays.json
+                RESULT_VARIABLE rc)
+if(NOT rc EQUAL 0)
+  message(FATAL_ERROR "paper_map.py failed (exit ${rc})")
 endif()
 # The report's evidence: chapter and figure, CSV data and the check's source for every claim.
 execute_process(COMMAND ${PYTHON3} ${SOURCE_DIR}/book/report_evidence.py ${OUT}/html ${SOURCE_DIR}

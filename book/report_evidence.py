@@ -78,10 +78,10 @@ def figure_anchor(page, check):
         path = os.path.join(html_dir, page + ".html")
         if os.path.exists(path):
             with open(path, encoding="utf-8") as f:
-                m = re.search(r'<div class="image" id="figure-(\d+)"><a href="' + re.escape(check) +
-                              r'\.svg"', f.read())
+                m = re.search(r'<div class="image" id="figure-([A-Z0-9]+\.\d+)"><a href="' +
+                              re.escape(check) + r'\.svg"', f.read())
             if m:
-                figure_number[key] = int(m.group(1))
+                figure_number[key] = m.group(1)
     return figure_number[key]
 
 

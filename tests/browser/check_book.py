@@ -17,7 +17,18 @@ chromium-driver, driven by python3-selenium) and fail on:
     a gnuplot sub- or superscript is smaller by design and is not counted),
   - a chapter, the report or the benchmarks page without its previous/next links,
   - a claim shown twice in the chapters,
-  - a search box that finds nothing (the class MechanicalEpAVI, typed on the first page).
+  - a search box that finds nothing (the class MechanicalEpAVI, the claim ID S-F5, the
+    equation number (4.21) and the paper figure "Shen & Sun Fig. 6", typed on the first page),
+  - a chapter or appendix whose figure caption does not begin with the paper's figure it
+    reproduces ("Sharma et al. Fig. 1", "Shen & Sun Figs. 3–5") or say "Not in the papers",
+  - a chapter, appendix, the report or a table page without its box of contents (div.toc),
+  - an appendix no chapter links to, or that links to no chapter,
+  - a display or a claim's note wider than its column in the chapters, appendices and the
+    report (a long formula is broken over lines, book/mathjax-config.js; the formula tables,
+    whose narrow columns quote the papers' displays verbatim, let a display scroll),
+  - a numbered list born of a sentence that ends in a number (Markdown reads "a drift 1." at
+    the end of a line, followed by text, as a list: an <ol> with a single item or a start
+    other than 1), and history words a reader has no use for ("this version", "until now").
 The book's own pages (chapters, report, index, anything with TeX), and the first page of each
 kind of Doxygen API page, are opened in the browser. The other API pages (about 300, with no
 TeX: the API documentation writes its formulas in Unicode) are checked without a browser for
@@ -96,7 +107,9 @@ return out;
 
 FILTER = """
 const out = [];
-const rows = Array.from(document.querySelectorAll('table.vibook-claims tr')).filter(r => !r.querySelector('th'));
+const all = Array.from(document.querySelectorAll('table.vibook-claims tr')).filter(r => !r.querySelector('th'));
+const notes = all.filter(r => r.classList.contains('claim-note'));
+const rows = all.filter(r => !r.classList.contains('claim-note'));
 rows.forEach(r => {
   const a = r.cells[0] ? r.cells[0].querySelector('a') : null;
   const id = (a || r.cells[0] || r).textContent.trim();
@@ -108,7 +121,7 @@ rows.forEach(r => {
 const box = document.querySelector('p.vibook-filter input[value="reproduced"]');
 if (!box) { out.push('status filter without a "reproduced" box'); return out; }
 box.click();
-rows.forEach(r => {
+rows.concat(notes).forEach(r => {
   const hidden = r.style.display === 'none';
   const want = r.getAttribute('data-status') === 'reproduced';
   if (hidden !== want) out.push('filter: row ' + r.id + (hidden ? ' hidden' : ' shown'));
@@ -143,7 +156,17 @@ document.querySelectorAll('.MathJax_SVG svg, .MathJax_SVG_Display svg').forEach(
     if (r.right > b.getBoundingClientRect().right + 1) out.push('formula cut off: ' + what);
   } else if (!b && r.right > right + 1) {
     out.push('formula wider than the page: ' + what);
+  } else if (b && r.width > b.clientWidth + 1 && !arguments[0]) {
+    // in a box that scrolls: readable, but not as a display should be (break it over lines)
+    out.push('display wider than its column (' + Math.round(r.width) + ' px in ' + b.clientWidth +
+             ' px): ' + what);
   }
+});
+// A claim's note (chapter tables and the report) wraps within its cell.
+document.querySelectorAll('table.vibook-claims div.note, table.vibook-claims td').forEach(n => {
+  if (n.scrollWidth > n.clientWidth + 1)
+    out.push('note wider than its column (' + n.scrollWidth + ' px in ' + n.clientWidth + ' px): ' +
+             n.textContent.trim().slice(0, 60));
 });
 document.querySelectorAll('div.image object[data$=".svg"]').forEach(o => {
   const doc = o.contentDocument;
@@ -164,6 +187,40 @@ return out;
 """
 
 TEX = re.compile(r"\\\(|\\\[|\\f\$|\\f\[|\$\$")
+
+# The book's shape: figure captions name the paper's figure, a box of contents, no numbered
+# list made of a sentence, no history words. Arguments: is a chapter or appendix, is a page of
+# the book (chapters, appendices, report, tables).
+SHAPE = """
+const out = [];
+const chapter = arguments[0], bookPage = arguments[1];
+if (chapter) {
+  document.querySelectorAll('div.image div.caption').forEach(c => {
+    const t = c.textContent.replace(/\\s+/g, ' ').trim();
+    if (!/^Figure [A-Z0-9]+\\.\\d+\\. ((Sharma et al\\.|Vermeeren|Shen & Sun) Figs?\\. \\d|Not in the papers)/.test(t))
+      out.push('figure caption does not name the figure of the paper: ' + t.slice(0, 70));
+  });
+}
+if (bookPage && !document.querySelector('div.toc'))
+  out.push('no box of contents (write [TOC] under the title)');
+document.querySelectorAll('div.contents ol').forEach(ol => {
+  const start = ol.getAttribute('start');
+  if ((start && start !== '1') || ol.querySelectorAll(':scope > li').length === 1)
+    out.push('a numbered list of ' + ol.querySelectorAll(':scope > li').length +
+             ' item(s) starting at ' + (start || '1') + ', born of a sentence ending in a number? "' +
+             ol.textContent.trim().slice(0, 60) + '"');
+});
+const words = /\\b(this version|previous version|until now|until this|used to be)\\b/i;
+const walker = document.createTreeWalker(document.querySelector('div.contents') || document.body,
+                                         NodeFilter.SHOW_TEXT);
+while (walker.nextNode()) {
+  const n = walker.currentNode;
+  if (n.parentElement && n.parentElement.closest('pre, code, .fragment, script')) continue;
+  const m = n.textContent.match(words);
+  if (m) out.push('history words "' + m[0] + '": ' + n.textContent.trim().slice(0, 70));
+}
+return out;
+"""
 
 
 def api_kind(page):
@@ -228,8 +285,8 @@ for page in pages:
 print(f"book_in_browser: {len(browser_pages)} pages in Chromium, {checked} checked statically")
 
 # The chapters, the report and the benchmarks page carry previous/next links (chapter_nav.py).
-book_pages = {p for p in pages
-              if p.startswith("chapter-") or p in ("report.html", "formulas.html", "benchmarks.html")}
+book_pages = {p for p in pages if p.startswith(("chapter-", "appendix-")) or
+              p in ("report.html", "formulas.html", "benchmarks.html")}
 for page in browser_pages:
     kind = api_kind(page)
     path = os.path.join(html_dir, page)
@@ -249,7 +306,10 @@ for page in browser_pages:
             if target and not os.path.exists(target):
                 problems.append(f"{page}: broken link {href}")
     if kind is None:  # the book's own pages: layout at 1024 px, previous/next links
-        for e in driver.execute_script(LAYOUT):
+        for e in driver.execute_script(LAYOUT, page == "formulas.html"):
+            problems.append(f"{page}: {e}")
+        for e in driver.execute_script(SHAPE, page.startswith(("chapter-", "appendix-")),
+                                       page in book_pages):
             problems.append(f"{page}: {e}")
         if page in book_pages and not driver.execute_script(
                 "return document.querySelectorAll('div.vibook-pagenav').length === 2"):
@@ -279,29 +339,52 @@ for cid, where in sorted(shown.items()):
     if len(where) > 1:
         problems.append(f"{where[0]}: claim {cid} shown {len(where)} times ({', '.join(where)})")
 
-# Doxygen's offline search: typing a class name on the first page lists it (a Doxygen book
-# only: the selftest's pages have no search box).
+# Engineering moved out of a chapter lives in an appendix that the chapter links to, and that
+# links back to it.
+chapter_text = {}
+for page in pages:
+    if page.startswith("chapter-"):
+        with open(os.path.join(html_dir, page), encoding="utf-8") as f:
+            chapter_text[page] = f.read()
+for page in sorted(p for p in pages if p.startswith("appendix-") and not p.endswith("_8md.html")):
+    if not any(f'href="{page}' in text for text in chapter_text.values()):
+        problems.append(f"{page}: no chapter links to this appendix")
+    with open(os.path.join(html_dir, page), encoding="utf-8") as f:
+        body = f.read()
+    body = body[body.find('<div class="contents">'):]
+    body = re.sub(r'<div class="vibook-pagenav">.*?</div>', "", body, flags=re.S)
+    if not re.search(r'href="chapter-[\w-]+\.html', body):
+        problems.append(f"{page}: the appendix links to no chapter")
+
+# Doxygen's offline search: each term typed on the first page lists what it names (a
+# Doxygen book only: the selftest's pages have no search box). Claim IDs, equation numbers and
+# paper figures are added to Doxygen's index by book/paper_map.py.
+SEARCHES = [("MechanicalEpAVI", "MechanicalEpAVI"), ("S-F5", "S-F5"), ("(4.21)", "(4.21)"),
+            ("Shen & Sun Fig. 6", "Shen & Sun Fig. 6")]
 if os.path.exists(os.path.join(html_dir, "navtreedata.js")):
     from selenium.webdriver.common.by import By
-    driver.get("file://" + os.path.join(html_dir, "index.html"))
-    field = driver.find_elements(By.ID, "MSearchField")
-    if not field:
-        problems.append("index.html: no search box (Doxyfile SEARCHENGINE)")
-    else:
+    for term, want in SEARCHES:
+        driver.get("file://" + os.path.join(html_dir, "index.html"))
+        field = driver.find_elements(By.ID, "MSearchField")
+        if not field:
+            problems.append("index.html: no search box (Doxyfile SEARCHENGINE)")
+            break
         field[0].click()
-        field[0].send_keys("MechanicalEpAVI")
+        field[0].send_keys(term)
         found = ""
         for _ in range(50):  # up to 5 s for the results frame
             frames = driver.find_elements(By.ID, "MSearchResults")
             if frames:
                 driver.switch_to.frame(frames[0])
-                found = driver.execute_script("return document.body ? document.body.innerText : ''")
+                found = driver.execute_script(
+                    "return Array.from(document.querySelectorAll('div.SRResult'))"
+                    ".filter(r => r.style.display === 'block').map(r => r.innerText).join(' | ')")
                 driver.switch_to.default_content()
-                if "MechanicalEpAVI" in found:
+                if want in found:
                     break
             driver.execute_script("return new Promise(r => setTimeout(r, 100))")
-        if "MechanicalEpAVI" not in found:
-            problems.append(f"index.html: the search for MechanicalEpAVI found nothing ({found[:60]!r})")
+        if want not in found:
+            problems.append(f"index.html: the search for {term!r} found nothing ({found[:60]!r})")
 driver.quit()
 
 for p in problems:

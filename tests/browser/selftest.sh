@@ -2,7 +2,9 @@
 # The book checker must be able to fail: each defect it looks for (unrendered TeX, a broken
 # image, a broken link, a console error, leaked markup, a path of the machine, a report row without anchor or
 # evidence, a broken filter, sideways scrolling, a formula cut off, figure text under 12 px, a
-# chapter without previous/next links, quoted code linking to a .cpp's file-local symbol) must
+# chapter without previous/next links, quoted code linking to a .cpp's file-local symbol, a
+# caption that names no paper figure, a page without contents box, a numbered list born of a
+# sentence, history words, an appendix no chapter links to) must
 # be reported, and a clean page must pass.
 set -u
 here=$(cd "$(dirname "$0")" && pwd)
@@ -54,7 +56,15 @@ cat >"$tmp/chapter-bad.html" <<'HTML'
 <table class="vibook-claims"><tr><td class="claim-id"><a href="report.html#claim-X-9">X-9</a></td></tr>
 <tr><td class="claim-id"><a href="report.html#claim-X-9">X-9</a></td></tr></table>
 <div class="fragment"><a class="code" href="helper_8cpp.html#a0123">k</a></div>
+<div class="contents"><div class="image"><div class="caption">Figure 1.1. Kepler orbits, with no paper figure named.</div></div>
+<p>The verdict needs a drift</p><ol start="1"><li>The verdict follows.</li></ol>
+<p>In this version the step is faster.</p></div>
 </body></html>
+HTML
+# An appendix that no chapter links to and that links to no chapter.
+cat >"$tmp/appendix-orphan.html" <<'HTML'
+<!DOCTYPE html><html><head><title>appendix</title></head><body><div class="contents">
+<div class="toc">contents</div><p>Engineering.</p></div></body></html>
 HTML
 cat >"$tmp/helper_8cpp.html" <<'HTML'
 <!DOCTYPE html><html><head><title>helper.cpp</title></head><body><a id="a0123">k</a></body></html>
@@ -76,6 +86,12 @@ for what in "no previous/next links" "page scrolls sideways at 1024 px" "formula
     "figure small.svg: text displayed at 8.0 px" "broken image small.svg (drawn 0 x"; do
   grep -q "chapter-bad.html: $what" "$tmp/bad.log" || { echo "FAIL: not reported: $what"; fail=1; }
 done
+for what in "figure caption does not name the figure of the paper: Figure 1.1. Kepler" \
+    "no box of contents" "a numbered list of 1 item(s)" 'history words "this version"'; do
+  grep -q "chapter-bad.html: $what" "$tmp/bad.log" || { echo "FAIL: not reported: $what"; fail=1; }
+done
+grep -q "appendix-orphan.html: no chapter links to this appendix" "$tmp/bad.log" || { echo "FAIL: orphan appendix not reported"; fail=1; }
+grep -q "appendix-orphan.html: the appendix links to no chapter" "$tmp/bad.log" || { echo "FAIL: appendix without a chapter link not reported"; fail=1; }
 grep -q "chapter-bad.html: claim X-9 shown 2 times" "$tmp/bad.log" || { echo "FAIL: claim shown twice not reported"; fail=1; }
 grep -q "chapter-bad.html: quoted code links 'k' to a file-local symbol of helper_8cpp.html" "$tmp/bad.log" || { echo "FAIL: link to a .cpp-local symbol not reported"; fail=1; }
 grep -q "reportbad.html: claim row without evidence links: X-2" "$tmp/bad.log" || { echo "FAIL: row without evidence not reported"; fail=1; }
