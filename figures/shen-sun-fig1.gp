@@ -11,9 +11,13 @@ do for [fmt in "svg png"] {
   set xlabel "x"
   set ylabel "p"
   set key below horizontal
-  plot data_dir . "/level_H.csv" using 1:2 with points pt 7 ps 0.3 lc rgb "#7f8c8d" title "H = H(x_0, p_0)", \
-       data_dir . "/level_Hmod1.csv" using 1:2 with points pt 7 ps 0.3 lc rgb "#c0392b" title "H_{mod,1} level set", \
-       data_dir . "/level_Hmod2.csv" using 1:2 with points pt 7 ps 0.15 lc rgb "#27ae60" title "H_{mod,2} level set", \
+  # The level sets as closed lines (written in order around their centre). H_mod,1 and
+  # H_mod,2 nearly coincide: H_mod,1 wide and light underneath, H_mod,2 thin and dashed on top.
+  set xrange [1:5]
+  set yrange [-1.9:1.9]
+  plot data_dir . "/level_H.csv" using 1:2 with lines lw 2 lc rgb "#7f8c8d" title "H = H(x_0, p_0)", \
+       data_dir . "/level_Hmod1.csv" using 1:2 with lines lw 6 lc rgb "#f0b0a8" title "H_{mod,1} level set", \
+       data_dir . "/level_Hmod2.csv" using 1:2 with lines lw 1.8 dt 2 lc rgb "#1e7b34" title "H_{mod,2} level set", \
        data_dir . "/discrete.csv" using 2:3 with points pt 6 ps 0.8 lc rgb "#1b6ca8" title "(x_n, p_n), n ≤ 200"
   unset output
 }

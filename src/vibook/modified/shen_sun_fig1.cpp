@@ -2,10 +2,13 @@
 // (4.16) with (x0, v0, h) = (π/2, 0.5, 0.25). The discrete points, the level set of H through
 // the initial point and those of the modified Hamiltonians H_mod,1 and H_mod,2 (series Legendre
 // transforms of the engine's L_mod,1 and L_mod,2); the spread of each along the discrete orbit.
+#include <algorithm>
 #include <cmath>
 #include <fstream>
 #include <numbers>
 #include <optional>
+#include <utility>
+#include <vector>
 
 #include <fmt/format.h>
 
@@ -81,11 +84,11 @@ std::vector<claims::ClaimResult> run(const Context& ctx) {
 
   if (ctx.out_dir) {
     // Level sets through the initial point: for each x, the roots p of H_k(x, p) = H_k(x0, p0)
-    // on p ∈ [−3, 3] (scan and bisection).
+    // on p ∈ [−3, 3] (scan and bisection). Each is a closed curve around its centroid, written
+    // in the order of the angle about it and closed, so that it is drawn as a line.
     const char* names[3] = {"level_H.csv", "level_Hmod1.csv", "level_Hmod2.csv"};
     for (int k = 0; k < 3; ++k) {
-      std::ofstream f(*ctx.out_dir / names[k]);
-      f << "x,p\n";
+      std::vector<std::pair<double, double>> curve;
       const double c = value(k, x0, p0);
       for (int i = 0; i <= 600; ++i) {
         const double xx = xmin - 0.3 + (xmax - xmin + 0.6) * i / 600;
@@ -103,12 +106,24 @@ std::vector<claims::ClaimResult> run(const Context& ctx) {
                 b = mid;
               }
             }
-            f << fmt::format("{:.12g},{:.12g}\n", xx, 0.5 * (a + b));
+            curve.emplace_back(xx, 0.5 * (a + b));
           }
           pa = pb;
           ga = gb;
         }
       }
+      double cx = 0, cp = 0;
+      for (const auto& [xx, pp] : curve) {
+        cx += xx / static_cast<double>(curve.size());
+        cp += pp / static_cast<double>(curve.size());
+      }
+      std::stable_sort(curve.begin(), curve.end(), [&](const auto& a, const auto& b) {
+        return std::atan2(a.second - cp, a.first - cx) < std::atan2(b.second - cp, b.first - cx);
+      });
+      if (!curve.empty()) curve.push_back(curve.front());
+      std::ofstream f(*ctx.out_dir / names[k]);
+      f << "x,p\n";
+      for (const auto& [xx, pp] : curve) f << fmt::format("{:.12g},{:.12g}\n", xx, pp);
     }
   }
 
