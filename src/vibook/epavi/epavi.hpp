@@ -14,7 +14,9 @@
 
 namespace vibook {
 
-/// EpAVI for a mechanical problem (potential templated on its scalar), computed in T.
+/// EpAVI (Sharma et al. 2022, §2.2: the time-marching form (15)–(18) of the midpoint extended
+/// discrete Lagrangian (25)) for a mechanical problem (potential templated on its scalar),
+/// computed in T.
 template <class Problem, class T = double>
 class EpAVI {
  public:

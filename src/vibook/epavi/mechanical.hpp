@@ -76,7 +76,8 @@ struct WiderScalar<double> {
   using type = long double;
 };
 
-/// EpAVI for a mechanical problem L = ½|v|² − V(q) whose potential and gradient are templated
+/// EpAVI (Sharma et al. 2022, §2.2, (15)–(18) of (25)) for a mechanical problem L = ½|v|² − V(q)
+/// whose potential and gradient are templated
 /// on the scalar (`potential(q)`, `gradient(q)`), computed in T. Same options, state, start-up
 /// and reports as EpAVI<Problem, T>; the two give the same trajectory to the conditioning of
 /// (16) (epavi_test.cpp).

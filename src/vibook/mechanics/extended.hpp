@@ -70,16 +70,17 @@ struct ExtendedStepReport {
   int newton_iterations = 0;     ///< Newton iterations of the momentum equations, in total
 };
 
-/// The time-marching form (15)–(18) of the extended discrete Euler–Lagrange equations for any
+/// The time-marching form (15)–(18) of Sharma et al. 2022, §2.2, of the extended discrete
+/// Euler–Lagrange equations for any
 /// extended discrete Lagrangian `L_d(t0, q0, t1, q1)` (t scalar, q an N-vector, generic in the
 /// scalar type): each step solves
 ///   −D2 L_d(t_k, q_k, t_{k+1}, q_{k+1}) = p_k,   D1 L_d(t_k, q_k, t_{k+1}, q_{k+1}) = E_k
 ///   (15)–(16)
 /// for (t_{k+1}, q_{k+1}), then sets p_{k+1} = D4 L_d and E_{k+1} = −D3 L_d (17)–(18).
 ///
-/// **How (15)–(16) are solved.** Not as one coupled Newton system: the energy equation fixes
-/// Δt = t_{k+1} − t_k through an effect of order Δt², so the coupled Jacobian is nearly
-/// singular and Newton from the previous step diverges (we measured this). Instead, for each
+/// **How Sharma et al.'s (15)–(16) are solved.** Not as one coupled Newton system: the energy
+/// equation fixes Δt = t_{k+1} − t_k through an effect of order Δt², so the coupled Jacobian is
+/// nearly singular and Newton from the previous step diverges (we measured this). Instead, for each
 /// trial Δt the momentum equations (15) are solved for q_{k+1}(Δt) by Newton (well
 /// conditioned), and the scalar energy equation g(Δt) = D1 L_d − E_k = 0 is solved by a
 /// bracketed root finder (Anderson–Björck with bisection safeguard, core/root.hpp). The bracket is
