@@ -20,13 +20,14 @@ namespace vibook::cli {
 namespace {
 struct ModifiedOptions {
   std::string method, potential = "generic", what = "equation", format = "text", alpha, ld;
+  std::string lagrangian;            // the user's continuous L(q, v), discretized by --method
   std::string dim_text, order_text;  // parsed whole, in base 10 (parse_integer)
   std::string max_seconds_text;
   double max_seconds = 0;
   bool progress = false;
   int dim = 0, order = -1;
   bool cross_check = false, reference = false, dim_given = false, alpha_given = false;
-  bool method_given = false, potential_given = false, ld_given = false;
+  bool method_given = false, potential_given = false, ld_given = false, lagrangian_given = false;
 };
 
 // Every symbol in the expressions, for the Python header (sorted by name, h first).
@@ -38,6 +39,30 @@ void collect_symbols(const GiNaC::ex& e, std::set<std::string>& out) {
   for (std::size_t k = 0; k < e.nops(); ++k) collect_symbols(e.op(k), out);
 }
 
+// The discrete Lagrangian of method m on the user's continuous Lagrangian L(q, v) (typed, in
+// `vibook verify`'s language), through the same templates as the library's methods
+// (mechanics/discrete_lagrangian.hpp, Vermeeren 2017 Example 1).
+template <int N>
+modified::SymbolicDL typed_method_dl(modified::Method m,
+                                     const verify::TypedDiscreteLagrangian& typed,
+                                     std::shared_ptr<modified::JetSpace> jets,
+                                     const std::string& what) {
+  const auto L = [&typed](const auto& q, const auto& v) -> scalar_t<decltype(q)> {
+    using S = scalar_t<decltype(q)>;
+    return typed.lagrangian<N, S>(Vec<S, N>(q), Vec<S, N>(v));
+  };
+  switch (m) {
+    case modified::Method::sv:
+      return modified::symbolic_dl<N>(stormer_verlet_dl(L), std::move(jets), what);
+    case modified::Method::midpoint:
+      return modified::symbolic_dl<N>(midpoint_dl(L), std::move(jets), what);
+    case modified::Method::se:
+      return modified::symbolic_dl<N>(symplectic_euler_dl(L), std::move(jets), what);
+    default:
+      return modified::symbolic_dl<N>(symplectic_euler_adjoint_dl(L), std::move(jets), what);
+  }
+}
+
 int run_modified(ModifiedOptions o) {
   using namespace modified;
   o.order =
@@ -46,15 +71,29 @@ int run_modified(ModifiedOptions o) {
     o.dim = static_cast<int>(std::clamp<long long>(parse_integer("--dim", o.dim_text), 0, 1000));
   // Either a method of the library (--method, a named --potential) or the user's own discrete
   // Lagrangian typed as in `vibook verify` (--ld, with --potential an expression).
+  // Or a method of the library on the user's own continuous Lagrangian (--method with
+  // --lagrangian, --potential then an expression too).
+  if (o.lagrangian_given && o.ld_given)
+    throw ArgumentError("--lagrangian",
+                        "is discretized by --method; --ld is a discrete Lagrangian already");
   if (o.ld_given && o.method_given)
     throw ArgumentError("--ld", "give either --method or --ld (your own discrete Lagrangian)");
   if (!o.ld_given && !o.method_given)
     throw ArgumentError("--method", "required (or give your own discrete Lagrangian with --ld)");
   const Method m = o.ld_given ? Method::sv : parse_method(o.method);
-  const Potential p = o.ld_given ? Potential::generic : parse_potential(o.potential);
+  if (o.lagrangian_given && m != Method::sv && m != Method::midpoint && m != Method::se &&
+      m != Method::se_adjoint)
+    throw ArgumentError("--lagrangian",
+                        fmt::format("--method {} splits a potential (φ^[1] + φ^[2]); a "
+                                    "Lagrangian is discretized by sv, se, se-adjoint or midpoint",
+                                    o.method));
+  const bool typed_texts = o.ld_given || o.lagrangian_given;
+  const Potential p = typed_texts ? Potential::generic : parse_potential(o.potential);
   const Format f = parse_format(o.format);
-  if (o.ld_given && o.alpha_given)
-    throw ArgumentError("--alpha", "applies to the library's splitting methods, not to --ld");
+  if (typed_texts && o.alpha_given)
+    throw ArgumentError("--alpha", fmt::format("applies to the library's splitting methods, not "
+                                               "to {}",
+                                               o.ld_given ? "--ld" : "--lagrangian"));
   static const std::set<std::string> whats = {"equation",     "lagrangian", "hamiltonian",
                                               "vector-field", "meshed",     "disc"};
   if (!whats.count(o.what))
@@ -66,7 +105,19 @@ int run_modified(ModifiedOptions o) {
   // The typed discrete Lagrangian is parsed and checked before any work (status 2 naming --ld,
   // --potential or --dim); it must outlive the engine.
   std::optional<verify::TypedDiscreteLagrangian> typed;
-  if (o.ld_given) {
+  if (o.lagrangian_given) {
+    verify::TypedTexts t;
+    t.system_only = true;  // no discrete Lagrangian: --method makes it from L
+    t.lagrangian = o.lagrangian;
+    if (o.potential_given) t.potential = o.potential;
+    t.dim = o.dim_given ? o.dim : 0;
+    std::lock_guard<std::mutex> lock(ginac_mutex());
+    typed.emplace(t);
+    if (typed->dim() > 3)
+      throw ArgumentError(
+          "--lagrangian",
+          fmt::format("{} degrees of freedom: the symbolic engine takes 1 to 3", typed->dim()));
+  } else if (o.ld_given) {
     verify::TypedTexts t;
     t.ld = o.ld;
     // The engine needs only L_d; the intended system matters to `vibook verify` alone. Without
@@ -116,6 +167,18 @@ int run_modified(ModifiedOptions o) {
   std::lock_guard<std::mutex> lock(ginac_mutex());
   const auto user_dl = [&]() -> SymbolicDL {
     auto jets = std::make_shared<JetSpace>(dim);
+    if (o.lagrangian_given) {
+      const std::string what =
+          fmt::format("--method {} on the typed Lagrangian {}", o.method, o.lagrangian);
+      switch (dim) {
+        case 1:
+          return typed_method_dl<1>(m, *typed, jets, what);
+        case 2:
+          return typed_method_dl<2>(m, *typed, jets, what);
+        default:
+          return typed_method_dl<3>(m, *typed, jets, what);
+      }
+    }
     const std::string what = "typed discrete Lagrangian " + o.ld;
     switch (dim) {
       case 1:
@@ -221,15 +284,21 @@ std::function<int()> add_modified_command(CLI::App& app) {
   c->add_option("--method", o->method,
                 "sv, se (L(x1,v)), se-adjoint (L(x0,v)), midpoint, vi1, vi1-adjoint (Shen & Sun "
                 "(3.3)), vi2 ((3.8); the interior node is eliminated); required unless --ld");
+  c->add_option("--lagrangian", o->lagrangian,
+                "your own continuous Lagrangian L(q, v), discretized by --method (sv, se, "
+                "se-adjoint, midpoint), typed as in vibook verify, e.g. '(1+q^2)*v^2/2 - V(q)' "
+                "(--potential then an expression)");
   c->add_option("--ld", o->ld,
                 "your own discrete Lagrangian L_d(q0, q1, h) instead of --method, typed as in "
                 "vibook verify, e.g. 'h*((q1-q0)^2/(2*h^2) - (V(q0)+V(q1))/2)'");
-  c->add_option("--potential", o->potential,
-                "generic (derivatives U, U_1, U_11, … as symbols), kepler (2-D), pendulum, "
-                "harmonic (default generic); with --ld: V as an expression in x, y, z (or q, "
-                "q[1], …), as in vibook verify");
+  c->add_option(
+      "--potential", o->potential,
+      "generic (derivatives U, U_1, U_11, … as symbols), kepler (2-D), pendulum, "
+      "harmonic (default generic); with --ld or --lagrangian: V as an expression in x, y, z (or q, "
+      "q[1], …), as in vibook verify");
   c->add_option("--dim", o->dim_text,
-                "degrees of freedom of a generic potential, 1 to 3 (default 1; with --ld: from "
+                "degrees of freedom of a generic potential, 1 to 3 (default 1; with --ld or "
+                "--lagrangian: from "
                 "the expressions)");
   c->add_option("--order", o->order_text,
                 fmt::format("highest power of h, 0 to {}", modified::max_order))
@@ -258,6 +327,7 @@ std::function<int()> add_modified_command(CLI::App& app) {
     o->method_given = c->count("--method") > 0;
     o->potential_given = c->count("--potential") > 0;
     o->ld_given = c->count("--ld") > 0;
+    o->lagrangian_given = c->count("--lagrangian") > 0;
     return run_modified(*o);
   };
 }

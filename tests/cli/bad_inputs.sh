@@ -161,6 +161,14 @@ row 2 "--ld"             modified --ld 'h*(q1[4]-q0[4])^2/(2*h^2)' --order 2
 row 2 "--potential"      modified --ld "$TRAP" --potential kepler --order 2
 row 2 "--alpha"          modified --ld "$TRAP" --potential 'x^4' --order 2 --alpha 1/2
 row 2 "--order"          modified --ld "$TRAP" --potential 'x^4' --order 11
+# modified --method M --lagrangian EXPR: the user's continuous Lagrangian
+row 2 "--lagrangian"     modified --method vi1 --lagrangian 'v^2/2 - V(q)' --potential 'x^4' --order 2
+row 2 "--lagrangian"     modified --method sv --ld "$TRAP" --lagrangian 'v^2/2' --potential 'x^4' --order 2
+row 2 "--lagrangian"     modified --method sv --lagrangian 'q^2/2' --order 2
+row 2 "--lagrangian"     modified --method sv --lagrangian 'v^2/2 - (q' --order 2
+row 2 "--lagrangian"     modified --method sv --lagrangian 'v[4]^2/2' --order 2
+row 2 "--potential"      modified --method sv --lagrangian 'v^2/2 - V(q)' --order 2
+row 2 "--alpha"          modified --method sv --lagrangian 'v^2/2' --order 2 --alpha 1/2
 # --- verify: typed expressions ------------------------------------------------------------------
 SIMPSON='h*((q1-q0)^2/(2*h^2) - (V(q0)+4*V((q0+q1)/2)+V(q1))/6)'
 HH='x^2/2+y^2/2+x^2*y-y^3/3'
