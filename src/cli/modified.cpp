@@ -6,6 +6,7 @@
 #include <optional>
 #include <set>
 #include <string>
+#include <vector>
 
 #include <fmt/format.h>
 
@@ -21,6 +22,7 @@ namespace {
 struct ModifiedOptions {
   std::string method, potential = "generic", what = "equation", format = "text", alpha, ld;
   std::string lagrangian;            // the user's continuous L(q, v), discretized by --method
+  std::vector<std::string> params;   // symbolic constants of --ld / --lagrangian / --potential
   std::string dim_text, order_text;  // parsed whole, in base 10 (parse_integer)
   std::string max_seconds_text;
   double max_seconds = 0;
@@ -88,6 +90,10 @@ int run_modified(ModifiedOptions o) {
                                     "Lagrangian is discretized by sv, se, se-adjoint or midpoint",
                                     o.method));
   const bool typed_texts = o.ld_given || o.lagrangian_given;
+  if (!o.params.empty() && !typed_texts)
+    throw ArgumentError("--param",
+                        "names a constant of your own --ld or --lagrangian (the "
+                        "library's methods have none)");
   const Potential p = typed_texts ? Potential::generic : parse_potential(o.potential);
   const Format f = parse_format(o.format);
   if (typed_texts && o.alpha_given)
@@ -109,6 +115,7 @@ int run_modified(ModifiedOptions o) {
     verify::TypedTexts t;
     t.system_only = true;  // no discrete Lagrangian: --method makes it from L
     t.lagrangian = o.lagrangian;
+    t.params = o.params;
     if (o.potential_given) t.potential = o.potential;
     t.dim = o.dim_given ? o.dim : 0;
     std::lock_guard<std::mutex> lock(ginac_mutex());
@@ -120,6 +127,7 @@ int run_modified(ModifiedOptions o) {
   } else if (o.ld_given) {
     verify::TypedTexts t;
     t.ld = o.ld;
+    t.params = o.params;
     // The engine needs only L_d; the intended system matters to `vibook verify` alone. Without
     // --potential, a placeholder system lets an L_d that does not use V through (one that does
     // is refused: "V is used but no --potential was given").
@@ -288,6 +296,10 @@ std::function<int()> add_modified_command(CLI::App& app) {
                 "your own continuous Lagrangian L(q, v), discretized by --method (sv, se, "
                 "se-adjoint, midpoint), typed as in vibook verify, e.g. '(1+q^2)*v^2/2 - V(q)' "
                 "(--potential then an expression)");
+  c->add_option("--param", o->params,
+                "a symbolic constant of --ld, --lagrangian or --potential (a coupling, an energy "
+                "level): it stays a symbol in the result; repeat or separate by commas")
+      ->delimiter(',');
   c->add_option("--ld", o->ld,
                 "your own discrete Lagrangian L_d(q0, q1, h) instead of --method, typed as in "
                 "vibook verify, e.g. 'h*((q1-q0)^2/(2*h^2) - (V(q0)+V(q1))/2)'");

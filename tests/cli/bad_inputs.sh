@@ -169,6 +169,12 @@ row 2 "--lagrangian"     modified --method sv --lagrangian 'v^2/2 - (q' --order 
 row 2 "--lagrangian"     modified --method sv --lagrangian 'v[4]^2/2' --order 2
 row 2 "--potential"      modified --method sv --lagrangian 'v^2/2 - V(q)' --order 2
 row 2 "--alpha"          modified --method sv --lagrangian 'v^2/2' --order 2 --alpha 1/2
+# --param: symbolic constants of the typed texts
+row 2 "--param"          modified --method sv --potential generic --order 2 --param k
+row 2 "--param"          modified --method sv --lagrangian 'v^2/2 - k*q^2/2' --order 2 --param k-1
+row 2 "--param"          modified --method sv --lagrangian 'v^2/2 - q^2/2' --order 2 --param q
+row 2 "--param"          modified --method sv --lagrangian 'v^2/2 - k*q^2/2' --order 2 --param k,k
+row 2 "--lagrangian"     modified --method sv --lagrangian 'v^2/2 - k*q^2/2' --order 2 --param c
 # --- verify: typed expressions ------------------------------------------------------------------
 SIMPSON='h*((q1-q0)^2/(2*h^2) - (V(q0)+4*V((q0+q1)/2)+V(q1))/6)'
 HH='x^2/2+y^2/2+x^2*y-y^3/3'

@@ -105,6 +105,31 @@ for m in midpoint sv; do
 done
 if same_functions --method midpoint --lagrangian "$FORM1" --order 2 -- --method midpoint --lagrangian "(1+q[2]^2)*v[1]^2/2 + v[2]^2/2" --order 2
 then fail=$((fail + 1)); echo "FAIL: the SymPy comparison cannot tell two Lagrangians apart"; fi
+# --param: a symbolic constant stays a symbol. Störmer–Verlet on L = v^2/2 - k q^2/2 has the
+# modified equation xddot = -k x - h^2 k^2 x/12 + O(h^4) (Vermeeren's Example 2 with U = k x^2/2);
+# the same with k = 1 and without --param is the harmonic oscillator's.
+"$V" modified --method sv --lagrangian 'v^2/2 - k*q^2/2' --param k --order 3 --format python >"$tmpd/k.py" 2>&1
+if /usr/bin/python3 - "$tmpd/k.py" <<'PY'
+import sys
+from sympy import simplify, symbols
+ns = {}
+exec(open(sys.argv[1]).read(), ns)
+h, k, x1 = symbols("h k x1")
+sys.exit(0 if simplify(ns["a"] - (-k*x1 - h**2*k**2*x1/12)) == 0 else 1)
+PY
+then pass=$((pass + 1)); else fail=$((fail + 1)); echo "FAIL: --param k: not -k x - h^2 k^2 x/12"; cat "$tmpd/k.py"; fi
+"$V" modified --method sv --lagrangian 'v^2/2 - k*q^2/2' --param k --order 6 --format python >"$tmpd/k6.py" 2>&1
+"$V" modified --method sv --lagrangian 'v^2/2 - q^2/2' --order 6 --format python >"$tmpd/one.py" 2>&1
+if /usr/bin/python3 - "$tmpd/k6.py" "$tmpd/one.py" <<'PY'
+import sys
+from sympy import simplify, symbols
+a, b = {}, {}
+exec(open(sys.argv[1]).read(), a)
+exec(open(sys.argv[2]).read(), b)
+k = symbols("k")
+sys.exit(0 if simplify(a["a"].subs(k, 1) - b["a"]) == 0 and a["a"].has(k) else 1)
+PY
+then pass=$((pass + 1)); else fail=$((fail + 1)); echo "FAIL: --param k at k = 1 differs from the oscillator"; fi
 # A deliberately different derivation must fail the comparison (the check can fail).
 a=$("$V" modified --method sv --order 4 2>&1); b=$("$V" modified --reference --method sv --order 6 2>&1)
 if [ "$a" = "$b" ]; then fail=$((fail + 1)); echo "FAIL: the comparison cannot tell order 4 from 6"; fi

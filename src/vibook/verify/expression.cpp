@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cctype>
+#include <set>
 
 namespace vibook::verify {
 
@@ -450,6 +451,9 @@ class TypedDiscreteLagrangian::Parser {
       }
     } else if (kind_ == Kind::ld && id == "h") {
       n.op = Op::h;
+    } else if (const int k = o_.param_index(id); k >= 0) {
+      n.op = Op::param;
+      n.index = k;
     } else if (kind_ == Kind::potential && (id == "x" || id == "y" || id == "z")) {
       n.op = Op::component;
       n.slot = kX;
@@ -494,6 +498,24 @@ void TypedDiscreteLagrangian::finish(const TypedTexts& t) {
                         "give the intended system once: --lagrangian or "
                         "--hamiltonian, not both");
   const bool have_potential = !t.potential.empty();
+  // Symbolic parameters: names that are not the language's own (checked before any text).
+  static const std::set<std::string> reserved = {"q0",  "q1",  "q",   "v",   "p",   "h",
+                                                 "x",   "y",   "z",   "t",   "V",   "grad",
+                                                 "sin", "cos", "exp", "log", "sqrt"};
+  for (const auto& name : t.params) {
+    const bool identifier = !name.empty() && std::isalpha(static_cast<unsigned char>(name[0])) &&
+                            std::all_of(name.begin(), name.end(), [](char c) {
+                              return std::isalnum(static_cast<unsigned char>(c)) || c == '_';
+                            });
+    if (!identifier)
+      throw ArgumentError("--param", "'" + name +
+                                         "' is not a name (a letter, then letters, "
+                                         "digits or _)");
+    if (reserved.count(name))
+      throw ArgumentError("--param", "'" + name + "' is a name of the language itself");
+    if (param_index(name) >= 0) throw ArgumentError("--param", "'" + name + "' given twice");
+    params_.emplace_back(name);
+  }
   if (!have_potential && t.lagrangian.empty() && t.hamiltonian.empty())
     throw ArgumentError("--potential",
                         "is required: the intended system is L = |v|^2/2 - V(q) unless "

@@ -74,6 +74,10 @@ inline constexpr int kMaxDim = 6;
 struct TypedTexts {
   std::string ld, potential, lagrangian, hamiltonian;
   int dim = 0;  ///< 0: from the texts
+  /// Names of symbolic parameters (`vibook modified --param k`): constants the texts may use,
+  /// which stay symbols in the symbolic engine's output. They have no numeric value, so an
+  /// evaluation in a numeric type throws std::logic_error (`vibook verify` takes none).
+  std::vector<std::string> params{};
   /// Only the intended system, no discrete Lagrangian (`ld` empty): a black-box stepper's
   /// Hamiltonian. evaluate() and bind() are then not available.
   bool system_only = false;
@@ -87,6 +91,12 @@ class TypedDiscreteLagrangian {
   explicit TypedDiscreteLagrangian(const TypedTexts& t);
 
   int dim() const { return dim_; }
+  /// The index of a symbolic parameter (TypedTexts::params), or −1.
+  int param_index(const std::string& name) const {
+    for (std::size_t k = 0; k < params_.size(); ++k)
+      if (params_[k].get_name() == name) return static_cast<int>(k);
+    return -1;
+  }
   /// The intended system is the default L = |v|²/2 − V(q).
   bool default_system() const { return lagrangian_root_ < 0 && hamiltonian_root_ < 0; }
   /// The intended system is given as a Hamiltonian (`--hamiltonian`).
@@ -194,7 +204,8 @@ class TypedDiscreteLagrangian {
     power,
     func,
     potential_call,
-    gradient_call  ///< ∇V at a vector: a vector
+    gradient_call,  ///< ∇V at a vector: a vector
+    param           ///< a symbolic parameter (index)
   };
   enum class Fn { sin, cos, exp, log, sqrt };
   struct Node {
@@ -235,6 +246,19 @@ class TypedDiscreteLagrangian {
     } else {
       if (n.fraction) return S(S(n.num) / S(n.den));
       return S(n.value);
+    }
+  }
+  // A symbolic parameter: its GiNaC symbol (a constant under AutoDiff); no numeric value.
+  template <class S>
+  S param_value(int k) const {
+    if constexpr (std::is_same_v<S, GiNaC::ex>) {
+      return GiNaC::ex(params_[static_cast<std::size_t>(k)]);
+    } else if constexpr (requires { typename S::DerType; }) {
+      return S(param_value<typename S::Scalar>(k));
+    } else {
+      throw std::logic_error("TypedDiscreteLagrangian: the symbolic parameter " +
+                             params_[static_cast<std::size_t>(k)].get_name() +
+                             " has no numeric value");
     }
   }
   template <class S>
@@ -321,6 +345,8 @@ class TypedDiscreteLagrangian {
         return lift<S>(n);
       case Op::h:
         return in.h;
+      case Op::param:
+        return param_value<S>(n.index);
       case Op::component:
         return in.var[n.slot][n.index];
       case Op::add:
@@ -443,6 +469,7 @@ class TypedDiscreteLagrangian {
 
   int dim_ = 0;
   std::vector<Node> nodes_;
+  std::vector<GiNaC::symbol> params_;  ///< the symbolic parameters, in the order given
   int ld_root_ = -1, potential_root_ = -1, lagrangian_root_ = -1, hamiltonian_root_ = -1;
 };
 

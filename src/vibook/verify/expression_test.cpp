@@ -293,3 +293,37 @@ TEST_CASE("typed Hamiltonian alone (a black-box stepper's system): Hamilton's eq
   CHECK_THROWS_AS(TypedDiscreteLagrangian(verify::TypedTexts{"", "", "", "p^2/2", 1}),
                   ArgumentError);
 }
+
+TEST_CASE("symbolic parameters (--param): symbols for the engine, no numeric value") {
+  verify::TypedTexts t;
+  t.system_only = true;
+  t.lagrangian = "v^2/2 - k*q^2/2";
+  t.params = {"k"};
+  const TypedDiscreteLagrangian sys(t);
+  // On GiNaC scalars the parameter is its symbol: L(q, v) = v^2/2 - k q^2/2 exactly.
+  GiNaC::symbol q("q"), v("v");
+  const GiNaC::ex L = sys.lagrangian<1, GiNaC::ex>(Vec<GiNaC::ex, 1>(q), Vec<GiNaC::ex, 1>(v));
+  GiNaC::lst syms;
+  for (GiNaC::const_preorder_iterator i = L.preorder_begin(); i != L.preorder_end(); ++i)
+    if (GiNaC::is_a<GiNaC::symbol>(*i)) syms.append(*i);
+  GiNaC::ex k;
+  for (const auto& s : syms)
+    if (GiNaC::ex_to<GiNaC::symbol>(s).get_name() == "k") k = s;
+  REQUIRE(GiNaC::is_a<GiNaC::symbol>(k));
+  CHECK(GiNaC::expand(L - (v * v / 2 - k * q * q / 2)).is_zero());
+  // A numeric evaluation has no value for it.
+  CHECK_THROWS_AS((sys.lagrangian<1, double>(Vec<double, 1>(1.0), Vec<double, 1>(1.0))),
+                  std::logic_error);
+  // Names: not the language's own, not malformed, not twice; an undeclared name is unknown.
+  for (const char* bad : {"q", "h", "sin", "k-1", "1k", ""}) {
+    verify::TypedTexts u = t;
+    u.params = {bad};
+    CHECK_THROWS_AS(TypedDiscreteLagrangian{u}, ArgumentError);
+  }
+  verify::TypedTexts twice = t;
+  twice.params = {"k", "k"};
+  CHECK_THROWS_AS(TypedDiscreteLagrangian{twice}, ArgumentError);
+  verify::TypedTexts undeclared = t;
+  undeclared.params = {};
+  CHECK_THROWS_AS(TypedDiscreteLagrangian{undeclared}, ArgumentError);
+}
