@@ -60,14 +60,14 @@ int main() {
 CPP
 export PKG_CONFIG_PATH=$prefix/lib/pkgconfig
 # shellcheck disable=SC2046,SC2086
-g++ -std=c++20 $flags $(pkg-config --cflags vibook) "$tmp/core_only.cpp" -o "$tmp/core_only" \
+g++ -std=c++20 -O2 $flags $(pkg-config --cflags vibook) "$tmp/core_only.cpp" -o "$tmp/core_only" \
     $(pkg-config --libs vibook)
 "$tmp/core_only" || { echo "FAIL: core-only program"; exit 1; }
 pkg-config --exists --print-errors vibook-modified vibook-precision
-# The README's line, in its order (the sources before the libraries), on the example with the
-# engine: it must link.
+# The README's line, in its order (the sources before the libraries, -O2), on the example with
+# the engine: it must link.
 # shellcheck disable=SC2046,SC2086
-g++ -std=c++20 $flags "$prefix/share/doc/vibook/examples/henon_heiles_simpson.cpp" \
+g++ -std=c++20 -O2 $flags "$prefix/share/doc/vibook/examples/henon_heiles_simpson.cpp" \
     $(pkg-config --cflags --libs vibook-modified) -o "$tmp/example_pc" ||
   { echo "FAIL: the README's pkg-config line does not build the example"; exit 1; }
 "$tmp/example_pc" >/dev/null || { echo "FAIL: the example built by pkg-config"; exit 1; }
