@@ -4,8 +4,11 @@
 #include "vibook/verify/expression.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cctype>
 #include <set>
+#include <string_view>
+#include <utility>
 
 namespace vibook::verify {
 
@@ -67,6 +70,20 @@ GiNaC::numeric parse_rational(const std::string& s, const std::string& argument)
 class TypedDiscreteLagrangian::Parser {
  public:
   enum class Kind { potential, ld, lagrangian, hamiltonian };
+
+  /// The language's functions of one scalar, by name (also the words --param may not use).
+  static constexpr std::array<std::pair<std::string_view, TypedDiscreteLagrangian::Fn>, 5>
+      kFunctions{{{"sin", TypedDiscreteLagrangian::Fn::sin},
+                  {"cos", TypedDiscreteLagrangian::Fn::cos},
+                  {"exp", TypedDiscreteLagrangian::Fn::exp},
+                  {"log", TypedDiscreteLagrangian::Fn::log},
+                  {"sqrt", TypedDiscreteLagrangian::Fn::sqrt}}};
+  static const std::pair<std::string_view, TypedDiscreteLagrangian::Fn>* function_named(
+      std::string_view id) {
+    for (const auto& f : kFunctions)
+      if (f.first == id) return &f;
+    return nullptr;
+  }
 
   Parser(TypedDiscreteLagrangian& owner, const std::string& text, std::string argument, Kind kind,
          bool have_potential)
@@ -388,8 +405,8 @@ class TypedDiscreteLagrangian::Parser {
       return make(Op::gradient_call, a, -1, true);
     }
     if (eat('(')) {
-      const bool known = id == "sin" || id == "cos" || id == "exp" || id == "log" || id == "sqrt" ||
-                         (id == "V" && kind_ != Kind::potential);
+      const auto* function = function_named(id);
+      const bool known = function || (id == "V" && kind_ != Kind::potential);
       if (!known) {
         pos_ = start;
         fail("unknown function '" + id + "' (" +
@@ -411,11 +428,7 @@ class TypedDiscreteLagrangian::Parser {
       Node n;
       n.op = Op::func;
       n.a = a;
-      n.fn = id == "sin"   ? Fn::sin
-             : id == "cos" ? Fn::cos
-             : id == "exp" ? Fn::exp
-             : id == "log" ? Fn::log
-                           : Fn::sqrt;
+      n.fn = function->second;
       return o_.add_node(n);
     }
     pos_ = after;
@@ -499,9 +512,8 @@ void TypedDiscreteLagrangian::finish(const TypedTexts& t) {
                         "--hamiltonian, not both");
   const bool have_potential = !t.potential.empty();
   // Symbolic parameters: names that are not the language's own (checked before any text).
-  static const std::set<std::string> reserved = {"q0",  "q1",  "q",   "v",   "p",   "h",
-                                                 "x",   "y",   "z",   "t",   "V",   "grad",
-                                                 "sin", "cos", "exp", "log", "sqrt"};
+  static const std::set<std::string> reserved = {"q0", "q1", "q", "v", "p", "h",
+                                                 "x",  "y",  "z", "t", "V", "grad"};
   for (const auto& name : t.params) {
     const bool identifier = !name.empty() && std::isalpha(static_cast<unsigned char>(name[0])) &&
                             std::all_of(name.begin(), name.end(), [](char c) {
@@ -511,7 +523,7 @@ void TypedDiscreteLagrangian::finish(const TypedTexts& t) {
       throw ArgumentError("--param", "'" + name +
                                          "' is not a name (a letter, then letters, "
                                          "digits or _)");
-    if (reserved.count(name))
+    if (reserved.count(name) || Parser::function_named(name))
       throw ArgumentError("--param", "'" + name + "' is a name of the language itself");
     if (param_index(name) >= 0) throw ArgumentError("--param", "'" + name + "' given twice");
     params_.emplace_back(name);
