@@ -132,13 +132,19 @@ int run_verify(const VerifyOptions& o, const verify::TypedDiscreteLagrangian& dl
   std::string evaluation = "nested forward AutoDiff on the expression tree (--reference)";
   if (vi_tape) {
     const auto& c = vi_tape->lagrangian();
+    const auto st = c.stats();
     evaluation = fmt::format(
-        "compiled tape, {}: {} instructions per Newton iteration and {} once a step, {} for the "
-        "momentum (--reference: nested AutoDiff)",
+        "compiled tape, {}: {} instructions per Newton iteration and {} once a step{}, {} for "
+        "the momentum{} (--reference: nested AutoDiff)",
         c.native() ? std::string("run as native code")
                    : "interpreted (no native code: " + c.native_reason() + ")",
-        c.stats().newton_instructions - c.stats().newton_prefix, c.stats().newton_prefix,
-        c.stats().momentum_instructions);
+        st.newton_instructions - st.newton_prefix, st.newton_prefix,
+        st.carried > 0 ? fmt::format(" ({} with the {} values the last momentum carries over)",
+                                     st.newton_prefix_carried, st.carried)
+                       : std::string(),
+        st.momentum_instructions,
+        c.jacobian_constant() ? "; D2 D1 L_d is free of q1, so Newton factors its matrix once"
+                              : "");
   }
   Eigen::VectorXd z0(2 * N);
   for (int i = 0; i < N; ++i) {

@@ -109,6 +109,48 @@ SolveReport newton_solve(Vec<T, N>& x, FJ&& fj, const NewtonOptions& opt,
   throw newton_detail::no_convergence(what, rep, opt.max_iterations);
 }
 
+/// Newton's method for an F that is affine in x: the Jacobian J does not depend on x (the
+/// discrete Euler–Lagrange equation of a discrete Lagrangian whose D2 D1 L_d is free of
+/// q_(k+1), the trapezoidal rule's among them). `fj(x, F, J, with_jacobian)` as for
+/// newton_solve; J is asked for once and factored once, and every later evaluation is of F
+/// alone. The iterates are newton_solve's to the bit (its Jacobian would be the same matrix,
+/// factored the same way), with the same stopping rule and typed failures; what is saved is
+/// the evaluation newton_solve spends after its last update to report the residual there.
+/// Here, as in simplified_newton_solve, the residual reported is |F| at the last evaluation,
+/// before the last update (an update that passed the stopping rule). For an affine F the
+/// first update lands on the solution to round-off, so a step costs two evaluations of F and
+/// one factorisation, where newton_solve needs three and two.
+template <int N, class FJ, class T = double>
+SolveReport affine_newton_solve(Vec<T, N>& x, FJ&& fj, const NewtonOptions& opt,
+                                const char* what = "Newton solve",
+                                const Vec<T, N>* reference = nullptr) {
+  const Vec<T, N> ref = reference ? *reference : x;
+  SolveReport rep;
+  Vec<T, N> F;
+  Mat<T, N> J;
+  const T step_rel(opt.step_rel), step_abs(opt.step_abs);
+  fj(x, F, J, true);
+  const auto lu = J.partialPivLu();
+  for (rep.iterations = 1; rep.iterations <= opt.max_iterations; ++rep.iterations) {
+    rep.residual = to_double(T(F.template lpNorm<Eigen::Infinity>()));
+    if (!std::isfinite(rep.residual)) break;
+    if (rep.residual <= opt.residual_abs) {
+      rep.converged = true;
+      return rep;
+    }
+    const Vec<T, N> dx = lu.solve(F);
+    if (!std::isfinite(to_double(T(dx.template lpNorm<Eigen::Infinity>()))))
+      throw newton_detail::singular_jacobian(what, rep);
+    x -= dx;
+    if (newton_detail::update_is_small<N>(x, dx, ref, step_rel, step_abs)) {
+      rep.converged = true;
+      return rep;
+    }
+    fj(x, F, J, false);
+  }
+  throw newton_detail::no_convergence(what, rep, opt.max_iterations);
+}
+
 /// Simplified Newton for small systems: the Jacobian `jac(x)` is evaluated at the start and
 /// inverted once; `f(x)` alone is evaluated in the iterations. The Jacobian is evaluated again
 /// only when an update fails to shrink eightfold (the contraction of a frozen Jacobian is then

@@ -24,7 +24,10 @@ namespace vibook {
 /// (`newton_parts`, `d2`) and is stepped through them, with the same guess and Newton.
 ///
 /// Each step reports the residual |p_k + D1 L_d|_inf at the returned q_{k+1} and the number
-/// of Newton iterations; a step that does not converge throws SolveError.
+/// of Newton iterations; a step that does not converge throws SolveError. A compiled L_d whose
+/// D2 D1 L_d does not depend on q_{k+1} (`jacobian_constant()`) is solved by
+/// affine_newton_solve: the same iterates, one factorisation a step, and the residual reported
+/// at the last evaluation, before Newton's last (negligible) update.
 ///
 /// The Newton guess: the previous increment, q_k + (q_k − q_{k−1}), when the q passed in is
 /// the one the previous step returned; otherwise q_k + h p_k. The latter is right to O(h²)
@@ -60,7 +63,16 @@ class DelIntegrator {
         J = d.D12;
       }
     };
-    const SolveReport rep = newton_solve<N>(q1, fj, options_, "discrete Euler-Lagrange step", &q0);
+    static constexpr const char* what = "discrete Euler-Lagrange step";
+    SolveReport rep;
+    if constexpr (compiled) {
+      // D2 D1 L_d free of q_(k+1) (the tape computes it once a step): the equation is affine
+      // in q_(k+1), and Newton's iterates need one factorisation and two evaluations.
+      rep = Ld_.jacobian_constant() ? affine_newton_solve<N>(q1, fj, options_, what, &q0)
+                                    : newton_solve<N>(q1, fj, options_, what, &q0);
+    } else {
+      rep = newton_solve<N>(q1, fj, options_, what, &q0);
+    }
     // The momentum at the new point: Newton's residual does not see every part of L_d (on
     // the tape, D1 L_d of the trapezoidal rule has no V(q1)), so a q1 outside the domain of
     // L_d shows here first; it is an error of the step, not a NaN handed on.
@@ -120,6 +132,7 @@ class DelIntegrator {
                                             double h, Vec<double, N>& g, Mat<double, N>& J) {
     L.newton_parts(q, q, h, g, J, true);
     { L.d2(q, q, h) } -> std::convertible_to<Vec<double, N>>;
+    { L.jacobian_constant() } -> std::convertible_to<bool>;
   };
 
   // Constant of the AutoDiff vector type of `like`, with zero derivatives.

@@ -25,13 +25,13 @@ namespace {
 
 namespace fs = std::filesystem;
 
-// The statements of instructions [from, to) of a tape.
-void segment(std::string& out, const Tape& t, const char* name, int from, int to) {
+// The statements of the instructions `ks` of a tape, in that order.
+void segment(std::string& out, const Tape& t, const char* name, const std::vector<int>& ks) {
   out += "void ";
   out += name;
   out += "(double* restrict w) {\n";
   static const char* const binary[] = {"+", "-", "*", "/"};
-  for (int k = from; k < to; ++k) {
+  for (int k : ks) {
     const Tape::Instruction& I = t.code()[k];
     const std::string a = "w[" + std::to_string(I.a) + "]", b = "w[" + std::to_string(I.b) + "]";
     out += "  w[" + std::to_string(t.result_of(k)) + "] = ";
@@ -64,6 +64,13 @@ void segment(std::string& out, const Tape& t, const char* name, int from, int to
     out += ";\n";
   }
   out += "}\n";
+}
+
+// Instructions [from, to) of a tape.
+void segment(std::string& out, const Tape& t, const char* name, int from, int to) {
+  std::vector<int> ks;
+  for (int k = from; k < to; ++k) ks.push_back(k);
+  segment(out, t, name, ks);
 }
 
 std::uint64_t fnv1a(const std::string& s) {
@@ -133,6 +140,7 @@ std::string native_source(const Tape& newton, const Tape& momentum) {
       "static double vb_sqrt(double a) { return a >= 0 ? sqrt(a) : NAN; }\n"
       "static double vb_log(double a) { return a > 0 ? log(a) : NAN; }\n";
   segment(s, newton, "vibook_newton_prefix", 0, newton.prefix());
+  segment(s, newton, "vibook_newton_prefix_carried", newton.carried_prefix());
   segment(s, newton, "vibook_newton_first", newton.prefix(), newton.first_part());
   segment(s, newton, "vibook_newton_rest", newton.first_part(), newton.instructions());
   segment(s, momentum, "vibook_momentum", 0, momentum.instructions());
@@ -213,11 +221,13 @@ NativeTapes load_native(const Tape& newton, const Tape& momentum, std::string& r
     return f;
   };
   n.newton_prefix = sym("vibook_newton_prefix");
+  n.newton_prefix_carried = sym("vibook_newton_prefix_carried");
   n.newton_first = sym("vibook_newton_first");
   n.newton_rest = sym("vibook_newton_rest");
   n.momentum = sym("vibook_momentum");
   n.path = so.string();
-  if (!n.newton_prefix || !n.newton_first || !n.newton_rest || !n.momentum) {
+  if (!n.newton_prefix || !n.newton_prefix_carried || !n.newton_first || !n.newton_rest ||
+      !n.momentum) {
     reason = so.string() + " lacks the tape's functions";
     return NativeTapes{};
   }

@@ -256,21 +256,23 @@ class Graph {
   // outside `prefix_slots` come first (Tape::prefix()).
   // Of the late instructions, those the first `first_outputs` outputs need come first
   // (Tape::first_part()).
+  // Outputs listed in `carried` can be copied in from elsewhere; Tape::carried_prefix() lists
+  // the prefix instructions the other outputs need when they are.
   Tape flatten(const std::vector<int>& outputs, int inputs, const std::vector<char>& prefix_slots,
-               std::size_t first_outputs = 0) const {
+               std::size_t first_outputs = 0, const std::vector<int>& carried = {}) const {
     const std::vector<char> need = ancestors(outputs);
     std::vector<char> first = ancestors(std::vector<int>(
         outputs.begin(), outputs.begin() + std::min(first_outputs, outputs.size())));
     first.resize(need.size(), 0);
     const int m = int(need.size());
-    std::vector<char> late(m, 0);  // depends on a slot outside the prefix
-    for (int i = 0; i < m; ++i) {
-      const Node& n = nodes_[i];
-      if (n.kind == Kind::input)
-        late[i] = !(n.a < int(prefix_slots.size()) && prefix_slots[n.a]);
-      else if (n.kind == Kind::operation)
-        late[i] = late[n.a] || (binary(n.op) && late[n.b]);
-    }
+    std::vector<char> late =  // depends on a slot outside the prefix
+        depends_on(
+            [&](int slot) { return !(slot < int(prefix_slots.size()) && prefix_slots[slot]); });
+    std::vector<char> is_carried(m, 0);
+    for (int c : carried) is_carried[c] = 1;
+    std::vector<char> through = ancestors(outputs, &is_carried);  // not behind a carried one
+    through.resize(m, 0);
+    std::vector<int> carried_prefix;
     std::vector<Tape::Constant> constants;
     std::vector<Tape::Instruction> code;
     int prefix = 0;
@@ -309,6 +311,8 @@ class Graph {
         const int group = !late[i] ? 0 : first[i] ? 1 : 2;
         if (group != pass) continue;
         where[i] = base + int(code.size());
+        if (pass == 0 && !carried.empty() && through[i] && !is_carried[i])
+          carried_prefix.push_back(int(code.size()));
         code.push_back({n.op, where[n.a], binary(n.op) ? where[n.b] : where[n.a]});
       }
       if (pass == 0) prefix = int(code.size());
@@ -316,7 +320,41 @@ class Graph {
     }
     std::vector<int> out;
     for (int o : outputs) out.push_back(where[o]);
-    return Tape(inputs, std::move(constants), std::move(code), std::move(out), prefix, first_part);
+    Tape t(inputs, std::move(constants), std::move(code), std::move(out), prefix, first_part);
+    t.set_carried_prefix(std::move(carried_prefix));
+    return t;
+  }
+
+  // Which nodes depend on an input slot s with in(s).
+  template <class In>
+  std::vector<char> depends_on(In&& in) const {
+    const int m = size();
+    std::vector<char> d(m, 0);
+    for (int i = 0; i < m; ++i) {
+      const Node& n = nodes_[i];
+      if (n.kind == Kind::input)
+        d[i] = in(n.a);
+      else if (n.kind == Kind::operation)
+        d[i] = d[n.a] || (binary(n.op) && d[n.b]);
+    }
+    return d;
+  }
+
+  // Which nodes the targets need (a node's operands have smaller indices); a node marked in
+  // `stop` is needed but its operands are not needed through it.
+  std::vector<char> ancestors(const std::vector<int>& targets,
+                              const std::vector<char>* stop = nullptr) const {
+    int top = -1;
+    for (int t : targets) top = std::max(top, t);
+    std::vector<char> need(top + 1, 0);
+    for (int t : targets) need[t] = 1;
+    for (int i = top; i >= 0; --i) {
+      if (!need[i] || nodes_[i].kind != Kind::operation) continue;
+      if (stop && i < int(stop->size()) && (*stop)[i]) continue;
+      need[nodes_[i].a] = 1;
+      if (binary(nodes_[i].op)) need[nodes_[i].b] = 1;
+    }
+    return need;
   }
 
  private:
@@ -352,20 +390,6 @@ class Graph {
     index_.emplace(k, id);
     return id;
   }
-  // Which nodes the targets need (a node's operands have smaller indices).
-  std::vector<char> ancestors(const std::vector<int>& targets) const {
-    int top = -1;
-    for (int t : targets) top = std::max(top, t);
-    std::vector<char> need(top + 1, 0);
-    for (int t : targets) need[t] = 1;
-    for (int i = top; i >= 0; --i) {
-      if (!need[i] || nodes_[i].kind != Kind::operation) continue;
-      need[nodes_[i].a] = 1;
-      if (binary(nodes_[i].op)) need[nodes_[i].b] = 1;
-    }
-    return need;
-  }
-
   std::vector<Node> nodes_;
   std::vector<Const> consts_;
   std::unordered_map<Key, int, KeyHash> index_;
@@ -464,16 +488,47 @@ CompiledTapes compile(const TypedDiscreteLagrangian& dl) {
   q0_and_h[2 * N] = 1;
 
   CompiledTapes t;
+  t.nodes = g.size();
   std::vector<int> newton = D1;
   newton.insert(newton.end(), D12.begin(), D12.end());
-  t.newton = g.flatten(newton, inputs, q0_and_h, D1.size());
-  t.momentum = g.flatten(D2, inputs, none);
+
+  // Carried values (CompiledTapes): the prefix nodes that depend on q0 (and not on q1), their
+  // twins with q0 replaced by q1, and those twins the momentum needs.
+  const std::vector<char> on_q0 = g.depends_on([](int s) { return s < N; });
+  const std::vector<char> on_q1 = g.depends_on([](int s) { return s >= N && s < 2 * N; });
+  const std::vector<char> for_newton = g.ancestors(newton);
+  std::vector<int> candidates;
+  for (int i = 0; i < int(for_newton.size()); ++i)
+    if (for_newton[i] && g.node(i).kind == Kind::operation && on_q0[i] && !on_q1[i])
+      candidates.push_back(i);
+  std::vector<int> shift(inputs, -1);
+  for (int i = 0; i < N; ++i) shift[i] = g.input(N + i);
+  const std::vector<int> twins = g.substitute(candidates, shift);  // may add nodes
+  const std::vector<char> for_momentum = g.ancestors(D2);
+  std::vector<char> twinned(g.size(), 0);
+  std::vector<int> twin_of(g.size(), -1);
+  for (std::size_t k = 0; k < candidates.size(); ++k)
+    if (twins[k] < int(for_momentum.size()) && for_momentum[twins[k]]) {
+      twinned[candidates[k]] = 1;
+      twin_of[candidates[k]] = twins[k];
+    }
+  // Only the outermost of them: those the Newton outputs reach without passing another.
+  const std::vector<char> reached = g.ancestors(newton, &twinned);
+  std::vector<int> carried, momentum = D2;
+  for (int i = 0; i < int(reached.size()); ++i)
+    if (reached[i] && twinned[i]) {
+      carried.push_back(i);
+      momentum.push_back(twin_of[i]);
+    }
+  t.carried = int(carried.size());
+  newton.insert(newton.end(), carried.begin(), carried.end());
+  t.newton = g.flatten(newton, inputs, q0_and_h, D1.size(), carried);
+  t.momentum = g.flatten(momentum, inputs, none);
   std::vector<int> all{L};
   all.insert(all.end(), D1.begin(), D1.end());
   all.insert(all.end(), D2.begin(), D2.end());
   all.insert(all.end(), D12.begin(), D12.end());
   t.all = g.flatten(all, inputs, none);
-  t.nodes = g.size();
   return t;
 }
 

@@ -31,6 +31,7 @@
 /// Chapter: \ref chapter-verify.
 #pragma once
 
+#include <bit>
 #include <cmath>
 #include <cstdint>
 #include <limits>
@@ -78,6 +79,11 @@ class Tape {
   /// The instructions [0, first_part()) compute the first `first_outputs` outputs (flatten's
   /// argument): a caller that needs only those stops there.
   int first_part() const { return first_part_; }
+  /// The prefix instructions still needed when the carried outputs (values another tape has
+  /// computed, copied in) are in place: their indices, in order. Empty when nothing is
+  /// carried.
+  const std::vector<int>& carried_prefix() const { return carried_prefix_; }
+  void set_carried_prefix(std::vector<int> k) { carried_prefix_ = std::move(k); }
   const std::vector<int>& outputs() const { return outputs_; }
   const std::vector<Instruction>& code() const { return code_; }
   /// Index in the work array of instruction k's result.
@@ -121,52 +127,59 @@ class Tape {
   /// Run instructions [from, to) on w (inputs and constants already in place).
   template <class S>
   void run(S* w, int from, int to) const {
+    for (int k = from; k < to; ++k) execute(w, k);
+  }
+  /// Run the instructions listed in `k`, in that order.
+  template <class S>
+  void run_list(S* w, const std::vector<int>& k) const {
+    for (int i : k) execute(w, i);
+  }
+
+ private:
+  template <class S>
+  void execute(S* w, int k) const {
     using std::cos;
     using std::exp;
     using std::log;
     using std::sin;
     using std::sqrt;
-    const int base = inputs_ + int(constants_.size());
-    for (int k = from; k < to; ++k) {
-      const Instruction& I = code_[k];
-      S& r = w[base + k];
-      const S& a = w[I.a];
-      switch (I.op) {
-        case Op::add:
-          r = a + w[I.b];
-          break;
-        case Op::sub:
-          r = a - w[I.b];
-          break;
-        case Op::mul:
-          r = a * w[I.b];
-          break;
-        case Op::div:
-          r = a / w[I.b];
-          break;
-        case Op::neg:
-          r = -a;
-          break;
-        case Op::sin:
-          r = sin(a);
-          break;
-        case Op::cos:
-          r = cos(a);
-          break;
-        case Op::exp:
-          r = exp(a);
-          break;
-        case Op::log:  // off its domain: NaN, as the tree evaluator (no message from libqd)
-          r = below_zero(a, true) ? not_a_number<S>() : S(log(a));
-          break;
-        case Op::sqrt:
-          r = below_zero(a, false) ? not_a_number<S>() : S(sqrt(a));
-          break;
-      }
+    const Instruction& I = code_[k];
+    S& r = w[inputs_ + int(constants_.size()) + k];
+    const S& a = w[I.a];
+    switch (I.op) {
+      case Op::add:
+        r = a + w[I.b];
+        break;
+      case Op::sub:
+        r = a - w[I.b];
+        break;
+      case Op::mul:
+        r = a * w[I.b];
+        break;
+      case Op::div:
+        r = a / w[I.b];
+        break;
+      case Op::neg:
+        r = -a;
+        break;
+      case Op::sin:
+        r = sin(a);
+        break;
+      case Op::cos:
+        r = cos(a);
+        break;
+      case Op::exp:
+        r = exp(a);
+        break;
+      case Op::log:  // off its domain: NaN, as the tree evaluator (no message from libqd)
+        r = below_zero(a, true) ? not_a_number<S>() : S(log(a));
+        break;
+      case Op::sqrt:
+        r = below_zero(a, false) ? not_a_number<S>() : S(sqrt(a));
+        break;
     }
   }
 
- private:
   template <class S>
   static bool below_zero(const S& a, bool or_zero) {
     if constexpr (std::is_arithmetic_v<S>) {
@@ -193,6 +206,7 @@ class Tape {
   std::vector<Instruction> code_;
   std::vector<int> outputs_;
   int prefix_ = 0, first_part_ = 0;
+  std::vector<int> carried_prefix_;
 };
 
 // ---------------------------------------------------------------------------------------------
@@ -212,11 +226,13 @@ class Tape {
 // does not finish in 60 s) leaves the tape in use and says why in `reason`.
 // ---------------------------------------------------------------------------------------------
 
-/// The compiled segments of the Newton tape (prefix, first part, rest) and of the momentum
-/// tape, each `void f(double* w)` on the tape's work array.
+/// The compiled segments of the Newton tape (prefix, the prefix when values are carried over,
+/// first part, rest) and of the momentum tape, each `void f(double* w)` on the tape's work
+/// array.
 struct NativeTapes {
   using Fn = void (*)(double*);
-  Fn newton_prefix = nullptr, newton_first = nullptr, newton_rest = nullptr, momentum = nullptr;
+  Fn newton_prefix = nullptr, newton_prefix_carried = nullptr, newton_first = nullptr,
+     newton_rest = nullptr, momentum = nullptr;
   std::shared_ptr<void> library;  ///< the dlopen handle (closed with the last copy)
   std::string path;               ///< the shared object
   bool loaded() const { return momentum != nullptr; }
@@ -231,18 +247,32 @@ NativeTapes load_native(const Tape& newton, const Tape& momentum, std::string& r
 
 /// Sizes of a compiled discrete Lagrangian, for a report.
 struct CompiledStats {
-  int nodes = 0;                ///< graph nodes recorded (value and all derivatives)
-  int newton_instructions = 0;  ///< instructions of the Newton tape
-  int newton_prefix = 0;        ///< of which run once per step
+  int nodes = 0;                  ///< graph nodes recorded (value and all derivatives)
+  int newton_instructions = 0;    ///< instructions of the Newton tape
+  int newton_prefix = 0;          ///< of which run once per step
+  int newton_prefix_carried = 0;  ///< of those, still run when the carried values are copied in
+  int carried = 0;                ///< values the momentum hands on to the next step's prefix
   int momentum_instructions = 0;
   int all_instructions = 0;  ///< the tape of value, D1, D2 and D2 D1 together
 };
 
 /// The three tapes of L_d (Newton part, momentum, everything) and the size of the graph they
 /// came from.
+///
+/// Carried values: the Newton prefix of step k+1 is a function of q_(k+1) and h, and the
+/// momentum tape of step k, D2 L_d(q_k, q_(k+1), h), often computes the same subexpressions of
+/// q_(k+1) (for the trapezoidal rule, h/2 ∇V(q_(k+1)): the prefix needs h/2 ∇V(q_k) and the
+/// momentum h/2 ∇V(q_(k+1))). Such a value is found on the graph: a prefix node with q0
+/// replaced by q1 that is the same node (the same operations on the same operands, up to the
+/// order of the operands of + and ·, which is exact) as one the momentum needs. The last
+/// `carried` outputs of the Newton tape and of the momentum tape are these pairs; when the
+/// momentum was last evaluated at (·, q0, h), the prefix copies them and runs only
+/// `Tape::carried_prefix()`. The values are the same to the bit, so carrying them changes no
+/// result.
 struct CompiledTapes {
   Tape newton, momentum, all;
   int nodes = 0;
+  int carried = 0;
 };
 /// Compile L_d of `dl` (call with modified::ginac_mutex() held). Throws ArgumentError("--dim")
 /// outside 1…kMaxDim dimensions.
@@ -262,6 +292,11 @@ class CompiledDiscreteLagrangian {
       : t_(std::make_shared<const CompiledTapes>(compile_tapes(checked(dl)))) {
     t_->newton.load_constants(wn_);
     t_->momentum.load_constants(wm_);
+    const Tape& T = t_->newton;
+    for (int k = N; k < N + N * N; ++k) {  // is every output of D2 D1 L_d in the prefix?
+      const int o = T.outputs()[k];
+      if (o >= T.result_of(T.prefix()) || (o >= N && o < 2 * N)) jacobian_constant_ = false;
+    }
     if (native)
       native_ = load_native(t_->newton, t_->momentum, native_reason_);
     else
@@ -269,6 +304,13 @@ class CompiledDiscreteLagrangian {
   }
   /// The native code is in use (else the tape is interpreted).
   bool native() const { return native_.loaded(); }
+  /// D2 D1 L_d does not depend on q1: the DEL equation is affine in q_(k+1)
+  /// (DelIntegrator then solves it by affine_newton_solve).
+  bool jacobian_constant() const { return jacobian_constant_; }
+  /// Carry values over from the last momentum to the next prefix (CompiledTapes; on by
+  /// default). Off, the prefix is always computed in full: the results are the same to the
+  /// bit (a doctest compares), only slower.
+  void carry_over(bool on) { carry_ = on; }
   const std::string& native_reason() const { return native_reason_; }
   const std::string& native_path() const { return native_.path; }
 
@@ -278,19 +320,32 @@ class CompiledDiscreteLagrangian {
   void newton_parts(const Vec<double, N>& q0, const Vec<double, N>& q1, double h,
                     Vec<double, N>& D1, Mat<double, N>& D12, bool with_jacobian = true) const {
     const Tape& T = t_->newton;
-    bool same = have_prefix_ && h == wn_[2 * N];
-    for (int i = 0; i < N && same; ++i) same = q0(i) == wn_[i];
+    bool same = have_prefix_ && bits(h) == bits(wn_[2 * N]);
+    for (int i = 0; i < N && same; ++i) same = bits(q0(i)) == bits(wn_[i]);
     if (!same) {
       for (int i = 0; i < N; ++i) wn_[i] = q0(i);
       wn_[2 * N] = h;
+      // The momentum last evaluated at (·, q0, h) holds the carried values (CompiledTapes).
+      bool carry = carry_ && t_->carried > 0 && have_momentum_ && bits(wm_[2 * N]) == bits(h);
+      for (int i = 0; i < N && carry; ++i) carry = bits(wm_[N + i]) == bits(q0(i));
+      if (carry) {
+        const auto &from = t_->momentum.outputs(), &to = T.outputs();
+        for (int k = 0; k < t_->carried; ++k) wn_[to[N + N * N + k]] = wm_[from[N + k]];
+        if (native_.loaded())
+          native_.newton_prefix_carried(wn_.data());
+        else
+          T.run_list(wn_.data(), T.carried_prefix());
+      } else if (native_.loaded()) {
+        native_.newton_prefix(wn_.data());
+      } else {
+        T.run(wn_.data(), 0, T.prefix());
+      }
     }
     for (int i = 0; i < N; ++i) wn_[N + i] = q1(i);
     if (native_.loaded()) {
-      if (!same) native_.newton_prefix(wn_.data());
       native_.newton_first(wn_.data());
       if (with_jacobian) native_.newton_rest(wn_.data());
     } else {
-      if (!same) T.run(wn_.data(), 0, T.prefix());
       T.run(wn_.data(), T.prefix(), with_jacobian ? T.instructions() : T.first_part());
     }
     have_prefix_ = true;
@@ -312,6 +367,7 @@ class CompiledDiscreteLagrangian {
       native_.momentum(wm_.data());
     else
       T.run(wm_.data(), 0, T.instructions());
+    have_momentum_ = true;
     Vec<double, N> r;
     for (int i = 0; i < N; ++i) r(i) = wm_[T.outputs()[i]];
     return r;
@@ -340,7 +396,12 @@ class CompiledDiscreteLagrangian {
     return r;
   }
   CompiledStats stats() const {
-    return {t_->nodes, t_->newton.instructions(), t_->newton.prefix(), t_->momentum.instructions(),
+    return {t_->nodes,
+            t_->newton.instructions(),
+            t_->newton.prefix(),
+            t_->carried > 0 ? int(t_->newton.carried_prefix().size()) : t_->newton.prefix(),
+            t_->carried,
+            t_->momentum.instructions(),
             t_->all.instructions()};
   }
 
@@ -352,10 +413,13 @@ class CompiledDiscreteLagrangian {
     return dl;
   }
 
+  static std::uint64_t bits(double x) { return std::bit_cast<std::uint64_t>(x); }
+
   std::shared_ptr<const CompiledTapes> t_;
   // Work arrays: a copy of the object (one per integrator) has its own; the tapes are shared.
   mutable std::vector<double> wn_, wm_;
-  mutable bool have_prefix_ = false;
+  mutable bool have_prefix_ = false, have_momentum_ = false;
+  bool jacobian_constant_ = true, carry_ = true;
   NativeTapes native_;
   std::string native_reason_;
 };
