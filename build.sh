@@ -32,9 +32,9 @@ esac
 packages=(g++ cmake ninja-build pkg-config libeigen3-dev doctest-dev libcli11-dev
   nlohmann-json3-dev libfmt-dev libboost-dev libbenchmark-dev gnuplot-nox doxygen
   libjs-mathjax fonts-mathjax python3 libpng-dev libosmesa6-dev libegl-dev libopengl-dev
-  libqd-dev libmpfr-dev libgmp-dev libginac-dev)
+  libqd-dev libmpfr-dev libgmp-dev libginac-dev python3-sympy)
 if [ "$action" = test ]; then
-  packages+=(chromium chromium-driver python3-selenium python3-sympy)
+  packages+=(chromium chromium-driver python3-selenium)
 fi
 missing=()
 for p in "${packages[@]}"; do
@@ -88,7 +88,9 @@ case "$action" in
     "$bdir/tests/bench/vibook_bench" --benchmark_out="$bdir/bench/bench.json" \
       --benchmark_out_format=json --benchmark_repetitions=5 \
       --benchmark_report_aggregates_only=true
-    python3 tests/bench/bench_table.py "$bdir/bench/bench.json" > "$bdir/bench/bench.md"
+    python3 tests/bench/sympy_lmod.py --table "$bdir/bench/sympy.txt" --timeout 120
+    python3 tests/bench/bench_table.py --sympy "$bdir/bench/sympy.txt" "$bdir/bench/bench.json" \
+      > "$bdir/bench/bench.md"
     cat "$bdir/bench/bench.md"
     echo "table for the book: $PWD/$bdir/bench/bench.md (rebuild the book to include it)"
     ;;

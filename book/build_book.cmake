@@ -177,10 +177,22 @@ if(DEFINED ENV{VIBOOK_BOOK_BENCH} AND EXISTS ${BENCH_EXE})
   if(NOT rc EQUAL 0)
     message(FATAL_ERROR "vibook_bench failed (exit ${rc})")
   endif()
+  message(STATUS "Timing SymPy on the engine's cost table (tests/bench/sympy_lmod.py)")
+  execute_process(COMMAND ${PYTHON3} ${SOURCE_DIR}/tests/bench/sympy_lmod.py
+                          --table ${BINARY_DIR}/bench/sympy.txt --timeout 120
+                  RESULT_VARIABLE rc)
+  if(NOT rc EQUAL 0)
+    message(FATAL_ERROR "sympy_lmod.py --table failed (exit ${rc})")
+  endif()
 endif()
 if(EXISTS ${BENCH_JSON})
-  execute_process(COMMAND ${PYTHON3} ${SOURCE_DIR}/tests/bench/bench_table.py ${BENCH_JSON}
-                          ${BINARY_DIR}/bench/work_precision.csv ${GEN}/bench-adaptive.html
+  set(SYMPY_ARGS)
+  if(EXISTS ${BINARY_DIR}/bench/sympy.txt)
+    set(SYMPY_ARGS --sympy ${BINARY_DIR}/bench/sympy.txt)
+  endif()
+  execute_process(COMMAND ${PYTHON3} ${SOURCE_DIR}/tests/bench/bench_table.py ${SYMPY_ARGS}
+                          ${BENCH_JSON} ${BINARY_DIR}/bench/work_precision.csv
+                          ${GEN}/bench-adaptive.html
                   OUTPUT_FILE ${GEN}/bench.html RESULT_VARIABLE rc)
   if(NOT rc EQUAL 0)
     message(FATAL_ERROR "bench_table.py failed")

@@ -4,6 +4,18 @@ ratios against the hand-written loop of the same run)."""
 import json
 import sys
 
+# --sympy FILE: SymPy's times for the engine's cost table (sympy_lmod.py --table).
+sympy = {}
+if "--sympy" in sys.argv:
+    i = sys.argv.index("--sympy")
+    for line in open(sys.argv[i + 1], encoding="utf-8"):
+        f = line.split()
+        if len(f) == 3:
+            sympy[(int(f[0]), int(f[1]))] = float(f[2])
+        elif len(f) == 4 and f[2] == ">":
+            sympy[(int(f[0]), int(f[1]))] = ("timeout", float(f[3]))
+    del sys.argv[i:i + 2]
+
 data = json.load(open(sys.argv[1]))
 med, its, wp = {}, {}, {}
 for b in data["benchmarks"]:
@@ -210,7 +222,34 @@ if cost:
         cells = "".join(f"<td>{cost[(d, o)]:.3g} s</td>" if (d, o) in cost else "<td>&mdash;</td>"
                         for o in orders)
         print(f"<tr><td>{d} degree(s) of freedom</td>{cells}</tr>")
+        if sympy:
+            def sym(key):
+                t = sympy.get(key)
+                if t is None:
+                    return "<td>&mdash;</td>"
+                if isinstance(t, tuple):
+                    return f"<td>&gt; {t[1]:g} s</td>"
+                return f"<td>{t:.3g} s</td>"
+            print(f"<tr><td>&nbsp;&nbsp;SymPy, same derivation</td>"
+                  + "".join(sym((d, o)) for o in orders) + "</tr>")
     print("</table>")
+    if sympy:
+        both = [(k, cost[k], sympy[k]) for k in sorted(cost) if k in sympy]
+        slower = [f"{d}-D to h^{o}" for (d, o), e, t in both
+                  if not (e < (t[1] if isinstance(t, tuple) else t))]
+        finished = [(k, e, t) for k, e, t in both if not isinstance(t, tuple)]
+        ratios = sorted(t / e for _, e, t in finished if e > 0)
+        print("<p>The SymPy rows time <code>tests/bench/sympy_lmod.py</code>, our own derivation "
+              "of the same L_mod,K in SymPy's sparse polynomial rings over QQ (the modified "
+              "equation from the discrete Euler&ndash;Lagrange equation, no jet symbols, "
+              "truncated in h after every product), in its own process after SymPy is imported, "
+              "each entry stopped after its time limit; the test <code>modified_sympy</code> "
+              "checks that it and the engine give the same L_mod term by term. Target: the "
+              "engine faster than SymPy at every entry &mdash; "
+              f"{verdict(not slower and bool(both))}"
+              + (f" (slower at {', '.join(slower)})" if slower else "")
+              + (f"; SymPy/engine from {ratios[0]:.2g} to {ratios[-1]:.2g} where SymPy finished"
+                 if ratios else "") + ".</p>")
     names = ["sv", "se", "se-adjoint", "midpoint", "vi1", "vi1-adjoint", "vi2"]
     per_method = {names[int(k.split("/")[1])]: v for k, v in eng.items()
                   if k.startswith("engine_method_3d/") and int(k.split("/")[1]) < len(names)}
