@@ -216,7 +216,8 @@ std::vector<claims::ClaimResult> run_fig2(const Context& ctx) {
   // [ss-f2-criterion]
   const double f = 2 * std::numbers::pi;
   c.note = fmt::format(
-      "e = 0.6, h = 0.05, t ∈ [0, 200] (≈ 32 revolutions), φ^[1] = φ^[2]. Perihelion (LRL angle) "
+      "e = 0.6, h = 0.05, t ∈ [0, 200] (≈ 32 revolutions), \\(\\phi^{{[1]}} = \\phi^{{[2]}}\\). "
+      "Perihelion (LRL angle) "
       "drift per revolution: se {:.3g}, sv {:.3g}, VI-1 {:.3g}, VI-2 {:.3g} rad; largest position "
       "error against the exact orbit: {:.2g}, {:.2g}, {:.2g}, {:.2g}. Criterion: se and sv "
       "clockwise, |VI-2| < |VI-1| < min(|se|, |sv|). {}",
@@ -277,7 +278,7 @@ std::vector<claims::ClaimResult> run_fig345(const Context& ctx) {
   f5.values.push_back({"vi2_over_sv", w2});
   const std::string setup =
       "(x0, p0) = (−3, 0, 0, 0.45), h = 0.05, t ∈ [0, 2000] (≈ 100 periods; the span is our "
-      "reading), φ^[1] = φ^[2]. ";
+      "reading), \\(\\phi^{[1]} = \\phi^{[2]}\\). ";
   f3.status = b3 ? claims::Status::reproduced_with_caveat : claims::Status::not_reproduced;
   f3.note =
       setup +
@@ -620,7 +621,8 @@ std::vector<claims::ClaimResult> run_t13(const Context&) {
   c.id = "SS-T13";
   c.source = "check-ss-t13";
   std::string note =
-      "Kepler e = 0.6 from perihelion, φ^[1] = φ^[2], h = T/126 and T/252. Predicted (Theorem 13 "
+      "Kepler e = 0.6 from perihelion, \\(\\phi^{[1]} = \\phi^{[2]}\\), h = T/126 and T/252. "
+      "Predicted (Theorem 13 "
       "at first order): the one-period changes ∫₀ᵀ (∂A/∂ẋ)(F_mod − F) dt of the LRL angle ω and of "
       "|A| along the exact orbit (4096 points), F_mod the engine's modified equation to h⁴, which "
       "is the Euler–Lagrange equation of its modified Lagrangian (Theorem 16). Measured: ω and |A| "

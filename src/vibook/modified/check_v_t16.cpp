@@ -327,14 +327,17 @@ std::vector<claims::ClaimResult> run(const Context&) {
           "Printed (4.24) for VI-2 (3.8). Along solutions of the printed equation the discrete "
           "Euler–Lagrange defect of the actual VI-2 recurrence falls only as \\(h^{{{:.2f}}}\\); "
           "along the "
-          "engine's (interior node x_(n+1/2) eliminated from ∂L_d/∂x_(n+1/2) = 0, order by order) "
+          "engine's (interior node \\(x_{{n+1/2}}\\) eliminated from \\(\\partial L_d/\\partial "
+          "x_{{n+1/2}} = 0\\), order by order) "
           "it falls as \\(h^{{{:.2f}}}\\) (expected {}). The proof of Theorem 12 expands (3.8) "
           "with the "
-          "interior node on the curve, x_(n+1/2) = x(t + h/2); that reproduces (4.23) term by "
+          "interior node on the curve, \\(x_{{n+1/2}} = x(t + h/2)\\); that reproduces (4.23) term "
+          "by "
           "term (check-modified) but is not the discrete Lagrangian of the x_n sequence: its "
           "modified equation gives \\(h^{{{:.2f}}}\\). The printed (4.24) also differs from the "
           "Euler–"
-          "Lagrange equation of (4.23) (check-modified, SS-T12 note). Kepler, φ^[1] = 0.3U, "
+          "Lagrange equation of (4.23) (check-modified, SS-T12 note). Kepler, \\(\\phi^{{[1]}} = "
+          "0.3U\\), "
           "RK4 with 400 substeps in long double, h = 0.2 … 0.025; defects: {}; {}; {}.",
           vi2[2].slope, vi2[0].slope, expected2, vi2[1].slope, describe(vi2[0]), describe(vi2[1]),
           describe(vi2[2])));

@@ -207,7 +207,7 @@ Differences differences(const std::vector<Token>& tokens, const std::map<std::si
           const ex ours =
               k >= 0 && k < static_cast<int>(tc.size()) ? tc[static_cast<std::size_t>(k)] : ex(0);
           if (record(printed, ours, [&] {
-                return fmt::format("{}h^{}{}: ", where, k,
+                return fmt::format("{}\\(h^{{{}}}\\){}: ", where, k,
                                    comps > 1 ? fmt::format(" of component {}", i + 1) : "");
               }))
             return out;
