@@ -290,9 +290,16 @@ struct EnergyBehaviour {
   bool bounded = false;
 };
 
-/// Run `steps` steps of size h from z0 and measure |H − H(z0)|. Memory O(log steps).
-inline EnergyBehaviour energy_behaviour(const Step& step, const Observable& H, Eigen::VectorXd z,
-                                        double h, long long steps, double bounded_below = 0.25) {
+/// One step of a method whose steps need not be of one size (an adaptive method): advance z
+/// in place, or return false when the method cannot take the step (then z is left as it was).
+using Advance = std::function<bool(Eigen::VectorXd& z)>;
+
+/// Run up to `steps` steps of `advance` from z0 and measure |H − H(z0)|; h is the nominal
+/// step, for the report. If `advance` stops early, `steps` in the result is the number taken
+/// and the envelope ends there. Memory O(log steps).
+inline EnergyBehaviour energy_envelope(const Advance& advance, const Observable& H,
+                                       Eigen::VectorXd z, double h, long long steps,
+                                       double bounded_below = 0.25) {
   if (steps < 64) throw std::invalid_argument("energy_behaviour: need at least 64 steps");
   EnergyBehaviour r;
   r.steps = steps;
@@ -302,7 +309,14 @@ inline EnergyBehaviour energy_behaviour(const Step& step, const Observable& H, E
   long long next = 1;
   double env = 0;
   for (long long k = 1; k <= steps; ++k) {
-    step(z, h);
+    if (!advance(z)) {
+      r.steps = k - 1;
+      if (k > 1 && r.envelope_steps.back() != double(k - 1)) {
+        r.envelope_steps.push_back(double(k - 1));
+        r.envelope.push_back(env);
+      }
+      break;
+    }
     const double e = std::abs(H(z) - H0);
     if (!std::isfinite(e)) {
       env = std::numeric_limits<double>::infinity();
@@ -332,6 +346,17 @@ inline EnergyBehaviour energy_behaviour(const Step& step, const Observable& H, E
     r.bounded = false;
   }
   return r;
+}
+
+/// Run `steps` steps of size h from z0 and measure |H − H(z0)|. Memory O(log steps).
+inline EnergyBehaviour energy_behaviour(const Step& step, const Observable& H, Eigen::VectorXd z,
+                                        double h, long long steps, double bounded_below = 0.25) {
+  return energy_envelope(
+      [&](Eigen::VectorXd& x) {
+        step(x, h);
+        return true;
+      },
+      H, std::move(z), h, steps, bounded_below);
 }
 
 /// The verdict on the energy, by magnitude first and then by trend, with the numbers that
