@@ -129,10 +129,17 @@ GeneratingStep generating_composition(const std::string& b, const P& prob,
   return composed_generating<N>(vi2, vi2, c, adj);
 }
 
-template <class P>
-void measure(const CompositionSpec& p, const std::vector<double>& q0, const std::vector<double>& p0,
-             const TestProblem& problem, MapStudy study, MapMeasurement& rep, const P& prob) {
-  constexpr int N = P::N;
+// The stages of a composition, and the order it is held to.
+struct Composed {
+  std::vector<double> c;
+  std::vector<bool> adj;
+  bool symmetric = false;
+  double expected = 0;
+};
+
+// The stages and their order conditions at 120 digits, printed and written to rep; the same
+// whatever the base method is, given whether it is symmetric.
+Composed conditions(const CompositionSpec& p, MapMeasurement& rep) {
   auto line = [&](const std::string& label, const std::string& text) { rep.line(label, text); };
   json& js = rep.js;
   std::vector<std::string>& failed = rep.failed;
@@ -248,6 +255,17 @@ void measure(const CompositionSpec& p, const std::vector<double>& q0, const std:
                             {"expected", expected},
                             {"expected_from", expected_from},
                             {"passed", conditions_ok}};
+  return {c, adj, symmetric, expected};
+}
+
+template <class P>
+void measure(const CompositionSpec& p, const std::vector<double>& q0, const std::vector<double>& p0,
+             const TestProblem& problem, MapStudy study, MapMeasurement& rep, const P& prob) {
+  constexpr int N = P::N;
+  const Composed k = conditions(p, rep);
+  const std::vector<double>& c = k.c;
+  const std::vector<bool>& adj = k.adj;
+  const bool symmetric = k.symmetric;
 
   // --- the integrator ----------------------------------------------------------------------
   auto make_step = [&]() -> Step {
@@ -284,12 +302,12 @@ void measure(const CompositionSpec& p, const std::vector<double>& q0, const std:
                                                Kernel(split, SplittingMethod::vi2), c, adj));
   };
   const Step step = make_step();
-  line("problem", fmt::format("{}: {}, q0 = {}, p0 = {}", problem.name, problem.hamiltonian,
-                              vec_text(q0), vec_text(p0)));
+  rep.line("problem", fmt::format("{}: {}, q0 = {}, p0 = {}", problem.name, problem.hamiltonian,
+                                  vec_text(q0), vec_text(p0)));
 
   study.step = step;
   set_problem(study, problem, q0, p0);
-  study.expected = expected;
+  study.expected = k.expected;
   study.substeps = double(c.size());
   study.require_reversible = symmetric;
   study.reversible_note = " (reported only: the composition is not symmetric)";
