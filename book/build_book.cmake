@@ -109,6 +109,17 @@ vibook_verify_case(verify-order4.txt 0
                    --ld "h*( ((q1-q0)/h)^2/2*(1 + h^2/12*(cos(q0[1])+cos(q1[1]))) - (V(q0)+V(q1))/2 - h^2/48*(grad(V)(q0)^2 + grad(V)(q1)^2) )"
                    "--potential=-cos(x)" --q0 1 --p0 0.5 --expected-order 4 --modified-order 2
                    --h-list 0.2,0.1,0.05,0.025,0.0125,0.00625,0.003125,0.0015625,0.00078125,0.000390625)
+# The typed method as an energy-preserving adaptive integrator (section "Beyond Sharma"):
+# Simpson on Hénon–Heiles passes; EpAVI itself (the midpoint rule) on a Kepler orbit of
+# eccentricity 0.8 has no admissible step.
+vibook_verify_case(verify-adaptive.txt 0
+                   --ld "h*((q1-q0)^2/(2*h^2) - (V(q0)+4*V((q0+q1)/2)+V(q1))/6)"
+                   --potential "x^2/2+y^2/2+x^2*y-y^3/3" --q0 0,0.1 --p0 0.35,0
+                   --modified-order 0 --adaptive epavi)
+vibook_verify_case(verify-adaptive-kepler.txt 5
+                   --ld "h*(((q1-q0)/h)^2/2 - V((q0+q1)/2))" "--potential=-1/sqrt(x^2+y^2)"
+                   --q0 0.2,0 --p0 0,3 --h 0.001 --t-end 1 --h-list 0.01,0.005,0.0025,0.00125
+                   --modified-order 0 --adaptive epavi)
 
 # Compositions (the chapter's section "Compositions"): a catalogue method that must pass and two
 # deliberately wrong ones that must fail with status 5. The audit of every catalogue composition

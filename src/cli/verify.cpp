@@ -98,6 +98,15 @@ Plan check(const VerifyOptions& o, const verify::TypedDiscreteLagrangian& dl) {
   if (!(p.h > 0) || !std::isfinite(p.h) || !std::isfinite(p.h * double(p.steps)) ||
       p.h * double(p.steps) > 1e15)
     throw ArgumentError("--h", "must be a positive finite step (h·steps at most 1e15)");
+  if (!o.adaptive.empty() && o.adaptive != "epavi")
+    throw ArgumentError("--adaptive",
+                        "must be epavi (the energy-preserving adaptive integrator of Sharma et "
+                        "al. 2022), got '" +
+                            o.adaptive + "'");
+  p.adaptive_epavi = o.adaptive == "epavi";
+  p.adaptive_steps = parse_integer("--adaptive-steps", o.adaptive_steps);
+  if (p.adaptive_steps < 256 || p.adaptive_steps > 100000000)
+    throw ArgumentError("--adaptive-steps", "must lie in [256, 1e8]");
   const long long k = parse_integer("--modified-order", o.modified_order);
   if (k < 0 || k > 6) throw ArgumentError("--modified-order", "must lie in [0, 6]");
   p.modified_order = static_cast<int>(k);
@@ -156,7 +165,7 @@ int run(const VerifyOptions& o, const CLI::App& c) {
     for (const char* opt :
          {"--ld", "--lagrangian", "--hamiltonian", "--potential", "--dim", "--modified-order",
           "--format", "--report", "--reference", "--composition", "--coefficients", "--stepper-lib",
-          "--stepper-cmd", "--stepper-arg", "--stepper-timeout"})
+          "--stepper-cmd", "--stepper-arg", "--stepper-timeout", "--adaptive", "--adaptive-steps"})
       if (c.count(opt) > 0)
         throw ArgumentError(opt, "does not apply to --tableau (see vibook verify --help)");
     TableauOptions to;
@@ -170,7 +179,8 @@ int run(const VerifyOptions& o, const CLI::App& c) {
     for (const char* opt :
          {"--ld", "--lagrangian", "--hamiltonian", "--potential", "--dim", "--modified-order",
           "--format", "--report", "--reference", "--symmetric", "--composition", "--coefficients",
-          "--stepper-lib", "--stepper-cmd", "--stepper-arg", "--stepper-timeout"})
+          "--stepper-lib", "--stepper-cmd", "--stepper-arg", "--stepper-timeout", "--adaptive",
+          "--adaptive-steps"})
       if (c.count(opt) > 0)
         throw ArgumentError(opt, "does not apply to --method (see vibook verify --help)");
     MethodOptions mo;
@@ -181,8 +191,9 @@ int run(const VerifyOptions& o, const CLI::App& c) {
   const bool stepper = c.count("--stepper-lib") > 0 || c.count("--stepper-cmd") > 0;
   if (stepper) {
     // Another program's stepper as a black box (verify_stepper.cpp).
-    for (const char* opt : {"--ld", "--lagrangian", "--composition", "--coefficients",
-                            "--modified-order", "--format", "--report", "--reference", "--tableau"})
+    for (const char* opt :
+         {"--ld", "--lagrangian", "--composition", "--coefficients", "--modified-order", "--format",
+          "--report", "--reference", "--tableau", "--adaptive", "--adaptive-steps"})
       if (c.count(opt) > 0)
         throw ArgumentError(opt,
                             "does not apply to a black-box stepper (see vibook verify --help)");
@@ -207,7 +218,7 @@ int run(const VerifyOptions& o, const CLI::App& c) {
     // A composition method (verify_composition.cpp): the options of a typed L_d do not apply.
     for (const char* opt :
          {"--ld", "--lagrangian", "--hamiltonian", "--potential", "--dim", "--modified-order",
-          "--format", "--report", "--reference", "--symmetric"})
+          "--format", "--report", "--reference", "--symmetric", "--adaptive", "--adaptive-steps"})
       if (c.count(opt) > 0)
         throw ArgumentError(opt, "does not apply to --composition (see vibook verify --help)");
     CompositionOptions co;
@@ -218,6 +229,8 @@ int run(const VerifyOptions& o, const CLI::App& c) {
   }
   if (c.count("--coefficients") > 0)
     throw ArgumentError("--coefficients", "applies only with --composition");
+  if (c.count("--adaptive-steps") > 0 && c.count("--adaptive") == 0)
+    throw ArgumentError("--adaptive-steps", "applies only with --adaptive epavi");
   if (c.count("--problem") > 0)
     throw ArgumentError("--problem",
                         "applies only with --method, --composition or a black-box stepper");
@@ -321,6 +334,13 @@ std::function<int()> add_verify_command(CLI::App& app) {
                 "data above max(10 x the reference's error, 16 u))");
   c->add_option("--h", o->h, "step of the symplecticity, reversibility and energy tests (0.05)");
   c->add_option("--steps", o->steps, "steps of the energy test (default 100000)");
+  c->add_option("--adaptive", o->adaptive,
+                "also run the --ld as an energy-preserving adaptive integrator: epavi (Sharma et "
+                "al. 2022: the extended L_d(t0, q0, t1, q1) = L_d(q0, q1, t1 - t0), the step from "
+                "the energy condition (16), the first step --h from the reference); reports the "
+                "energy of the intended system, the steps, and where no admissible step exists");
+  c->add_option("--adaptive-steps", o->adaptive_steps,
+                "with --adaptive: steps of the adaptive run (default 10000)");
   c->add_option("--modified-order", o->modified_order,
                 "highest h power of the modified equation (2)");
   c->add_option("--format", o->format, "modified equation as text (default) or latex");

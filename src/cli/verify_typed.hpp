@@ -19,7 +19,7 @@ struct VerifyOptions {
       t_end = "5", h_list = "0.2,0.1,0.05,0.025,0.0125", expected = "2", order_tol = "0.1",
       h = "0.05", steps = "100000", modified_order = "2", format = "text", json_out, report, floor,
       max_seconds, composition, coefficients, problem, stepper_lib, stepper_cmd, stepper_arg,
-      stepper_timeout, method, tableau;
+      stepper_timeout, method, tableau, adaptive, adaptive_steps = "10000";
   bool json_given = false, report_given = false, timings = false, symmetric = false,
        progress = false, reference = false;
 };
@@ -32,6 +32,8 @@ struct Plan {
   long long steps = 0;
   int modified_order = 0;
   modified::Format format = modified::Format::text;
+  bool adaptive_epavi = false;  ///< --adaptive epavi: run L_d as an EpAVI too
+  long long adaptive_steps = 0;
 };
 
 // --report DIR: a new name in an existing writable directory, or an earlier report (a

@@ -42,6 +42,7 @@
 #include "vibook/modified/engine.hpp"
 #include "vibook/modified/series.hpp"
 #include "vibook/plot/gnuplot.hpp"
+#include "vibook/verify/adaptive.hpp"
 #include "vibook/verify/expression.hpp"
 #include "vibook/verify/reference.hpp"
 #include "vibook/verify/tape.hpp"
@@ -459,10 +460,19 @@ int run_verify(const VerifyOptions& o, const verify::TypedDiscreteLagrangian& dl
   Eigen::VectorXd zref;
   double ref_error = NAN;
   json jref;
+  // --adaptive epavi: the positions at h and h/2, the start-up steps of the adaptive runs
+  std::array<Vec<double, N>, 2> q_start;
   const bool have_ref = run("reference", [&] {
     using T = dd_real;
     verify::Field<T> f;
     std::vector<T> y0(2 * N);
+    auto starts = [&] {
+      if (!p.adaptive_epavi) return;
+      for (int j = 0; j < 2; ++j) {
+        const auto r = verify::reference_solution<T>(f, y0, j == 0 ? p.h : p.h / 2);
+        for (int i = 0; i < N; ++i) q_start[j](i) = to_double(r.y[static_cast<std::size_t>(i)]);
+      }
+    };
     if (dl.has_hamiltonian()) {
       f = [&](const std::vector<T>& y) {
         Vec<T, N> q, pp;
@@ -562,6 +572,7 @@ int run_verify(const VerifyOptions& o, const verify::TypedDiscreteLagrangian& dl
       ref_error = r.error;
       jref["macro_steps"] = r.macro_steps;
       jref["evaluations"] = r.evaluations;
+      starts();
       f = nullptr;
     }
     if (dl.has_hamiltonian()) {
@@ -571,6 +582,7 @@ int run_verify(const VerifyOptions& o, const verify::TypedDiscreteLagrangian& dl
       ref_error = r.error;
       jref["macro_steps"] = r.macro_steps;
       jref["evaluations"] = r.evaluations;
+      starts();
     }
     jref["method"] = "Gragg-Bulirsch-Stoer extrapolation, 8 columns (order 16), double-double";
     jref["equations"] = dl.has_hamiltonian() ? "Hamilton's equations of H"
@@ -841,13 +853,13 @@ int run_verify(const VerifyOptions& o, const verify::TypedDiscreteLagrangian& dl
   verify::EnergyBehaviour en;
   verify::EnergyVerdict ev;
   json jen;
+  // The energy scale the errors are relative to: |H0|, or the kinetic energy where H0 ≈ 0.
+  auto energy_scale = [&] {
+    return std::max({std::abs(energy(z0)), 0.5 * z0.tail(N).squaredNorm(), 1e-300});
+  };
   if (run("energy", [&] {
         const double H0 = energy(z0);
-        double scale = std::abs(H0);
-        {
-          const double kin = 0.5 * z0.tail(N).squaredNorm();
-          scale = std::max({scale, kin, 1e-300});
-        }
+        const double scale = energy_scale();
         where.start(fmt::format("energy run, h = {:g}", p.h), p.h);
         vi.reset();
         en = verify::energy_behaviour(stepper(true, true), energy, z0, p.h, p.steps);
@@ -897,6 +909,93 @@ int run_verify(const VerifyOptions& o, const verify::TypedDiscreteLagrangian& dl
     failed_line("energy");
   }
   js["energy"] = jen;
+
+  // --- 5b. beyond Sharma: the typed L_d as an energy-preserving adaptive integrator ----------
+  // Sharma et al. 2022, §2.2: the extended L_d(t0, q0, t1, q1) = L_d(q0, q1, t1 − t0), the
+  // step from the energy condition (16) (verify/adaptive.hpp). Judged on the intended energy,
+  // as the fixed-step run; a state where (16) has no admissible root ends the run, and the
+  // scan there says whether it is a fold (a property of the method) or a missed root.
+  json jada;
+  verify::AdaptiveStudy ada;
+  verify::EnergyVerdict ada_ev;
+  if (p.adaptive_epavi && !have_ref) {
+    phases.push_back(
+        {"adaptive", "skipped", "no reference solution to take the first step from", kOk, 0});
+    line("adaptive (EpAVI)", "not run: no reference solution to take the first step from");
+  } else if (p.adaptive_epavi && !run("adaptive", [&] {
+               const double scale = energy_scale();
+               ada = verify::epavi_study<N>(Ld, energy, z0, q_start[0], p.h, p.adaptive_steps);
+               // how the error scales with the first step: h and h/2, over about the same span
+               const long long k1 = std::min<long long>(p.adaptive_steps, 1024);
+               const auto a1 = verify::epavi_study<N>(Ld, energy, z0, q_start[0], p.h, k1);
+               const auto a2 = verify::epavi_study<N>(Ld, energy, z0, q_start[1], p.h / 2, 2 * k1);
+               const double half =
+                   a1.failure.happened || a2.failure.happened ? -1 : a2.energy.max_error;
+               ada_ev = verify::judge_energy(
+                   ada.energy, scale, p.expected,
+                   half > 0 ? ada.energy.max_error * half / std::max(a1.energy.max_error, 1e-300)
+                            : -1);
+               const auto& f = ada.failure;
+               const bool passed = !f.happened && ada_ev.passed;
+               jada = {{"method",
+                        "EpAVI: extended L_d(t0, q0, t1, q1) = L_d(q0, q1, t1 - t0), "
+                        "Sharma et al. 2022 (15)-(18)"},
+                       {"h0", p.h},
+                       {"steps_requested", p.adaptive_steps},
+                       {"steps_taken", ada.steps_taken},
+                       {"t_reached", ada.t_reached},
+                       {"dt_min", ada.dt_min},
+                       {"dt_max", ada.dt_max},
+                       {"E1", ada.E1},
+                       {"discrete_energy_drift", ada.discrete_energy_drift},
+                       {"max_energy_residual", ada.max_energy_residual},
+                       {"max_momentum_residual", ada.max_momentum_residual},
+                       {"mean_root_evaluations", ada.mean_root_evaluations},
+                       {"mean_newton_iterations", ada.mean_newton_iterations},
+                       {"energy", energy_name},
+                       {"envelope_steps", ada.energy.envelope_steps},
+                       {"envelope", ada.energy.envelope},
+                       {"max_error", ada.energy.max_error},
+                       {"relative_error", ada_ev.relative},
+                       {"exponent", std::isfinite(ada.energy.exponent) ? json(ada.energy.exponent)
+                                                                       : json(nullptr)},
+                       {"h_exponent",
+                        std::isfinite(ada_ev.h_exponent) ? json(ada_ev.h_exponent) : json(nullptr)},
+                       {"verdict", f.happened ? "no admissible step" : ada_ev.verdict},
+                       {"why", ada_ev.why},
+                       {"passed", passed}};
+               if (f.happened)
+                 jada["no_admissible_step"] = {{"step", f.step},
+                                               {"t", f.t},
+                                               {"message", f.message},
+                                               {"scan_dt", {f.scan_lo, f.scan_hi}},
+                                               {"scan_points", f.scan_points},
+                                               {"sign_changes", f.sign_changes},
+                                               {"min_abs_residual", f.scan_min_abs},
+                                               {"at_dt", f.scan_min_dt}};
+               line("adaptive (EpAVI)",
+                    fmt::format("{} of {} steps from h0 = {:g} (the first to the reference's "
+                                "q(h0)), t reached {:.6g}, steps in [{:.3g}, {:.3g}]",
+                                ada.steps_taken, p.adaptive_steps, p.h, ada.t_reached, ada.dt_min,
+                                ada.dt_max));
+               if (f.happened)
+                 line("",
+                      fmt::format("NO ADMISSIBLE STEP at step {}, t = {:.6g}: the energy "
+                                  "equation (16) D1 L_d - E_k, scanned over dt in [{:.3g}, "
+                                  "{:.3g}] ({} points), has no sign change (min |D1 L_d - E_k| "
+                                  "= {:.3g} at dt = {:.3g}): its root has disappeared (a fold), "
+                                  "as for EpAVI on Kepler orbits in the EpAVI chapter",
+                                  f.step, f.t, f.scan_lo, f.scan_hi, f.scan_points, f.scan_min_abs,
+                                  f.scan_min_dt));
+               line("", fmt::format("{}: {} ({}); discrete energy E_k kept to {:.1e} (E_1 = "
+                                    "{:.10g}); mean {:.1f} energy-equation evaluations a step",
+                                    energy_name,
+                                    f.happened ? "up to there, " + ada_ev.verdict : ada_ev.verdict,
+                                    ada_ev.why, ada.discrete_energy_drift, ada.E1,
+                                    ada.mean_root_evaluations));
+             }))
+    failed_line("adaptive (EpAVI)");
+  if (p.adaptive_epavi) js["adaptive"] = jada;
 
   // --- 6. work-precision beside two classical methods (report only) ---------------------------
   verify::WorkPrecision wp;
@@ -1007,6 +1106,7 @@ int run_verify(const VerifyOptions& o, const verify::TypedDiscreteLagrangian& dl
   if (o.symmetric && system_reversible) required.emplace_back("reversibility", &jrev);
   // The variational order, when the engine derived it and the expected order is an integer.
   if (jvar.contains("passed")) required.emplace_back("variational order", &jvar);
+  if (p.adaptive_epavi) required.emplace_back("adaptive", &jada);
   std::vector<std::string> required_names, failed_checks;
   for (const auto& [name, j] : required) {
     required_names.push_back(name);
@@ -1182,6 +1282,20 @@ int run_verify(const VerifyOptions& o, const verify::TypedDiscreteLagrangian& dl
                       newton.max_iterations, newton.max_residual),
           "—", "—", true);
     }
+    if (p.adaptive_epavi && failed_row("adaptive (EpAVI)", "adaptive"))
+      row("adaptive (EpAVI)",
+          fmt::format("{} of {} steps from h0 = {:g}, t reached {:.6g}, steps in [{:.3g}, "
+                      "{:.3g}]; {}{}",
+                      ada.steps_taken, p.adaptive_steps, p.h, ada.t_reached, ada.dt_min, ada.dt_max,
+                      ada.failure.happened
+                          ? fmt::format("no admissible step at t = {:.6g} (a fold: no sign "
+                                        "change of (16) over dt in [{:.3g}, {:.3g}]); ",
+                                        ada.failure.t, ada.failure.scan_lo, ada.failure.scan_hi)
+                          : std::string(),
+                      ada_ev.why),
+          "every step exists; the intended energy as in the energy row",
+          ada.failure.happened ? std::string("no admissible step") : ada_ev.verdict,
+          bool(jada.value("passed", false)));
     html << "</table>\n";
     if (o.timings) {
       html << "<p>Timings (this machine; with --timings only, so that reports compare equal "

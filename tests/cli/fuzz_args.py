@@ -95,9 +95,13 @@ def verify_case(r):
         "--json-out": [["out.json"], ["", ".", "nodir/x.json"]],
         "--report": [["rep"], ["", ".", "nodir/rep", "rep/"]],
         "--max-seconds": [["30", "2"], ["0", "-1", "1e9"], GARBAGE],
+        "--adaptive": [["epavi"], GARBAGE],
+        "--adaptive-steps": [["256", "300"], ["0", "10", "1e9"], GARBAGE],
     }
     for name in r.sample(sorted(opts), r.choice([0, 1, 1, 2, 3])):
         args += [name, pick(r, *opts[name])]
+    if "--adaptive" in args and "--adaptive-steps" not in args:
+        args += ["--adaptive-steps", "256"]  # small runs only
     if "--max-seconds" not in args:
         args += ["--max-seconds", "40"]  # every case answers (status 3 past it), never hangs
     return args
