@@ -215,16 +215,29 @@ int run(const VerifyOptions& o, const CLI::App& c) {
     if (c.count(opt) > 0)
       throw ArgumentError(opt, "applies only with --stepper-lib or --stepper-cmd");
   if (c.count("--composition") > 0) {
-    // A composition method (verify_composition.cpp): the options of a typed L_d do not apply.
-    for (const char* opt :
-         {"--ld", "--lagrangian", "--hamiltonian", "--potential", "--dim", "--modified-order",
-          "--format", "--report", "--reference", "--symmetric", "--adaptive", "--adaptive-steps"})
+    // A composition method (verify_composition.cpp); with base ld, of the --ld typed
+    // (verify_composition_ld.cpp), on the system of --potential or --hamiltonian.
+    for (const char* opt : {"--modified-order", "--format", "--report", "--reference",
+                            "--symmetric", "--adaptive", "--adaptive-steps"})
       if (c.count(opt) > 0)
         throw ArgumentError(opt, "does not apply to --composition (see vibook verify --help)");
+    if (o.composition != "ld")
+      for (const char* opt : {"--ld", "--lagrangian", "--hamiltonian", "--potential", "--dim"})
+        if (c.count(opt) > 0)
+          throw ArgumentError(opt,
+                              "applies to --composition ld only (the composition of the "
+                              "--ld typed); the other bases run on --problem");
     CompositionOptions co;
     set_study_options(co, o, c);
     co.base = o.composition;
     co.coefficients = o.coefficients;
+    co.ld = o.ld;
+    co.potential = o.potential;
+    co.lagrangian = o.lagrangian;
+    co.hamiltonian = o.hamiltonian;
+    co.dim = o.dim;
+    if (co.base == "ld" && c.count("--ld") == 0)
+      throw ArgumentError("--ld", "is required with --composition ld");
     return run_composition(co);
   }
   if (c.count("--coefficients") > 0)
@@ -289,8 +302,10 @@ std::function<int()> add_verify_command(CLI::App& app) {
                 "entries as decimals or ratios such as \"5/24\"; see examples/tableaus");
   c->add_option("--composition", o->composition,
                 "verify a composition of this base method instead of an --ld: sv, midpoint, se, "
-                "se-adjoint, or Shen & Sun's vi1, vi1-adjoint, vi2 (order conditions at 120 "
-                "digits, measured order, symplecticity, reversibility, energy)");
+                "se-adjoint, or Shen & Sun's vi1, vi1-adjoint, vi2 (on --problem); or ld, the "
+                "--ld typed (its adjoint -L_d(q1, q0, -h) for '*' stages; dimensions 1-3) on the "
+                "system of --potential or --hamiltonian (order conditions at 120 digits, "
+                "measured order, symplecticity, reversibility, energy)");
   c->add_option("--coefficients", o->coefficients,
                 "with --composition: a catalogue name (yoshida4, suzuki4, yoshida6, yoshida8, "
                 "mclachlan8, kahanli6, kahanli8, ruth3) or the stages' coefficients in order of "

@@ -29,21 +29,16 @@ struct Plan {
   MapStudy study;  // the measurement settings (--t-end, --h-list, --h, --steps, …)
 };
 
-Plan check(const CompositionOptions& o) {
-  Plan p;
-  p.spec.base = verify::find_composition_base(o.base);
-  if (!p.spec.base)
-    throw ArgumentError("--composition",
-                        "unknown base method '" + o.base +
-                            "' (sv, midpoint, se, se-adjoint, vi1, vi1-adjoint or vi2)");
-  p.problem = &find_test_problem(o.problem);
+// The coefficients: a catalogue entry or a typed list (parsed at 120 digits), and
+// --expected-order.
+void check_coefficients(const CompositionOptions& o, verify::CompositionSpec& spec) {
   if (o.coefficients.empty())
     throw ArgumentError("--coefficients",
                         "is required with --composition: a catalogue name (yoshida4, suzuki4, "
                         "yoshida6, yoshida8, mclachlan8, kahanli6, kahanli8, ruth3) or a list");
-  p.spec.coefficients = o.coefficients;
-  p.spec.entry = comp::find_entry(o.coefficients);
-  if (!p.spec.entry) {
+  spec.coefficients = o.coefficients;
+  spec.entry = comp::find_entry(o.coefficients);
+  if (!spec.entry) {
     const bool looks_like_list = o.coefficients.find_first_of("0123456789") != std::string::npos;
     if (!looks_like_list)
       throw ArgumentError("--coefficients", "no catalogue entry '" + o.coefficients +
@@ -51,16 +46,28 @@ Plan check(const CompositionOptions& o) {
                                                 "mclachlan8, kahanli6, kahanli8, ruth3)");
     const MpfrDigits digits(verify::kCompositionDigits);
     for (const auto& item : split_list("--coefficients", o.coefficients))
-      p.spec.typed.push_back(comp::parse_stage<mpfr_real>("--coefficients", item));
-    if (p.spec.typed.empty() || p.spec.typed.size() > 64)
+      spec.typed.push_back(comp::parse_stage<mpfr_real>("--coefficients", item));
+    if (spec.typed.empty() || spec.typed.size() > 64)
       throw ArgumentError("--coefficients", "needs 1 to 64 stages");
   }
-  check_initial_state(o, *p.problem, p.q0, p.p0, p.study);
   if (o.expected_given) {
     const double e = parse_number("--expected-order", o.expected);
     if (!(e > 0 && e <= 10)) throw ArgumentError("--expected-order", "must lie in (0, 10]");
-    p.spec.expected = e;
+    spec.expected = e;
   }
+}
+
+Plan check(const CompositionOptions& o) {
+  Plan p;
+  p.spec.base = verify::find_composition_base(o.base);
+  if (!p.spec.base)
+    throw ArgumentError("--composition",
+                        "unknown base method '" + o.base +
+                            "' (sv, midpoint, se, se-adjoint, vi1, vi1-adjoint, vi2, or ld for "
+                            "the --ld typed)");
+  p.problem = &find_test_problem(o.problem);
+  check_coefficients(o, p.spec);
+  check_initial_state(o, *p.problem, p.q0, p.p0, p.study);
   check_study_options(o, p.study);
   if (o.json_given) check_output_path(o.json_out, "--json-out", true);
   return p;
@@ -69,6 +76,24 @@ Plan check(const CompositionOptions& o) {
 }  // namespace
 
 int run_composition(const CompositionOptions& o) {
+  if (o.base == "ld") {
+    if (!o.problem.empty())
+      throw ArgumentError("--problem",
+                          "does not apply to --composition ld: the system is --potential or "
+                          "--hamiltonian");
+    verify::CompositionSpec spec;
+    check_coefficients(o, spec);
+    return run_composition_ld(o, std::move(spec));
+  }
+  for (const auto& [opt, text] : {std::pair{"--ld", &o.ld},
+                                  {"--potential", &o.potential},
+                                  {"--lagrangian", &o.lagrangian},
+                                  {"--hamiltonian", &o.hamiltonian},
+                                  {"--dim", &o.dim}})
+    if (!text->empty())
+      throw ArgumentError(opt,
+                          "applies to --composition ld only (the composition of the --ld "
+                          "typed); the other bases run on --problem");
   const Plan p = check(o);
   MapReport rep;
   verify::measure_composition(p.spec, *p.problem, p.q0, p.p0, p.study, rep);

@@ -6,6 +6,7 @@
 #include <string>
 
 #include "study_options.hpp"
+#include "vibook/verify/composition_study.hpp"
 
 namespace vibook::cli {
 
@@ -13,9 +14,15 @@ namespace vibook::cli {
 /// (the defaults of the step sizes depend on the expected order).
 struct CompositionOptions : StudyOptions {
   std::string base, coefficients;
+  /// --composition ld: the typed discrete Lagrangian and the system, as for --ld
+  std::string ld, potential, lagrangian, hamiltonian, dim;
 };
 
 /// Run it; the exit status as for `vibook verify` (0 pass, 5 a verdict failed, 2, 3, 4).
 int run_composition(const CompositionOptions& o);
+
+/// --composition ld (verify_composition_ld.cpp): the base is the --ld typed; `spec` holds the
+/// parsed coefficients (its base is set there).
+int run_composition_ld(const CompositionOptions& o, verify::CompositionSpec spec);
 
 }  // namespace vibook::cli

@@ -102,6 +102,10 @@ def verify_case(r):
         args += [name, pick(r, *opts[name])]
     if "--adaptive" in args and "--adaptive-steps" not in args:
         args += ["--adaptive-steps", "256"]  # small runs only
+    if r.random() < 0.1:
+        # a composition of the typed L_d (the --ld route's expressions, another route)
+        args += ["--composition", "ld", "--coefficients",
+                 pick(r, ["yoshida4", "ruth3", "1/2*,1/2"], GARBAGE)]
     if "--max-seconds" not in args:
         args += ["--max-seconds", "40"]  # every case answers (status 3 past it), never hangs
     return args

@@ -321,6 +321,32 @@ void measure(const CompositionSpec& p, const std::vector<double>& q0, const std:
 
 }  // namespace
 
+void measure_composition(const CompositionSpec& spec, const CompositionStage& base,
+                         const CompositionStage& adjoint, const std::string& system_line,
+                         MapStudy study, MapMeasurement& rep) {
+  const Composed k = conditions(spec, rep);
+  rep.line("system", system_line);
+  // The composed step, stage by stage; the sum of the stages' L_d is the composed L_d.
+  auto composed = [base, adjoint, c = k.c, adj = k.adj](Eigen::VectorXd& z, double h) {
+    double Ld = 0;
+    for (std::size_t i = 0; i < c.size(); ++i)
+      if (c[i] != 0) Ld += adj[i] ? adjoint(z, c[i] * h) : base(z, c[i] * h);
+    return Ld;
+  };
+  study.step = naming_failures([composed](Eigen::VectorXd& z, double h) { composed(z, h); },
+                               int(study.z0.size() / 2));
+  study.expected = k.expected;
+  study.substeps = double(k.c.size());
+  study.require_reversible = k.symmetric;
+  study.reversible_note = " (reported only: the composition is not symmetric)";
+  study.generating = composed;
+  study.generating_from = fmt::format(
+      "the sum of the {} stages' discrete Lagrangians ({}) at the positions the stages pass "
+      "through",
+      k.c.size(), spec.base->name);
+  measure_map(study, rep);
+}
+
 void measure_composition(const CompositionSpec& spec, const TestProblem& problem,
                          const std::vector<double>& q0, const std::vector<double>& p0,
                          const MapStudy& study, MapMeasurement& rep) {

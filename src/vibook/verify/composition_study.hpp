@@ -8,6 +8,7 @@
 /// Chapter: \ref chapter-verify (section "Compositions").
 #pragma once
 
+#include <functional>
 #include <optional>
 #include <string>
 #include <vector>
@@ -50,5 +51,17 @@ struct CompositionSpec {
 void measure_composition(const CompositionSpec& spec, const TestProblem& problem,
                          const std::vector<double>& q0, const std::vector<double>& p0,
                          const MapStudy& study, MapMeasurement& rep);
+
+/// One stage of a composition on a method the caller builds (e.g. a typed discrete
+/// Lagrangian): advances z = (q, p) by a step h of either sign, in place, and returns the
+/// stage's discrete Lagrangian L_d(q0, q1, h) along it.
+using CompositionStage = std::function<double(Eigen::VectorXd& z, double h)>;
+
+/// Measure the composition of `base` (with its adjoint `adjoint`; spec.base names it and says
+/// whether it is symmetric) on the system `study` is set up for by the caller (z0, field,
+/// equations, H); `system_line` describes that system in the report. Appended to `rep`.
+void measure_composition(const CompositionSpec& spec, const CompositionStage& base,
+                         const CompositionStage& adjoint, const std::string& system_line,
+                         MapStudy study, MapMeasurement& rep);
 
 }  // namespace vibook::verify

@@ -176,12 +176,20 @@ void measure_map(const MapStudy& s, MapMeasurement& rep) {
                   : std::max(10 * ref_error, 16 * std::numeric_limits<double>::epsilon() * scale);
       std::vector<double> hs, err, windowed;
       bool fallback = false;
+      // The walk stops at round-off: inside the window, an octave of h (4 step sizes) without
+      // an error below the smallest so far means the errors no longer follow the method's
+      // order (a typed method stepped in position form loses digits like 1/h); the points past
+      // the smallest error are then left out.
+      double roundoff_h = 0;
       if (!s.hs.empty()) {
         hs = s.hs;
         for (double h : hs)
           err.push_back((run_map(s, z0, h, s.t_end) - zref).lpNorm<Eigen::Infinity>());
         windowed = err;
       } else {
+        double best = std::numeric_limits<double>::infinity();
+        std::size_t best_at = 0;
+        int since_best = 0;
         for (int k = 0;; ++k) {
           const double n = std::ceil(s.t_end * std::exp2(0.25 * k));
           if (!hs.empty() && std::abs(s.t_end / n - hs.back()) == 0) continue;
@@ -198,6 +206,16 @@ void measure_map(const MapStudy& s, MapMeasurement& rep) {
           const bool in = e <= kWindow * scale && e >= kWindowLow * scale;
           windowed.push_back(in ? e : std::numeric_limits<double>::quiet_NaN());
           if (e < kWindowLow * scale) break;
+          if (e < best) {
+            best = e;
+            best_at = hs.size() - 1;
+            since_best = 0;
+          } else if (std::isfinite(e) && best <= kWindow * scale && ++since_best == 4) {
+            roundoff_h = hs[best_at];
+            for (std::size_t i = best_at + 1; i < windowed.size(); ++i)
+              windowed[i] = std::numeric_limits<double>::quiet_NaN();
+            break;
+          }
         }
         if (std::count_if(windowed.begin(), windowed.end(),
                           [](double x) { return std::isfinite(x); }) < 3) {
@@ -225,10 +243,16 @@ void measure_map(const MapStudy& s, MapMeasurement& rep) {
                     "h from {:.3g} to {:.3g}, errors from {:.2e} to {:.2e}; {} of {} runs "
                     "fitted ({})",
                     hmax, hmin, emax, emin, fit.points, hs.size(),
-                    !s.hs.empty() ? "--h-list, above the floor and the plateau"
-                    : fallback    ? "the window [1e-12, 1e-6]·scale was not reached: the 6 "
-                                    "smallest step sizes"
-                                  : "errors in the window [1e-12, 1e-6]·scale")
+                    !s.hs.empty() ? std::string("--h-list, above the floor and the plateau")
+                    : fallback
+                        ? std::string("the window [1e-12, 1e-6]·scale was not reached: the 6 "
+                                      "smallest step sizes")
+                        : std::string("errors in the window [1e-12, 1e-6]·scale") +
+                              (roundoff_h > 0
+                                   ? fmt::format("; round-off below h = {:.3g}: no smaller "
+                                                 "error over the next octave of h",
+                                                 roundoff_h)
+                                   : std::string()))
               : fmt::format("{} runs, none usable", hs.size());
       rep.line(
           "order",
@@ -256,6 +280,7 @@ void measure_map(const MapStudy& s, MapMeasurement& rep) {
           {"expected", s.expected},
           {"tolerance", s.order_tol},
           {"passed", ok}};
+      if (roundoff_h > 0) rep.js["order"]["roundoff_below_h"] = roundoff_h;
     } catch (const NumericalError& e) {
       rep.numerical("order", e);
     }

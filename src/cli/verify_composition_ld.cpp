@@ -1,0 +1,223 @@
+// `vibook verify --composition ld --ld EXPR --coefficients NAME|LIST`: a composition built on
+// the user's own typed discrete Lagrangian. The base stage is the discrete Euler–Lagrange step
+// of L_d (through the compiled tape); the adjoint stage is that of the adjoint discrete
+// Lagrangian L_d*(q0, q1, h) = −L_d(q1, q0, −h) (nested AutoDiff on the expression tree),
+// so a '*' in the coefficients applies the true adjoint of the user's method. Whether the base
+// is symmetric (L_d* = L_d), which decides the order conditions, is computed from the
+// expression: symbolically by the engine, else at random points. The system is the one typed
+// (--potential or --hamiltonian), its reference Hamilton's equations in double-double.
+#include <array>
+#include <cmath>
+#include <memory>
+#include <mutex>
+#include <random>
+#include <string>
+#include <vector>
+
+#include <fmt/format.h>
+#include <ginac/ginac.h>
+
+#include "args.hpp"
+#include "cli.hpp"
+#include "verify_composition.hpp"
+#include "verify_map.hpp"
+#include "vibook/core/output_file.hpp"
+#include "vibook/core/precision.hpp"
+#include "vibook/integrators/composition.hpp"
+#include "vibook/mechanics/del_solver.hpp"
+#include "vibook/modified/engine.hpp"
+#include "vibook/modified/series.hpp"
+#include "vibook/verify/composition_study.hpp"
+#include "vibook/verify/expression.hpp"
+#include "vibook/verify/tape.hpp"
+
+namespace vibook::cli {
+
+namespace {
+
+namespace comp = vibook::composition;
+
+// Whether L_d is its own adjoint, and how that was decided.
+struct Symmetry {
+  bool symmetric = false;
+  std::string how;
+};
+
+// L_d(q0, q1, h) + L_d(q1, q0, −h) ≡ 0: first on GiNaC symbols (the engine's zero test);
+// where the engine cannot reduce it to zero, at 16 random points in double (relative 1e-13).
+template <int N>
+Symmetry decide_symmetry(const verify::TypedDiscreteLagrangian& dl) {
+  const auto Ld = dl.bind<N>();
+  {
+    std::lock_guard<std::mutex> lock(modified::ginac_mutex());
+    Vec<GiNaC::ex, N> a, b;
+    for (int i = 0; i < N; ++i) {
+      a(i) = GiNaC::symbol(fmt::format("a{}", i + 1));
+      b(i) = GiNaC::symbol(fmt::format("b{}", i + 1));
+    }
+    const GiNaC::ex h = GiNaC::symbol("h");
+    try {
+      const GiNaC::ex d = Ld(a, b, h) + Ld(b, a, GiNaC::ex(-h));
+      if (modified::vanishes(d))
+        return {true, "symmetric: L_d(q0, q1, h) = -L_d(q1, q0, -h), shown by the engine"};
+    } catch (const std::exception&) {
+      // not decided symbolically (e.g. a function the engine does not expand); numerically below
+    }
+  }
+  std::mt19937_64 rng(20261127);
+  std::uniform_real_distribution<double> u(-0.5, 0.5);
+  double worst = 0;
+  for (int k = 0; k < 16; ++k) {
+    Vec<double, N> a, b;
+    for (int i = 0; i < N; ++i) {
+      a(i) = 0.3 + u(rng);
+      b(i) = a(i) + 0.1 * u(rng);
+    }
+    const double h = 0.05 + 0.05 * (u(rng) + 0.5);
+    const double x = Ld(a, b, h), y = Ld(b, a, -h);
+    const double scale = std::max({std::abs(x), std::abs(y), 1e-300});
+    worst = std::max(worst, std::abs(x + y) / scale);
+  }
+  if (worst <= 1e-13)
+    return {true, fmt::format("symmetric: L_d(q0, q1, h) + L_d(q1, q0, -h) = 0 to {:.1e} "
+                              "(relative) at 16 random points; the engine did not reduce it to "
+                              "zero",
+                              worst)};
+  return {false, fmt::format("not symmetric: L_d(q0, q1, h) + L_d(q1, q0, -h) reaches {:.1e} "
+                             "(relative) at random points; its adjoint is -L_d(q1, q0, -h)",
+                             worst)};
+}
+
+template <int N>
+int run_n(const CompositionOptions& o, const verify::TypedDiscreteLagrangian& dl,
+          verify::CompositionSpec spec, MapStudy study, const std::vector<double>& q0,
+          const std::vector<double>& p0) {
+  const Symmetry sym = decide_symmetry<N>(dl);
+  const verify::CompositionBase base{
+      "ld", sym.symmetric, "the typed discrete Lagrangian L_d = " + o.ld + "; " + sym.how};
+  spec.base = &base;
+  // The base stage: the DEL step of L_d through the compiled tape; the adjoint stage: the DEL
+  // step of -L_d(q1, q0, -h) by nested AutoDiff. Each stage starts Newton from q + h p (the
+  // stages' steps differ in size and sign, so the last increment is no guess).
+  const auto Ld = dl.bind<N>();
+  std::shared_ptr<DelIntegrator<N, verify::CompiledDiscreteLagrangian<N>>> tape;
+  {
+    std::lock_guard<std::mutex> lock(modified::ginac_mutex());
+    tape = std::make_shared<DelIntegrator<N, verify::CompiledDiscreteLagrangian<N>>>(
+        verify::CompiledDiscreteLagrangian<N>(dl));
+  }
+  auto adjoint_ld = [Ld](const auto& a, const auto& b, const auto& h) -> scalar_t<decltype(h)> {
+    using S = scalar_t<decltype(h)>;
+    return -Ld(b, a, S(-h));
+  };
+  auto adj = std::make_shared<DelIntegrator<N, decltype(adjoint_ld)>>(adjoint_ld);
+  auto stage = [](auto integrator, auto ld) -> verify::CompositionStage {
+    return [integrator, ld](Eigen::VectorXd& z, double h) {
+      Vec<double, N> q = z.head<N>(), p = z.tail<N>();
+      const Vec<double, N> start = q;
+      integrator->reset();
+      integrator->step(q, p, h);
+      z.head<N>() = q;
+      z.tail<N>() = p;
+      return double(ld(start, q, h));
+    };
+  };
+  Eigen::VectorXd z0(2 * N);
+  for (int i = 0; i < N; ++i) {
+    z0(i) = q0[static_cast<std::size_t>(i)];
+    z0(N + i) = p0[static_cast<std::size_t>(i)];
+  }
+  study.z0 = z0;
+  study.field = [&dl](const std::vector<dd_real>& y) {
+    Vec<dd_real, N> q, pp;
+    for (int i = 0; i < N; ++i) {
+      q(i) = y[static_cast<std::size_t>(i)];
+      pp(i) = y[static_cast<std::size_t>(N + i)];
+    }
+    const Vec<dd_real, 2 * N> f = dl.hamilton_field<N, dd_real>(q, pp);
+    return std::vector<dd_real>(f.data(), f.data() + 2 * N);
+  };
+  study.equations = "Hamilton's equations of H";
+  study.H = [&dl](const Eigen::VectorXd& z) {
+    return dl.hamiltonian<N, double>(Vec<double, N>(z.head<N>()), Vec<double, N>(z.tail<N>()));
+  };
+  const std::string system = o.hamiltonian.empty()
+                                 ? "H = |p|^2/2 + V(q), V = " + o.potential + " (--potential)"
+                                 : "H = " + o.hamiltonian + " (--hamiltonian)";
+  MapReport rep;
+  verify::measure_composition(spec, stage(tape, Ld), stage(adj, adjoint_ld),
+                              fmt::format("{}, {} degree{} of freedom; q0 = {}, p0 = {}", system, N,
+                                          N == 1 ? "" : "s", vec_text(q0), vec_text(p0)),
+                              study, rep);
+  rep.js["system"] = {{"ld", o.ld},
+                      {"potential", o.potential},
+                      {"hamiltonian", o.hamiltonian},
+                      {"symmetric", sym.symmetric},
+                      {"symmetry", sym.how},
+                      {"q0", q0},
+                      {"p0", p0}};
+  return rep.finish(o.json_given, o.json_out);
+}
+
+}  // namespace
+
+int run_composition_ld(const CompositionOptions& t, verify::CompositionSpec spec) {
+  const CompositionOptions& o = t;
+  if (t.ld.empty()) throw ArgumentError("--ld", "is required with --composition ld");
+  if (!t.lagrangian.empty())
+    throw ArgumentError("--lagrangian",
+                        "does not apply to --composition ld: the system is --potential (H = "
+                        "|p|^2/2 + V) or --hamiltonian");
+  if (t.potential.empty() && t.hamiltonian.empty())
+    throw ArgumentError("--potential",
+                        "is required with --composition ld (or --hamiltonian): the system the "
+                        "composition is measured on");
+  // The system in Hamiltonian form: its field is the reference's, H the energy.
+  const std::string hamiltonian = t.hamiltonian.empty() ? "p^2/2 + V(q)" : t.hamiltonian;
+  int dim = 0;
+  if (!t.dim.empty()) {
+    dim = static_cast<int>(parse_integer("--dim", t.dim));
+    if (dim < 1 || dim > 3) throw ArgumentError("--dim", "must lie in 1..3 with --composition ld");
+  }
+  std::unique_ptr<verify::TypedDiscreteLagrangian> dl;
+  {
+    std::lock_guard<std::mutex> lock(modified::ginac_mutex());
+    dl = std::make_unique<verify::TypedDiscreteLagrangian>(
+        verify::TypedTexts{t.ld, t.potential, "", hamiltonian, dim});
+  }
+  if (dl->dim() > 3)
+    throw ArgumentError("--ld", fmt::format("is {}-dimensional; --composition ld runs in 1 to 3 "
+                                            "dimensions",
+                                            dl->dim()));
+  const int n = dl->dim();
+  auto vector_or = [&](const std::string& arg, const std::string& text) {
+    std::vector<double> v = text.empty() ? std::vector<double>(static_cast<std::size_t>(n), 0.1)
+                                         : parse_list(arg, text);
+    if (static_cast<int>(v.size()) != n)
+      throw ArgumentError(arg, fmt::format("has {} components; the expressions are "
+                                           "{}-dimensional",
+                                           v.size(), n));
+    for (double x : v)
+      if (!std::isfinite(x)) throw ArgumentError(arg, "must be finite");
+    return v;
+  };
+  const std::vector<double> q0 = vector_or("--q0", o.q0), p0 = vector_or("--p0", o.p0);
+  MapStudy study;
+  if (o.t_end_given) {
+    study.t_end = parse_number("--t-end", o.t_end);
+    if (!(study.t_end > 0) || study.t_end > 1e4)
+      throw ArgumentError("--t-end", "must lie in (0, 1e4]");
+  }
+  check_study_options(o, study);
+  if (o.json_given) check_output_path(o.json_out, "--json-out", true);
+  switch (n) {
+    case 1:
+      return run_n<1>(o, *dl, std::move(spec), study, q0, p0);
+    case 2:
+      return run_n<2>(o, *dl, std::move(spec), study, q0, p0);
+    default:
+      return run_n<3>(o, *dl, std::move(spec), study, q0, p0);
+  }
+}
+
+}  // namespace vibook::cli
