@@ -209,6 +209,7 @@ int run(const VerifyOptions& o, const CLI::App& c) {
     so.lib_given = c.count("--stepper-lib") > 0;
     so.cmd_given = c.count("--stepper-cmd") > 0;
     so.symmetric = o.symmetric;
+    so.timings = o.timings;
     return run_stepper(so);
   }
   for (const char* opt : {"--stepper-arg", "--stepper-timeout"})

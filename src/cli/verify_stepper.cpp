@@ -26,6 +26,7 @@
 #include <cmath>
 #include <cstdlib>
 #include <cstring>
+#include <limits>
 #include <memory>
 #include <mutex>
 #include <string>
@@ -293,6 +294,110 @@ Plan check(const StepperOptions& o) {
   return p;
 }
 
+// --- work against precision, beside two built-in methods (report only) -----------------------
+// The black box's error at T against the independent reference, at five step sizes spread over
+// the range its order was fitted on, beside the classical Runge–Kutta method (order 4, not
+// symplectic) and, when H = |p|²/2 + V, Störmer–Verlet, both stepped on the typed system here.
+// Steps are the work measure every one-step method shares; the wall-clock seconds of each run
+// (the only work measure a black box has) are added with --timings, which makes the report
+// differ from run to run.
+template <int N>
+void work_precision(const StepperOptions& o, const verify::TypedDiscreteLagrangian& sys,
+                    const Plan& p, const MapStudy& s, MapReport& rep) {
+  using Clock = std::chrono::steady_clock;
+  if (!rep.js.contains("reference") || !rep.js.contains("order")) return;
+  const std::vector<double> ref = rep.js["reference"]["state"].get<std::vector<double>>();
+  Eigen::VectorXd zref(2 * N);
+  for (int i = 0; i < 2 * N; ++i) zref(i) = ref[static_cast<std::size_t>(i)];
+  // Five step sizes, log-spaced between the largest and smallest h of the order fit, each
+  // rounded to T/n so that every run ends at T.
+  const auto& jo = rep.js["order"];
+  double hmax = 0, hmin = INFINITY;
+  for (std::size_t i = 0; i < jo["h"].size(); ++i)
+    if (jo["used_in_fit"][i].get<bool>()) {
+      hmax = std::max(hmax, jo["h"][i].get<double>());
+      hmin = std::min(hmin, jo["h"][i].get<double>());
+    }
+  if (!(hmax > 0)) return;
+  std::vector<double> hs;
+  for (int k = 0; k < 5; ++k) {
+    const double h = hmax * std::pow(hmin / hmax, k / 4.0);
+    const double n = std::ceil(s.t_end / h - 1e-9);
+    if (hs.empty() || s.t_end / n < hs.back()) hs.push_back(s.t_end / n);
+  }
+  auto field = [&sys](const Vec<double, N>& q, const Vec<double, N>& pp) {
+    return sys.hamilton_field<N, double>(q, pp);
+  };
+  MapStudy rk4 = s, sv = s;
+  rk4.propagate = nullptr;
+  rk4.step = [field](Eigen::VectorXd& z, double h) {
+    auto f = [&](const Eigen::VectorXd& y) {
+      const Vec<double, 2 * N> r = field(y.head<N>(), y.tail<N>());
+      return Eigen::VectorXd(r);
+    };
+    const Eigen::VectorXd k1 = f(z), k2 = f(z + 0.5 * h * k1), k3 = f(z + 0.5 * h * k2),
+                          k4 = f(z + h * k3);
+    z += h / 6 * (k1 + 2 * k2 + 2 * k3 + k4);
+  };
+  struct Method {
+    std::string name, key;
+    const MapStudy* study;
+  };
+  std::vector<Method> methods = {{"black box", "black_box", &s}, {"RK4", "rk4", &rk4}};
+  // Störmer–Verlet only where H = |p|²/2 + V (the force −∇V is the field's p-part).
+  const bool separable = p.system_from == "--potential" || p.system_from.rfind("--problem", 0) == 0;
+  if (separable) {
+    sv.propagate = nullptr;
+    sv.step = [field](Eigen::VectorXd& z, double h) {
+      Vec<double, N> q = z.head<N>(), pp = z.tail<N>();
+      pp += 0.5 * h * field(q, pp).template tail<N>();
+      q += h * pp;
+      pp += 0.5 * h * field(q, pp).template tail<N>();
+      z << q, pp;
+    };
+    methods.insert(methods.begin() + 1, {"Störmer-Verlet", "stormer_verlet", &sv});
+  }
+  std::vector<double> steps;
+  for (double h : hs) steps.push_back(std::ceil(s.t_end / h - 1e-9));
+  {
+    std::vector<std::string> cells;
+    for (double n : steps) cells.push_back(fmt::format("{:>8.0f}", n));
+    rep.line("work-precision", fmt::format("{:<15}{}", "steps", fmt::join(cells, "  ")));
+  }
+  json jm = json::object();
+  for (const auto& m : methods) {
+    std::vector<double> err, secs;
+    for (double h : hs) {
+      const auto t0 = Clock::now();
+      double e = std::numeric_limits<double>::quiet_NaN();
+      try {
+        e = (run_map(*m.study, s.z0, h, s.t_end) - zref).template lpNorm<Eigen::Infinity>();
+      } catch (const NumericalError&) {
+        // a step size the method cannot take: no point
+      }
+      secs.push_back(std::chrono::duration<double>(Clock::now() - t0).count());
+      err.push_back(e);
+    }
+    jm[m.key] = {{"error", err}};
+    if (o.timings) jm[m.key]["seconds"] = secs;
+    std::vector<std::string> cells;
+    for (std::size_t i = 0; i < hs.size(); ++i)
+      cells.push_back(o.timings ? fmt::format("{:.2e} ({:.3g} s)", err[i], secs[i])
+                                : fmt::format("{:.2e}", err[i]));
+    rep.line("", fmt::format("{:<15}{}", m.name, fmt::join(cells, "  ")));
+  }
+  rep.line("", fmt::format("(error at T = {:g} against the reference; {}; report only)", s.t_end,
+                           o.timings ? "seconds per run in parentheses"
+                                     : "--timings adds the seconds of each run"));
+  rep.js["work_precision"] = {{"h", hs},
+                              {"steps", steps},
+                              {"methods", jm},
+                              {"note",
+                               "error at T against the reference; rk4 and stormer_verlet "
+                               "(when H = |p|^2/2 + V) are stepped by vibook on the same "
+                               "system; report only"}};
+}
+
 template <int N>
 int run_n(const StepperOptions& o, const Plan& p) {
   const verify::TypedDiscreteLagrangian& sys = *p.system;
@@ -402,6 +507,7 @@ int run_n(const StepperOptions& o, const Plan& p) {
                       {"q0", p.q0},
                       {"p0", p.p0}};
   measure_map(s, rep);
+  work_precision<N>(o, sys, p, s, rep);
   box.reset();  // the child process ends before the report is printed
   rep.variational_order_not_derived(
       "a black-box stepper has no discrete Lagrangian to expand; its order is "

@@ -13,6 +13,7 @@ namespace vibook::cli {
 struct StepperOptions : StudyOptions {
   std::string lib, cmd, arg, timeout, hamiltonian, potential, dim;
   bool lib_given = false, cmd_given = false, symmetric = false;
+  bool timings = false;  ///< --timings: the seconds of each work-precision run
 };
 
 /// Run it; the exit status as for `vibook verify` (0 pass, 5 a verdict failed, 2, 3, 4).

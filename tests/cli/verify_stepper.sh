@@ -59,6 +59,32 @@ case_ py-hamiltonian 0 "" 'H = p\^2/2 - cos\(q\[1\]\) \(--hamiltonian\)' \
   -- --stepper-cmd "python3 $PY sv pendulum" --hamiltonian 'p^2/2 - cos(q[1])' --q0 1 --p0 0.5 \
   --expected-order 2 --steps 4096
 
+# Work against precision beside vibook's own Störmer–Verlet and RK4 on the same system: the
+# Python Störmer–Verlet gives vibook's Störmer–Verlet errors (relative 1e-9), and McLachlan's
+# fourth-order method from Boost.Odeint does not (its errors are 1e3 times smaller at every
+# step size); with --timings each run's seconds are added, and the RK4 column is order 4.
+"$V" verify --stepper-cmd "python3 $PY sv pendulum" --problem pendulum --expected-order 2 \
+  --steps 2048 --json-out "$tmp/wp1.json" >"$tmp/wp1.out" 2>&1
+"$V" verify --stepper-lib "$LIB" --stepper-arg mclachlan4/kepler --expected-order 4 --timings \
+  --json-out "$tmp/wp2.json" >"$tmp/wp2.out" 2>&1
+python3 - "$tmp/wp1.json" "$tmp/wp2.json" <<'PY' && grep -q "^work-precision  *steps" "$tmp/wp1.out" && ok ||
+import json, math, sys
+a, b = (json.load(open(f))["work_precision"] for f in sys.argv[1:3])
+m = a["methods"]
+assert set(m) == {"black_box", "stormer_verlet", "rk4"} and len(a["h"]) == 5, a
+for x, y in zip(m["black_box"]["error"], m["stormer_verlet"]["error"]):
+    assert abs(x - y) <= 1e-9 * y, (x, y)
+assert "seconds" not in m["black_box"], m
+n = b["methods"]
+for x, y in zip(n["black_box"]["error"], n["stormer_verlet"]["error"]):
+    assert x < 1e-3 * y, (x, y)
+assert all(len(n[k]["seconds"]) == 5 and min(n[k]["seconds"]) > 0 for k in n), n
+e, h = n["rk4"]["error"], b["h"]
+slope = math.log(e[0] / e[3]) / math.log(h[0] / h[3])
+assert abs(slope - 4) < 0.2, slope
+PY
+  bad "work-precision: $(grep -A5 '^work-precision' "$tmp/wp1.out" "$tmp/wp2.out")"
+
 # A stepper that fails mid-run: status 3, one stderr line naming the part, the step and state.
 "$V" verify --stepper-cmd "python3 $PY refuse pendulum" --problem pendulum --expected-order 2 \
   --h 0.005 --h-list 0.02,0.01,0.005 >"$tmp/out" 2>"$tmp/err"
