@@ -107,7 +107,7 @@ TEST_CASE("adaptive: a doubled kinetic term keeps its own energy and fails on th
   CHECK(v.verdict == "large");
 }
 
-TEST_CASE("adaptive: Kepler at e = 0.8 has no admissible step; the fold is recorded") {
+TEST_CASE("adaptive: Kepler at e = 0.8 has no admissible step and the fold is recorded") {
   std::unique_ptr<verify::TypedDiscreteLagrangian> dl;
   {
     std::lock_guard<std::mutex> lock(modified::ginac_mutex());
