@@ -127,20 +127,7 @@ int run_n(const CompositionOptions& o, const verify::TypedDiscreteLagrangian& dl
     z0(i) = q0[static_cast<std::size_t>(i)];
     z0(N + i) = p0[static_cast<std::size_t>(i)];
   }
-  study.z0 = z0;
-  study.field = [&dl](const std::vector<dd_real>& y) {
-    Vec<dd_real, N> q, pp;
-    for (int i = 0; i < N; ++i) {
-      q(i) = y[static_cast<std::size_t>(i)];
-      pp(i) = y[static_cast<std::size_t>(N + i)];
-    }
-    const Vec<dd_real, 2 * N> f = dl.hamilton_field<N, dd_real>(q, pp);
-    return std::vector<dd_real>(f.data(), f.data() + 2 * N);
-  };
-  study.equations = "Hamilton's equations of H";
-  study.H = [&dl](const Eigen::VectorXd& z) {
-    return dl.hamiltonian<N, double>(Vec<double, N>(z.head<N>()), Vec<double, N>(z.tail<N>()));
-  };
+  set_typed_system<N>(study, dl, z0);
   const std::string system = o.hamiltonian.empty()
                                  ? "H = |p|^2/2 + V(q), V = " + o.potential + " (--potential)"
                                  : "H = " + o.hamiltonian + " (--hamiltonian)";

@@ -17,6 +17,7 @@
 #include "args.hpp"
 #include "cli.hpp"
 #include "vibook/core/precision.hpp"
+#include "vibook/verify/expression.hpp"
 #include "vibook/verify/map_study.hpp"
 #include "vibook/verify/reference.hpp"
 #include "vibook/verify/verify.hpp"
@@ -30,6 +31,28 @@ using verify::run_map;
 using verify::test_problems;
 using verify::TestProblem;
 using verify::vec_text;
+
+/// The system part of a study from a typed system with a Hamiltonian (`vibook verify
+/// --hamiltonian`, or p^2/2 + V(q) from --potential): z0, the reference's field (Hamilton's
+/// equations in double-double) and the energy. `sys` must outlive the study.
+template <int N>
+void set_typed_system(MapStudy& s, const verify::TypedDiscreteLagrangian& sys,
+                      const Eigen::VectorXd& z0) {
+  s.z0 = z0;
+  s.field = [&sys](const std::vector<dd_real>& y) {
+    Vec<dd_real, N> q, pp;
+    for (int i = 0; i < N; ++i) {
+      q(i) = y[static_cast<std::size_t>(i)];
+      pp(i) = y[static_cast<std::size_t>(N + i)];
+    }
+    const Vec<dd_real, 2 * N> f = sys.hamilton_field<N, dd_real>(q, pp);
+    return std::vector<dd_real>(f.data(), f.data() + 2 * N);
+  };
+  s.equations = "Hamilton's equations of H";
+  s.H = [&sys](const Eigen::VectorXd& z) {
+    return sys.hamiltonian<N, double>(Vec<double, N>(z.head<N>()), Vec<double, N>(z.tail<N>()));
+  };
+}
 
 /// The test problem named by --problem (empty: kepler); ArgumentError naming --problem
 /// otherwise.

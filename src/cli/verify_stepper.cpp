@@ -463,20 +463,7 @@ int run_n(const StepperOptions& o, const Plan& p) {
                         "state",
                         n, h, where(start)));
     };
-  s.z0 = z0;
-  s.field = [&sys](const std::vector<dd_real>& y) {
-    Vec<dd_real, N> q, pp;
-    for (int i = 0; i < N; ++i) {
-      q(i) = y[static_cast<std::size_t>(i)];
-      pp(i) = y[static_cast<std::size_t>(N + i)];
-    }
-    const Vec<dd_real, 2 * N> f = sys.hamilton_field<N, dd_real>(q, pp);
-    return std::vector<dd_real>(f.data(), f.data() + 2 * N);
-  };
-  s.equations = "Hamilton's equations of H";
-  s.H = [&sys](const Eigen::VectorXd& z) {
-    return sys.hamiltonian<N, double>(Vec<double, N>(z.head<N>()), Vec<double, N>(z.tail<N>()));
-  };
+  set_typed_system<N>(s, sys, z0);
   s.expected = p.expected;
   // A command answers a whole run at once, but at the speed of its language: the walk of step
   // counts stops at 1e5 steps a run (a library: 1e6, as for the compositions).
