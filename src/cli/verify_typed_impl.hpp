@@ -971,6 +971,7 @@ int run_verify(const VerifyOptions& o, const verify::TypedDiscreteLagrangian& dl
                                                {"scan_dt", {f.scan_lo, f.scan_hi}},
                                                {"scan_points", f.scan_points},
                                                {"sign_changes", f.sign_changes},
+                                               {"far_sign_changes", f.far_sign_changes},
                                                {"min_abs_residual", f.scan_min_abs},
                                                {"at_dt", f.scan_min_dt}};
                line("adaptive (EpAVI)",
@@ -984,9 +985,15 @@ int run_verify(const VerifyOptions& o, const verify::TypedDiscreteLagrangian& dl
                                   "equation (16) D1 L_d - E_k, scanned over dt in [{:.3g}, "
                                   "{:.3g}] ({} points), has no sign change (min |D1 L_d - E_k| "
                                   "= {:.3g} at dt = {:.3g}): its root has disappeared (a fold), "
-                                  "as for EpAVI on Kepler orbits in the EpAVI chapter",
+                                  "as for EpAVI on Kepler orbits in the EpAVI chapter{}",
                                   f.step, f.t, f.scan_lo, f.scan_hi, f.scan_points, f.scan_min_abs,
-                                  f.scan_min_dt));
+                                  f.scan_min_dt,
+                                  f.far_sign_changes > 0
+                                      ? fmt::format("; a root near dt = {:.3g}, beyond the "
+                                                    "factor 64 the step searches, is not the "
+                                                    "motion's",
+                                                    f.far_root)
+                                      : std::string()));
                line("", fmt::format("{}: {} ({}); discrete energy E_k kept to {:.1e} (E_1 = "
                                     "{:.10g}); mean {:.1f} energy-equation evaluations a step",
                                     energy_name,

@@ -38,8 +38,8 @@ auto extended_from_fixed(FixedStepLd ld) {
 
 /// Where an adaptive run stopped because the energy equation (16) had no admissible root: the
 /// step, the time, the solver's message, and the scan of D1 L_d − E_k over Δt at that state
-/// (as the EpAVI chapter does): no sign change over the scanned range means a fold, a root
-/// that has disappeared, not one the solver missed.
+/// (as the EpAVI chapter does): no sign change within the factor the step searches (64 of the
+/// predicted step) means a fold, a root that has disappeared, not one the solver missed.
 struct AdaptiveFailure {
   bool happened = false;
   long long step = 0;  ///< the step that could not be taken (1 = the start-up step)
@@ -47,7 +47,9 @@ struct AdaptiveFailure {
   std::string message;
   double scan_lo = 0, scan_hi = 0;  ///< the scanned Δt range
   int scan_points = 0;              ///< points of the scan where the momentum equation solved
-  int sign_changes = 0;
+  int sign_changes = 0;             ///< within the factor max_ratio (64) of the predicted step
+  int far_sign_changes = 0;         ///< farther out: roots EpAVI never takes (not the motion's)
+  double far_root = std::numeric_limits<double>::quiet_NaN();      ///< the first of those
   double scan_min_abs = std::numeric_limits<double>::quiet_NaN();  ///< min |D1 L_d − E_k|
   double scan_min_dt = std::numeric_limits<double>::quiet_NaN();
 };
@@ -105,10 +107,14 @@ AdaptiveStudy epavi_study(const FixedStepLd& ld, const Observable& H, const Eige
         f.step = a.steps_taken + 1;
         f.t = k.t;
         f.message = e.what();
-        // Scan D1 L_d − E_k over three decades either side of the previous step.
-        const double last = vi.last_step();
-        f.scan_lo = last * 1e-3;
-        f.scan_hi = last * 1e3;
+        // Scan D1 L_d − E_k over three decades either side of the predicted step. A sign
+        // change within the factor max_ratio the step searches is a root it missed; one
+        // farther out is a root the method never takes (the EpAVI chapter's spurious root,
+        // a few hundred times the physical step), noted but not the continuation.
+        const double center = vi.history().predicted_step();
+        const double ratio = vi.options().max_ratio;
+        f.scan_lo = center * 1e-3;
+        f.scan_hi = center * 1e3;
         double prev = std::numeric_limits<double>::quiet_NaN(), prev_dt = prev;
         double crossing = prev;
         for (int i = 0; i <= 600; ++i) {
@@ -122,8 +128,14 @@ AdaptiveStudy epavi_study(const FixedStepLd& ld, const Observable& H, const Eige
           ++f.scan_points;
           if (!(std::abs(g) >= f.scan_min_abs)) f.scan_min_abs = std::abs(g), f.scan_min_dt = dt;
           if (std::isfinite(prev) && (g < 0) != (prev < 0)) {
-            ++f.sign_changes;
-            if (!std::isfinite(crossing)) crossing = std::sqrt(dt * prev_dt);
+            const double root = std::sqrt(dt * prev_dt);
+            if (root >= center / ratio && root <= center * ratio) {
+              ++f.sign_changes;
+              if (!std::isfinite(crossing)) crossing = root;
+            } else {
+              ++f.far_sign_changes;
+              if (!std::isfinite(f.far_root)) f.far_root = root;
+            }
           }
           prev = g;
           prev_dt = dt;

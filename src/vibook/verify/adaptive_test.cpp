@@ -125,6 +125,7 @@ TEST_CASE("adaptive: Kepler at e = 0.8 has no admissible step and the fold is re
   const auto a = verify::epavi_study<2>(Ld, H, z0, orbit.at(h0).q, h0, 20000);
   REQUIRE(a.failure.happened);
   CHECK(a.failure.sign_changes == 0);
+  CHECK(a.failure.far_sign_changes == 0);
   CHECK(a.failure.scan_points > 100);
   CHECK(a.failure.scan_min_abs > 0);
   CHECK(a.steps_taken == a.failure.step - 1);
