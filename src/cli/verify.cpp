@@ -291,8 +291,9 @@ std::function<int()> add_verify_command(CLI::App& app) {
   c->add_option("--ld", o->ld,
                 "discrete Lagrangian L_d(q0, q1, h) ≈ h·L in q0, q1 (components q0[1], …), h, "
                 "V(...) and grad(V)(...), e.g. 'h*((q1-q0)^2/(2*h^2) - "
-                "(V(q0)+4*V((q0+q1)/2)+V(q1))/6)'; u^2 is |u|^2, [a, b] a vector (required "
-                "unless --composition is given)");
+                "(V(q0)+4*V((q0+q1)/2)+V(q1))/6)'; u^2 is |u|^2, [a, b] a vector (required, "
+                "and with --composition ld; not with --method, --tableau, a stepper or another "
+                "--composition base)");
   c->add_option("--method", o->method,
                 "verify a catalogue method instead of an --ld: gauss:S (S = 1-4) or lobatto:S "
                 "(S = 2-5), the Galerkin variational integrator with S stages (Gauss "
