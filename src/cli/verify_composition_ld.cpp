@@ -177,24 +177,9 @@ int run_composition_ld(const CompositionOptions& t, verify::CompositionSpec spec
                                             "dimensions",
                                             dl->dim()));
   const int n = dl->dim();
-  auto vector_or = [&](const std::string& arg, const std::string& text) {
-    std::vector<double> v = text.empty() ? std::vector<double>(static_cast<std::size_t>(n), 0.1)
-                                         : parse_list(arg, text);
-    if (static_cast<int>(v.size()) != n)
-      throw ArgumentError(arg, fmt::format("has {} components; the expressions are "
-                                           "{}-dimensional",
-                                           v.size(), n));
-    for (double x : v)
-      if (!std::isfinite(x)) throw ArgumentError(arg, "must be finite");
-    return v;
-  };
-  const std::vector<double> q0 = vector_or("--q0", o.q0), p0 = vector_or("--p0", o.p0);
+  std::vector<double> q0, p0;
   MapStudy study;
-  if (o.t_end_given) {
-    study.t_end = parse_number("--t-end", o.t_end);
-    if (!(study.t_end > 0) || study.t_end > 1e4)
-      throw ArgumentError("--t-end", "must lie in (0, 1e4]");
-  }
+  check_typed_initial_state(o, n, q0, p0, study);
   check_study_options(o, study);
   if (o.json_given) check_output_path(o.json_out, "--json-out", true);
   switch (n) {

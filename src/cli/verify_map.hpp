@@ -32,14 +32,11 @@ using verify::test_problems;
 using verify::TestProblem;
 using verify::vec_text;
 
-/// The system part of a study from a typed system with a Hamiltonian (`vibook verify
-/// --hamiltonian`, or p^2/2 + V(q) from --potential): z0, the reference's field (Hamilton's
-/// equations in double-double) and the energy. `sys` must outlive the study.
+/// Hamilton's equations of the Hamiltonian of `sys` in double-double, (q, p) stacked: the field
+/// every reference of a typed system solves. `sys` must outlive it.
 template <int N>
-void set_typed_system(MapStudy& s, const verify::TypedDiscreteLagrangian& sys,
-                      const Eigen::VectorXd& z0) {
-  s.z0 = z0;
-  s.field = [&sys](const std::vector<dd_real>& y) {
+verify::Field<dd_real> typed_hamilton_field(const verify::TypedDiscreteLagrangian& sys) {
+  return [&sys](const std::vector<dd_real>& y) {
     Vec<dd_real, N> q, pp;
     for (int i = 0; i < N; ++i) {
       q(i) = y[static_cast<std::size_t>(i)];
@@ -48,6 +45,16 @@ void set_typed_system(MapStudy& s, const verify::TypedDiscreteLagrangian& sys,
     const Vec<dd_real, 2 * N> f = sys.hamilton_field<N, dd_real>(q, pp);
     return std::vector<dd_real>(f.data(), f.data() + 2 * N);
   };
+}
+
+/// The system part of a study from a typed system with a Hamiltonian (`vibook verify
+/// --hamiltonian`, or p^2/2 + V(q) from --potential): z0, the reference's field (Hamilton's
+/// equations in double-double) and the energy. `sys` must outlive the study.
+template <int N>
+void set_typed_system(MapStudy& s, const verify::TypedDiscreteLagrangian& sys,
+                      const Eigen::VectorXd& z0) {
+  s.z0 = z0;
+  s.field = typed_hamilton_field<N>(sys);
   s.equations = "Hamilton's equations of H";
   s.H = [&sys](const Eigen::VectorXd& z) {
     return sys.hamiltonian<N, double>(Vec<double, N>(z.head<N>()), Vec<double, N>(z.tail<N>()));
@@ -115,6 +122,30 @@ void check_initial_state(const Options& o, const TestProblem& problem, std::vect
   p0 = vector_or("--p0", o.p0, problem.p0);
   if (problem.name == "kepler" && std::hypot(q0[0], q0[1]) < 1e-3)
     throw ArgumentError("--q0", "lies at (or within 1e-3 of) the Kepler singularity q = 0");
+  if (o.t_end_given) {
+    s.t_end = parse_number("--t-end", o.t_end);
+    if (!(s.t_end > 0) || s.t_end > 1e4) throw ArgumentError("--t-end", "must lie in (0, 1e4]");
+  }
+}
+
+/// The same for a system typed as an expression with `n` degrees of freedom: --q0 and --p0
+/// default to 0.1 in every component.
+template <class Options>
+void check_typed_initial_state(const Options& o, int n, std::vector<double>& q0,
+                               std::vector<double>& p0, MapStudy& s) {
+  auto vector_or = [&](const std::string& arg, const std::string& text) {
+    std::vector<double> v = text.empty() ? std::vector<double>(static_cast<std::size_t>(n), 0.1)
+                                         : parse_list(arg, text);
+    if (static_cast<int>(v.size()) != n)
+      throw ArgumentError(arg, fmt::format("has {} components; the expressions are "
+                                           "{}-dimensional",
+                                           v.size(), n));
+    for (double x : v)
+      if (!std::isfinite(x)) throw ArgumentError(arg, "must be finite");
+    return v;
+  };
+  q0 = vector_or("--q0", o.q0);
+  p0 = vector_or("--p0", o.p0);
   if (o.t_end_given) {
     s.t_end = parse_number("--t-end", o.t_end);
     if (!(s.t_end > 0) || s.t_end > 1e4) throw ArgumentError("--t-end", "must lie in (0, 1e4]");

@@ -30,6 +30,7 @@
 #include "args.hpp"
 #include "cli.hpp"
 #include "verify_composition.hpp"
+#include "verify_map.hpp"
 #include "verify_method.hpp"
 #include "verify_stepper.hpp"
 #include "verify_typed.hpp"
@@ -474,15 +475,7 @@ int run_verify(const VerifyOptions& o, const verify::TypedDiscreteLagrangian& dl
       }
     };
     if (dl.has_hamiltonian()) {
-      f = [&](const std::vector<T>& y) {
-        Vec<T, N> q, pp;
-        for (int i = 0; i < N; ++i) {
-          q(i) = y[static_cast<std::size_t>(i)];
-          pp(i) = y[static_cast<std::size_t>(N + i)];
-        }
-        const Vec<T, 2 * N> r = dl.hamilton_field<N, T>(q, pp);
-        return std::vector<T>(r.data(), r.data() + 2 * N);
-      };
+      f = typed_hamilton_field<N>(dl);
       for (int i = 0; i < N; ++i) {
         y0[static_cast<std::size_t>(i)] = T(p.q0[i]);
         y0[static_cast<std::size_t>(N + i)] = T(p.p0[i]);

@@ -8,6 +8,7 @@
 #include "vibook/verify/method_study.hpp"
 
 #include <cmath>
+#include <functional>
 #include <memory>
 #include <string>
 #include <vector>
@@ -17,43 +18,14 @@
 
 #include "vibook/kepler/kepler.hpp"
 #include "vibook/problems/problems.hpp"
+#include "vibook/verify/method_study_impl.hpp"
 
 namespace vibook::verify {
 
-namespace {
+namespace method_detail {
 
-using nlohmann::json;
-
-template <class P>
-auto mechanical_lagrangian(P prob) {
-  // L = |v|²/2 − V(q); the return type declared, as AutoDiff needs (autodiff.hpp)
-  return [prob](const auto& q, const auto& v) -> std::remove_cvref_t<decltype(q(0))> {
-    using T = std::remove_cvref_t<decltype(q(0))>;
-    return constant<T>(0.5) * squared_norm(v) - prob.template potential<T>(q);
-  };
-}
-
-// The one-step map (instantiated for each number of stages and problem); the rest of the
-// report depends on the problem only.
-// With it, the step that also returns the step's discrete Lagrangian (the variational order).
-template <int S, class P>
-std::pair<Step, GeneratingStep> galerkin_step(const P& prob, const Quadrature& rule) {
-  constexpr int N = P::N;
-  using Integrator = GalerkinIntegrator<N, S, decltype(mechanical_lagrangian(prob))>;
-  auto integrator = std::make_shared<Integrator>(mechanical_lagrangian(prob), rule);
-  auto generating = std::make_shared<Integrator>(mechanical_lagrangian(prob), rule);
-  return {naming_failures(
-              [integrator](Eigen::VectorXd& z, double h) { step_qp<N>(*integrator, z, h); }, N),
-          [generating](Eigen::VectorXd& z, double h) {
-            step_qp<N>(*generating, z, h);
-            return generating->action();
-          }};
-}
-
-void measure(const MethodSpec& p, const TestProblem& problem, const std::vector<double>& q0,
-             const std::vector<double>& p0, MapStudy s, MapMeasurement& rep,
+void measure(const MethodSpec& p, int N, const System& system, MapStudy s, MapMeasurement& rep,
              std::pair<Step, GeneratingStep> steps) {
-  const int N = static_cast<int>(q0.size());
   const int S = p.stages;
   s.step = std::move(steps.first);
   s.generating = std::move(steps.second);
@@ -61,7 +33,7 @@ void measure(const MethodSpec& p, const TestProblem& problem, const std::vector<
       "the {}-node quadrature action of the degree-{} polynomial through (q0, q1), its interior "
       "control points solved",
       S, S);
-  set_problem(s, problem, q0, p0);
+  system.set(s);
   s.expected = p.expected;
   // A Galerkin step costs a nested-AutoDiff Hessian per Newton iteration: the walk of step
   // counts stops at 2e5 stage evaluations a run (compositions: 1e6).
@@ -89,8 +61,7 @@ void measure(const MethodSpec& p, const TestProblem& problem, const std::vector<
                        "({} unknowns), derivatives by nested AutoDiff",
                        S - 1, S * N));
   rep.line("expected order", fmt::format("{:g} ({})", p.expected, p.expected_from));
-  rep.line("problem", fmt::format("{}: {}, q0 = {}, p0 = {}", problem.name, problem.hamiltonian,
-                                  vec_text(q0), vec_text(p0)));
+  rep.line("problem", system.line);
   rep.js["method"] = {{"name", p.name},
                       {"family", p.rule.name},
                       {"stages", S},
@@ -99,18 +70,37 @@ void measure(const MethodSpec& p, const TestProblem& problem, const std::vector<
                       {"documented_order", p.rule.order},
                       {"expected", p.expected},
                       {"expected_from", p.expected_from}};
-  rep.js["problem"] = {{"name", problem.name}, {"q0", q0}, {"p0", p0}};
+  rep.js["problem"] = system.js;
   measure_map(s, rep);
+}
+
+}  // namespace method_detail
+
+namespace {
+
+using method_detail::galerkin_step;
+using method_detail::measure;
+using method_detail::System;
+
+// A test problem of map_study.hpp as the system.
+System test_problem(const TestProblem& problem, const std::vector<double>& q0,
+                    const std::vector<double>& p0) {
+  return {[&problem, q0, p0](MapStudy& s) { set_problem(s, problem, q0, p0); },
+          fmt::format("{}: {}, q0 = {}, p0 = {}", problem.name, problem.hamiltonian, vec_text(q0),
+                      vec_text(p0)),
+          {{"name", problem.name}, {"q0", q0}, {"p0", p0}}};
 }
 
 template <int S>
 void measure_stages(const MethodSpec& p, const TestProblem& problem, const std::vector<double>& q0,
                     const std::vector<double>& p0, const MapStudy& s, MapMeasurement& rep) {
+  const System system = test_problem(problem, q0, p0);
+  const int N = static_cast<int>(q0.size());
   if (problem.name == "pendulum")
-    return measure(p, problem, q0, p0, s, rep, galerkin_step<S>(Pendulum{}, p.rule));
+    return measure(p, N, system, s, rep, galerkin_step<S>(Pendulum{}, p.rule));
   if (problem.name == "henon-heiles")
-    return measure(p, problem, q0, p0, s, rep, galerkin_step<S>(HenonHeiles{}, p.rule));
-  return measure(p, problem, q0, p0, s, rep, galerkin_step<S>(Kepler{}, p.rule));
+    return measure(p, N, system, s, rep, galerkin_step<S>(HenonHeiles{}, p.rule));
+  return measure(p, N, system, s, rep, galerkin_step<S>(Kepler{}, p.rule));
 }
 
 }  // namespace

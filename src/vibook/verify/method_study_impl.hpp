@@ -1,0 +1,59 @@
+/// \file method_study_impl.hpp
+/// \brief The parts of method_study.cpp that the typed route (method_typed.cpp) shares: the
+/// Galerkin one-step map of L = |v|²/2 − V(q) for a problem type with `potential<T>(q)`, and
+/// the report around the measurement. Internal: not installed.
+#pragma once
+
+#include <functional>
+#include <memory>
+#include <string>
+#include <type_traits>
+#include <utility>
+
+#include <nlohmann/json.hpp>
+
+#include "vibook/integrators/galerkin.hpp"
+#include "vibook/verify/map_study.hpp"
+#include "vibook/verify/method_study.hpp"
+
+namespace vibook::verify::method_detail {
+
+template <class P>
+auto mechanical_lagrangian(P prob) {
+  // L = |v|²/2 − V(q); the return type declared, as AutoDiff needs (autodiff.hpp)
+  return [prob](const auto& q, const auto& v) -> std::remove_cvref_t<decltype(q(0))> {
+    using T = std::remove_cvref_t<decltype(q(0))>;
+    return constant<T>(0.5) * squared_norm(v) - prob.template potential<T>(q);
+  };
+}
+
+// The one-step map (instantiated for each number of stages and problem); the rest of the
+// report depends on the problem only.
+// With it, the step that also returns the step's discrete Lagrangian (the variational order).
+template <int S, class P>
+std::pair<Step, GeneratingStep> galerkin_step(const P& prob, const Quadrature& rule) {
+  constexpr int N = P::N;
+  using Integrator = GalerkinIntegrator<N, S, decltype(mechanical_lagrangian(prob))>;
+  auto integrator = std::make_shared<Integrator>(mechanical_lagrangian(prob), rule);
+  auto generating = std::make_shared<Integrator>(mechanical_lagrangian(prob), rule);
+  return {naming_failures(
+              [integrator](Eigen::VectorXd& z, double h) { step_qp<N>(*integrator, z, h); }, N),
+          [generating](Eigen::VectorXd& z, double h) {
+            step_qp<N>(*generating, z, h);
+            return generating->action();
+          }};
+}
+
+// The report of a method on a system: `system` sets the study's system (reference field,
+// energy, initial state) where a test problem's is set, and its line and JSON name it.
+struct System {
+  std::function<void(MapStudy&)> set;
+  std::string line;
+  nlohmann::json js;
+};
+
+// The method's lines, then the measurement of map_study.hpp; N degrees of freedom.
+void measure(const MethodSpec& p, int N, const System& system, MapStudy s, MapMeasurement& rep,
+             std::pair<Step, GeneratingStep> steps);
+
+}  // namespace vibook::verify::method_detail
