@@ -147,6 +147,8 @@ vibook_verify_tableau(verify-tableau-iiia.txt 5 wrong-lobatto3-iiia-only.json)
 
 # Galerkin variational integrators (the chapter's section "Galerkin variational integrators").
 vibook_verify_case(verify-method-lobatto3.txt 0 --method lobatto:3 --problem kepler)
+vibook_verify_case(verify-method-typed.txt 0 --method lobatto:3 --potential x^2/2+y^2/2+x^2*y-y^3/3
+                   --q0 0.1,0.2 --p0 0.3,0.1)
 # Every Galerkin method on Kepler and Henon-Heiles is the long study field-audit-galerkin (rows
 # A-GAUSS1 ... A-LOBATTO5 of the ledger), measured in step 2 when VIBOOK_LONG_STUDIES is set.
 

@@ -175,17 +175,25 @@ int run(const VerifyOptions& o, const CLI::App& c) {
     return run_tableau(to);
   }
   if (c.count("--method") > 0) {
-    // A Galerkin variational integrator from the catalogue (verify_method.cpp).
+    // A Galerkin variational integrator from the catalogue (verify_method.cpp), on a test
+    // problem or on the --potential typed.
     for (const char* opt :
-         {"--ld", "--lagrangian", "--hamiltonian", "--potential", "--dim", "--modified-order",
-          "--format", "--report", "--reference", "--symmetric", "--composition", "--coefficients",
-          "--stepper-lib", "--stepper-cmd", "--stepper-arg", "--stepper-timeout", "--adaptive",
-          "--adaptive-steps"})
+         {"--ld", "--modified-order", "--format", "--report", "--reference", "--symmetric",
+          "--composition", "--coefficients", "--stepper-lib", "--stepper-cmd", "--stepper-arg",
+          "--stepper-timeout", "--adaptive", "--adaptive-steps"})
       if (c.count(opt) > 0)
         throw ArgumentError(opt, "does not apply to --method (see vibook verify --help)");
+    for (const char* opt : {"--lagrangian", "--hamiltonian"})
+      if (c.count(opt) > 0)
+        throw ArgumentError(opt,
+                            "does not apply to --method: its system is a --problem or "
+                            "L = |v|^2/2 - V(q) with V typed after --potential");
     MethodOptions mo;
     set_study_options(mo, o, c);
     mo.method = o.method;
+    mo.potential = o.potential;
+    mo.potential_given = c.count("--potential") > 0;
+    mo.dim = o.dim;
     return run_method(mo);
   }
   const bool stepper = c.count("--stepper-lib") > 0 || c.count("--stepper-cmd") > 0;
@@ -297,7 +305,8 @@ std::function<int()> add_verify_command(CLI::App& app) {
   c->add_option("--method", o->method,
                 "verify a catalogue method instead of an --ld: gauss:S (S = 1-4) or lobatto:S "
                 "(S = 2-5), the Galerkin variational integrator with S stages (Gauss "
-                "collocation, order 2S; Lobatto IIIA-IIIB, order 2S-2)");
+                "collocation, order 2S; Lobatto IIIA-IIIB, order 2S-2), on --problem or on "
+                "--potential (1-3 dimensions)");
   c->add_option("--tableau", o->tableau,
                 "verify a partitioned Runge-Kutta method instead of an --ld: a JSON file with "
                 "the tableau (a, b; ahat, bhat for the momenta; order, symmetric, name, source), "
@@ -315,8 +324,8 @@ std::function<int()> add_verify_command(CLI::App& app) {
                 "adjoint)");
   c->add_option("--problem", o->problem,
                 "with --method, --tableau, --composition or a stepper: the nonlinear test "
-                "problem, kepler "
-                "(default, eccentricity 0.5), pendulum or henon-heiles");
+                "problem, kepler (default, eccentricity 0.5), pendulum or henon-heiles "
+                "(--method and --composition ld take --potential instead)");
   c->add_option("--stepper-lib", o->stepper_lib,
                 "verify another library's one-step method as a black box: a shared library "
                 "with the C ABI of vibook/verify/stepper_abi.h (needs --expected-order; the "
@@ -337,7 +346,8 @@ std::function<int()> add_verify_command(CLI::App& app) {
                 "the intended Hamiltonian H(q, p) instead, in q, p, V(...), grad(V)(...)");
   c->add_option("--potential", o->potential,
                 "V in x, y, z (or q, q[1], …), e.g. 'x^2/2+y^2/2+x^2*y-y^3/3' (a leading minus: "
-                "--potential='-cos(x)'); required unless --lagrangian or --hamiltonian is given");
+                "--potential='-cos(x)'); required unless --lagrangian or --hamiltonian is given; "
+                "with --method: the system L = v^2/2 - V(q) the method runs on");
   c->add_option("--dim", o->dim,
                 fmt::format("dimension 1-{} (default: from the expressions)", verify::kMaxDim));
   c->add_option("--q0", o->q0, "initial position, comma-separated (default 0.1 in each)");

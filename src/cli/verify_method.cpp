@@ -1,9 +1,11 @@
 // `vibook verify --method gauss:S|lobatto:S` (issue #25): the arguments checked before any work,
 // then the measurement of vibook/verify/method_study.hpp (the Galerkin variational integrator
-// with S stages on a nonlinear test problem; documented order 2S for Gauss, 2S − 2 for Lobatto)
-// printed.
+// with S stages on a nonlinear test problem, or on L = |v|²/2 − V(q) with the user's V typed
+// after --potential; documented order 2S for Gauss, 2S − 2 for Lobatto) printed.
 #include "verify_method.hpp"
 
+#include <memory>
+#include <mutex>
 #include <string>
 #include <vector>
 
@@ -13,6 +15,8 @@
 #include "args.hpp"
 #include "verify_map.hpp"
 #include "vibook/core/output_file.hpp"
+#include "vibook/modified/engine.hpp"
+#include "vibook/verify/expression.hpp"
 #include "vibook/verify/method_study.hpp"
 
 namespace vibook::cli {
@@ -24,6 +28,8 @@ constexpr int kMaxGauss = 4, kMaxLobatto = 5;
 struct Plan {
   verify::MethodSpec spec;
   const TestProblem* problem = nullptr;
+  // --potential: the typed system (H = |p|^2/2 + V for the reference and the energy)
+  std::unique_ptr<verify::TypedDiscreteLagrangian> sys;
   std::vector<double> q0, p0;
   MapStudy study;  // the measurement settings
 };
@@ -47,8 +53,32 @@ Plan check(const MethodOptions& o) {
   p.spec.name = o.method;
   p.spec.stages = static_cast<int>(s);
   p.spec.rule = quadrature_rule(family, p.spec.stages);
-  p.problem = &find_test_problem(o.problem);
-  check_initial_state(o, *p.problem, p.q0, p.p0, p.study);
+  if (o.potential_given) {
+    if (o.potential.empty()) throw ArgumentError("--potential", "is empty");
+    if (!o.problem.empty())
+      throw ArgumentError("--potential",
+                          "gives the system; --problem names a test problem: give one of them");
+    int dim = 0;
+    if (!o.dim.empty()) {
+      dim = static_cast<int>(parse_integer("--dim", o.dim));
+      if (dim < 1 || dim > 3) throw ArgumentError("--dim", "must lie in 1..3 with --method");
+    }
+    {
+      std::lock_guard<std::mutex> lock(modified::ginac_mutex());
+      verify::TypedTexts texts{"", o.potential, "", "p^2/2 + V(q)", dim};
+      texts.system_only = true;
+      p.sys = std::make_unique<verify::TypedDiscreteLagrangian>(texts);
+    }
+    if (p.sys->dim() > 3)
+      throw ArgumentError("--potential", fmt::format("is {}-dimensional; --method runs in 1 to 3 "
+                                                     "dimensions",
+                                                     p.sys->dim()));
+    check_typed_initial_state(o, p.sys->dim(), p.q0, p.p0, p.study);
+  } else {
+    if (!o.dim.empty()) throw ArgumentError("--dim", "applies to --method with --potential only");
+    p.problem = &find_test_problem(o.problem);
+    check_initial_state(o, *p.problem, p.q0, p.p0, p.study);
+  }
   p.spec.expected = p.spec.rule.order;
   p.spec.expected_from = "documented";
   if (o.expected_given) {
@@ -62,12 +92,37 @@ Plan check(const MethodOptions& o) {
   return p;
 }
 
+// The typed system's reference field, energy and initial state, for N degrees of freedom.
+template <int N>
+void set_system(MapStudy& s, const verify::TypedDiscreteLagrangian& sys,
+                const std::vector<double>& q0, const std::vector<double>& p0) {
+  Eigen::VectorXd z0(2 * N);
+  for (int i = 0; i < N; ++i) {
+    z0(i) = q0[static_cast<std::size_t>(i)];
+    z0(N + i) = p0[static_cast<std::size_t>(i)];
+  }
+  set_typed_system<N>(s, sys, z0);
+}
+
 }  // namespace
 
 int run_method(const MethodOptions& o) {
-  const Plan p = check(o);
+  Plan p = check(o);
   MapReport rep;
-  verify::measure_method(p.spec, *p.problem, p.q0, p.p0, p.study, rep);
+  if (!p.sys) {
+    verify::measure_method(p.spec, *p.problem, p.q0, p.p0, p.study, rep);
+    return rep.finish(o.json_given, o.json_out);
+  }
+  const int n = p.sys->dim();
+  if (n == 1) set_system<1>(p.study, *p.sys, p.q0, p.p0);
+  if (n == 2) set_system<2>(p.study, *p.sys, p.q0, p.p0);
+  if (n == 3) set_system<3>(p.study, *p.sys, p.q0, p.p0);
+  verify::measure_method_typed(
+      p.spec, *p.sys, p.q0, p.p0, p.study,
+      fmt::format("H = |p|^2/2 + V(q), V = {} (--potential), {} degree{} of freedom; q0 = {}, "
+                  "p0 = {}",
+                  o.potential, n, n == 1 ? "" : "s", vec_text(p.q0), vec_text(p.p0)),
+      rep);
   return rep.finish(o.json_given, o.json_out);
 }
 

@@ -1,6 +1,7 @@
 // `vibook verify --method gauss:S|lobatto:S`: a Galerkin variational integrator
 // (integrators/galerkin.hpp) judged by its measured order against an independent reference,
-// symplecticity, reversibility and energy (verify_method.cpp).
+// symplecticity, reversibility and energy (verify_method.cpp), on a test problem or on the
+// user's own potential (--potential).
 #pragma once
 
 #include <string>
@@ -13,6 +14,10 @@ namespace vibook::cli {
 /// set.
 struct MethodOptions : StudyOptions {
   std::string method;
+  /// The user's own system instead of --problem: L = |v|²/2 − V(q) with V typed (1 to 3
+  /// degrees of freedom; --dim to fix the number).
+  std::string potential, dim;
+  bool potential_given = false;
 };
 
 /// Run it; the exit status as for `vibook verify` (0 pass, 5 a verdict failed, 2, 3, 4).

@@ -1,0 +1,53 @@
+/// \file method_typed_impl.hpp
+/// \brief measure_method_typed for N degrees of freedom (method_typed.cpp dispatches on the
+/// dimension; method_typed_n.cpp.in instantiates each N in a unit of its own, so that the
+/// three compile in parallel). Internal: not installed.
+#pragma once
+
+#include <stdexcept>
+
+#include "vibook/verify/expression.hpp"
+#include "vibook/verify/method_study.hpp"
+#include "vibook/verify/method_study_impl.hpp"
+
+namespace vibook::verify::method_detail {
+
+// The typed potential as a problem type of galerkin_step: potential<T>(q) for any scalar T.
+template <int Dim>
+struct TypedPotential {
+  static constexpr int N = Dim;
+  const TypedDiscreteLagrangian* sys = nullptr;
+  template <class T>
+  T potential(const Vec<T, N>& q) const {
+    return sys->potential<N, T>(q);
+  }
+};
+
+template <int N>
+void measure_typed_dim(const MethodSpec& spec, const TypedDiscreteLagrangian& sys,
+                       const System& system, const MapStudy& study, MapMeasurement& rep) {
+  const TypedPotential<N> prob{&sys};
+  switch (spec.stages) {
+    case 1:
+      return measure(spec, N, system, study, rep, galerkin_step<1>(prob, spec.rule));
+    case 2:
+      return measure(spec, N, system, study, rep, galerkin_step<2>(prob, spec.rule));
+    case 3:
+      return measure(spec, N, system, study, rep, galerkin_step<3>(prob, spec.rule));
+    case 4:
+      return measure(spec, N, system, study, rep, galerkin_step<4>(prob, spec.rule));
+    case 5:
+      return measure(spec, N, system, study, rep, galerkin_step<5>(prob, spec.rule));
+    default:
+      throw std::invalid_argument("measure_method_typed: 1 to 5 stages");
+  }
+}
+
+extern template void measure_typed_dim<1>(const MethodSpec&, const TypedDiscreteLagrangian&,
+                                          const System&, const MapStudy&, MapMeasurement&);
+extern template void measure_typed_dim<2>(const MethodSpec&, const TypedDiscreteLagrangian&,
+                                          const System&, const MapStudy&, MapMeasurement&);
+extern template void measure_typed_dim<3>(const MethodSpec&, const TypedDiscreteLagrangian&,
+                                          const System&, const MapStudy&, MapMeasurement&);
+
+}  // namespace vibook::verify::method_detail
