@@ -69,17 +69,7 @@ case_ ld-first-order-base 5 "order conditions,order,energy" 'order 1 by the cond
   --coefficients yoshida4 --json-out "$tmp/ld.json" >/dev/null 2>&1
 "$V" verify --composition sv --problem pendulum --q0 1 --p0 0.5 --steps 4096 \
   --coefficients yoshida4 --json-out "$tmp/sv.json" >/dev/null 2>&1
-python3 - "$tmp/ld.json" "$tmp/sv.json" <<'PY' && ok || bad "ld = sv: order-study errors differ"
-import json, sys
-a, b = (json.load(open(f))["order"] for f in sys.argv[1:3])
-n = 0
-for h, g, x, y in zip(a["h"], b["h"], a["error"], b["error"]):
-    assert h == g, (h, g)
-    if y > 1e-9:
-        assert abs(x - y) <= 1e-4 * y, (h, x, y)
-        n += 1
-assert n >= 20, n
-PY
+same_errors "ld = sv" "$tmp/ld.json" "$tmp/sv.json" 20
 arg ld-missing --ld --composition ld --coefficients yoshida4 --potential x^2
 arg ld-no-system --potential --composition ld --coefficients yoshida4 --ld "$TRAP"
 arg ld-problem --problem --composition ld --coefficients yoshida4 --ld "$TRAP" --potential x^2 \
