@@ -13,4 +13,11 @@ struct StudyOptions {
        order_tol_given = false;
 };
 
+/// A catalogue route's own system instead of --problem (--method, --tableau): L = |v|²/2 − V(q)
+/// with V typed after --potential, 1 to 3 degrees of freedom (--dim fixes the number).
+struct TypedPotentialOptions {
+  std::string potential, dim;
+  bool potential_given = false;
+};
+
 }  // namespace vibook::cli

@@ -5,6 +5,7 @@
 
 #include <cmath>
 #include <functional>
+#include <memory>
 #include <optional>
 #include <sstream>
 #include <string>
@@ -16,6 +17,7 @@
 
 #include "args.hpp"
 #include "cli.hpp"
+#include "study_options.hpp"
 #include "vibook/core/precision.hpp"
 #include "vibook/verify/expression.hpp"
 #include "vibook/verify/map_study.hpp"
@@ -151,5 +153,19 @@ void check_typed_initial_state(const Options& o, int n, std::vector<double>& q0,
     if (!(s.t_end > 0) || s.t_end > 1e4) throw ArgumentError("--t-end", "must lie in (0, 1e4]");
   }
 }
+
+/// --potential (with --dim) of a catalogue route (`route`: "--method", "--tableau"), checked
+/// before any work: the typed system, whose Hamiltonian |p|²/2 + V(q) gives the reference and
+/// the energy, in 1 to 3 dimensions; then --q0, --p0 (default 0.1 each) and --t-end. An
+/// ArgumentError names --potential, --problem, --dim, --q0, --p0 or --t-end.
+std::unique_ptr<verify::TypedDiscreteLagrangian> check_typed_potential(
+    const TypedPotentialOptions& t, const StudyOptions& o, const char* route,
+    std::vector<double>& q0, std::vector<double>& p0, MapStudy& s);
+
+/// The study's system from a typed potential (Hamilton's equations of |p|²/2 + V, the energy,
+/// z0); returns the report's line naming it. `sys` must outlive the study.
+std::string set_typed_potential(MapStudy& s, const verify::TypedDiscreteLagrangian& sys,
+                                const std::string& potential, const std::vector<double>& q0,
+                                const std::vector<double>& p0);
 
 }  // namespace vibook::cli

@@ -5,7 +5,6 @@
 #include "verify_method.hpp"
 
 #include <memory>
-#include <mutex>
 #include <string>
 #include <vector>
 
@@ -15,7 +14,6 @@
 #include "args.hpp"
 #include "verify_map.hpp"
 #include "vibook/core/output_file.hpp"
-#include "vibook/modified/engine.hpp"
 #include "vibook/verify/expression.hpp"
 #include "vibook/verify/method_study.hpp"
 
@@ -54,26 +52,7 @@ Plan check(const MethodOptions& o) {
   p.spec.stages = static_cast<int>(s);
   p.spec.rule = quadrature_rule(family, p.spec.stages);
   if (o.potential_given) {
-    if (o.potential.empty()) throw ArgumentError("--potential", "is empty");
-    if (!o.problem.empty())
-      throw ArgumentError("--potential",
-                          "gives the system; --problem names a test problem: give one of them");
-    int dim = 0;
-    if (!o.dim.empty()) {
-      dim = static_cast<int>(parse_integer("--dim", o.dim));
-      if (dim < 1 || dim > 3) throw ArgumentError("--dim", "must lie in 1..3 with --method");
-    }
-    {
-      std::lock_guard<std::mutex> lock(modified::ginac_mutex());
-      verify::TypedTexts texts{"", o.potential, "", "p^2/2 + V(q)", dim};
-      texts.system_only = true;
-      p.sys = std::make_unique<verify::TypedDiscreteLagrangian>(texts);
-    }
-    if (p.sys->dim() > 3)
-      throw ArgumentError("--potential", fmt::format("is {}-dimensional; --method runs in 1 to 3 "
-                                                     "dimensions",
-                                                     p.sys->dim()));
-    check_typed_initial_state(o, p.sys->dim(), p.q0, p.p0, p.study);
+    p.sys = check_typed_potential(o, o, "--method", p.q0, p.p0, p.study);
   } else {
     if (!o.dim.empty()) throw ArgumentError("--dim", "applies to --method with --potential only");
     p.problem = &find_test_problem(o.problem);
@@ -92,18 +71,6 @@ Plan check(const MethodOptions& o) {
   return p;
 }
 
-// The typed system's reference field, energy and initial state, for N degrees of freedom.
-template <int N>
-void set_system(MapStudy& s, const verify::TypedDiscreteLagrangian& sys,
-                const std::vector<double>& q0, const std::vector<double>& p0) {
-  Eigen::VectorXd z0(2 * N);
-  for (int i = 0; i < N; ++i) {
-    z0(i) = q0[static_cast<std::size_t>(i)];
-    z0(N + i) = p0[static_cast<std::size_t>(i)];
-  }
-  set_typed_system<N>(s, sys, z0);
-}
-
 }  // namespace
 
 int run_method(const MethodOptions& o) {
@@ -113,16 +80,8 @@ int run_method(const MethodOptions& o) {
     verify::measure_method(p.spec, *p.problem, p.q0, p.p0, p.study, rep);
     return rep.finish(o.json_given, o.json_out);
   }
-  const int n = p.sys->dim();
-  if (n == 1) set_system<1>(p.study, *p.sys, p.q0, p.p0);
-  if (n == 2) set_system<2>(p.study, *p.sys, p.q0, p.p0);
-  if (n == 3) set_system<3>(p.study, *p.sys, p.q0, p.p0);
-  verify::measure_method_typed(
-      p.spec, *p.sys, p.q0, p.p0, p.study,
-      fmt::format("H = |p|^2/2 + V(q), V = {} (--potential), {} degree{} of freedom; q0 = {}, "
-                  "p0 = {}",
-                  o.potential, n, n == 1 ? "" : "s", vec_text(p.q0), vec_text(p.p0)),
-      rep);
+  const std::string system = set_typed_potential(p.study, *p.sys, o.potential, p.q0, p.p0);
+  verify::measure_method_typed(p.spec, *p.sys, p.q0, p.p0, p.study, system, rep);
   return rep.finish(o.json_given, o.json_out);
 }
 

@@ -12,12 +12,8 @@ namespace vibook::cli {
 
 /// The options of a catalogue-method verification, as typed; `given` flags say which the user
 /// set.
-struct MethodOptions : StudyOptions {
+struct MethodOptions : StudyOptions, TypedPotentialOptions {
   std::string method;
-  /// The user's own system instead of --problem: L = |v|²/2 − V(q) with V typed (1 to 3
-  /// degrees of freedom; --dim to fix the number).
-  std::string potential, dim;
-  bool potential_given = false;
 };
 
 /// Run it; the exit status as for `vibook verify` (0 pass, 5 a verdict failed, 2, 3, 4).

@@ -113,6 +113,14 @@ void set_problem(MapStudy& s, const TestProblem& problem, const std::vector<doub
   throw std::invalid_argument("set_problem: no test problem '" + problem.name + "'");
 }
 
+StudySystem test_problem_system(const TestProblem& problem, const std::vector<double>& q0,
+                                const std::vector<double>& p0) {
+  return {[&problem, q0, p0](MapStudy& s) { set_problem(s, problem, q0, p0); },
+          fmt::format("{}: {}, q0 = {}, p0 = {}", problem.name, problem.hamiltonian, vec_text(q0),
+                      vec_text(p0)),
+          {{"name", problem.name}, {"q0", q0}, {"p0", p0}}};
+}
+
 Eigen::VectorXd run_map(const MapStudy& s, const Eigen::VectorXd& z0, double h, double T) {
   if (!s.propagate) return integrate(s.step, z0, h, T);
   if (!(h > 0) || !(T >= 0) || !std::isfinite(h) || !std::isfinite(T))

@@ -94,6 +94,20 @@ struct MapStudy {
   std::string generating_from;  ///< how the step's L_d is formed, for the report
 };
 
+/// The system a method is measured on, for a route that reports one method on several kinds of
+/// system (a test problem, or one typed by the user): how to set it in the study (z0, the
+/// reference's field, the energy; a no-op when the caller set them), the report's line naming
+/// it, and its JSON.
+struct StudySystem {
+  std::function<void(MapStudy&)> set;
+  std::string line;
+  nlohmann::json js;
+};
+
+/// A test problem as the system (set_problem below; its line and JSON name it).
+StudySystem test_problem_system(const TestProblem& problem, const std::vector<double>& q0,
+                                const std::vector<double>& p0);
+
 /// The test problem's part of a study: z0 = (q0, p0), Hamilton's equations of its typed
 /// potential in double-double (the reference) and its energy (problems/, kepler/).
 void set_problem(MapStudy& s, const TestProblem& problem, const std::vector<double>& q0,

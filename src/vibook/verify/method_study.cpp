@@ -24,7 +24,7 @@ namespace vibook::verify {
 
 namespace method_detail {
 
-void measure(const MethodSpec& p, int N, const System& system, MapStudy s, MapMeasurement& rep,
+void measure(const MethodSpec& p, int N, const StudySystem& system, MapStudy s, MapMeasurement& rep,
              std::pair<Step, GeneratingStep> steps) {
   const int S = p.stages;
   s.step = std::move(steps.first);
@@ -80,21 +80,11 @@ namespace {
 
 using method_detail::galerkin_step;
 using method_detail::measure;
-using method_detail::System;
-
-// A test problem of map_study.hpp as the system.
-System test_problem(const TestProblem& problem, const std::vector<double>& q0,
-                    const std::vector<double>& p0) {
-  return {[&problem, q0, p0](MapStudy& s) { set_problem(s, problem, q0, p0); },
-          fmt::format("{}: {}, q0 = {}, p0 = {}", problem.name, problem.hamiltonian, vec_text(q0),
-                      vec_text(p0)),
-          {{"name", problem.name}, {"q0", q0}, {"p0", p0}}};
-}
 
 template <int S>
 void measure_stages(const MethodSpec& p, const TestProblem& problem, const std::vector<double>& q0,
                     const std::vector<double>& p0, const MapStudy& s, MapMeasurement& rep) {
-  const System system = test_problem(problem, q0, p0);
+  const StudySystem system = test_problem_system(problem, q0, p0);
   const int N = static_cast<int>(q0.size());
   if (problem.name == "pendulum")
     return measure(p, N, system, s, rep, galerkin_step<S>(Pendulum{}, p.rule));

@@ -44,16 +44,8 @@ std::pair<Step, GeneratingStep> galerkin_step(const P& prob, const Quadrature& r
           }};
 }
 
-// The report of a method on a system: `system` sets the study's system (reference field,
-// energy, initial state) where a test problem's is set, and its line and JSON name it.
-struct System {
-  std::function<void(MapStudy&)> set;
-  std::string line;
-  nlohmann::json js;
-};
-
 // The method's lines, then the measurement of map_study.hpp; N degrees of freedom.
-void measure(const MethodSpec& p, int N, const System& system, MapStudy s, MapMeasurement& rep,
+void measure(const MethodSpec& p, int N, const StudySystem& system, MapStudy s, MapMeasurement& rep,
              std::pair<Step, GeneratingStep> steps);
 
 }  // namespace vibook::verify::method_detail

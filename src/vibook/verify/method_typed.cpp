@@ -17,7 +17,7 @@ void measure_method_typed(const MethodSpec& spec, const TypedDiscreteLagrangian&
                           MapMeasurement& rep) {
   using method_detail::measure_typed_dim;
   // The study's system is the caller's (set from the same expression): nothing to set here.
-  const method_detail::System system{
+  const StudySystem system{
       [](MapStudy&) {}, system_line,
       nlohmann::json{{"name", "typed"}, {"system", system_line}, {"q0", q0}, {"p0", p0}}};
   switch (sys.dim()) {

@@ -9,23 +9,13 @@
 #include "vibook/verify/expression.hpp"
 #include "vibook/verify/method_study.hpp"
 #include "vibook/verify/method_study_impl.hpp"
+#include "vibook/verify/typed_potential.hpp"
 
 namespace vibook::verify::method_detail {
 
-// The typed potential as a problem type of galerkin_step: potential<T>(q) for any scalar T.
-template <int Dim>
-struct TypedPotential {
-  static constexpr int N = Dim;
-  const TypedDiscreteLagrangian* sys = nullptr;
-  template <class T>
-  T potential(const Vec<T, N>& q) const {
-    return sys->potential<N, T>(q);
-  }
-};
-
 template <int N>
 void measure_typed_dim(const MethodSpec& spec, const TypedDiscreteLagrangian& sys,
-                       const System& system, const MapStudy& study, MapMeasurement& rep) {
+                       const StudySystem& system, const MapStudy& study, MapMeasurement& rep) {
   const TypedPotential<N> prob{&sys};
   switch (spec.stages) {
     case 1:
@@ -44,10 +34,10 @@ void measure_typed_dim(const MethodSpec& spec, const TypedDiscreteLagrangian& sy
 }
 
 extern template void measure_typed_dim<1>(const MethodSpec&, const TypedDiscreteLagrangian&,
-                                          const System&, const MapStudy&, MapMeasurement&);
+                                          const StudySystem&, const MapStudy&, MapMeasurement&);
 extern template void measure_typed_dim<2>(const MethodSpec&, const TypedDiscreteLagrangian&,
-                                          const System&, const MapStudy&, MapMeasurement&);
+                                          const StudySystem&, const MapStudy&, MapMeasurement&);
 extern template void measure_typed_dim<3>(const MethodSpec&, const TypedDiscreteLagrangian&,
-                                          const System&, const MapStudy&, MapMeasurement&);
+                                          const StudySystem&, const MapStudy&, MapMeasurement&);
 
 }  // namespace vibook::verify::method_detail

@@ -21,6 +21,7 @@
 #include "vibook/integrators/composition.hpp"
 #include "vibook/kepler/kepler.hpp"
 #include "vibook/problems/problems.hpp"
+#include "vibook/verify/tableau_study_impl.hpp"
 
 namespace vibook::verify {
 
@@ -169,39 +170,6 @@ TableauSpec read_tableau(const std::string& path) {
 
 namespace {
 
-template <int S, class P>
-std::pair<Step, GeneratingStep> prk_steps(const P& prob, const PrkTableau& t) {
-  constexpr int N = P::N;
-  using Method = PartitionedRkMethod<S, P>;
-  auto method = std::make_shared<Method>(prob, t);
-  auto generating = std::make_shared<Method>(prob, t);
-  return {naming_failures([method](Eigen::VectorXd& z, double h) { step_qp<N>(*method, z, h); }, N),
-          [generating](Eigen::VectorXd& z, double h) {
-            step_qp<N>(*generating, z, h);
-            return generating->action();
-          }};
-}
-
-template <class P>
-std::pair<Step, GeneratingStep> steps_for(const P& prob, const PrkTableau& t) {
-  switch (t.stages()) {
-    case 1:
-      return prk_steps<1>(prob, t);
-    case 2:
-      return prk_steps<2>(prob, t);
-    case 3:
-      return prk_steps<3>(prob, t);
-    case 4:
-      return prk_steps<4>(prob, t);
-    case 5:
-      return prk_steps<5>(prob, t);
-    case 6:
-      return prk_steps<6>(prob, t);
-    default:
-      throw std::invalid_argument("measure_tableau: 1 to 6 stages");
-  }
-}
-
 std::string list(const std::vector<double>& v) {
   std::vector<std::string> t;
   for (double x : v) t.push_back(fmt::format("{:.12g}", x));
@@ -210,19 +178,13 @@ std::string list(const std::vector<double>& v) {
 
 }  // namespace
 
-void measure_tableau(const TableauSpec& spec, const TestProblem& problem,
-                     const std::vector<double>& q0, const std::vector<double>& p0,
-                     const MapStudy& study, bool require_reversible, MapMeasurement& rep) {
+namespace tableau_detail {
+
+void measure(const TableauSpec& spec, int N, const StudySystem& system, const MapStudy& study,
+             bool require_reversible, MapMeasurement& rep, std::pair<Step, GeneratingStep> steps) {
   MapStudy s = study;
-  std::pair<Step, GeneratingStep> steps;
-  if (problem.name == "pendulum")
-    steps = steps_for(Pendulum{}, spec.tableau);
-  else if (problem.name == "henon-heiles")
-    steps = steps_for(HenonHeiles{}, spec.tableau);
-  else
-    steps = steps_for(Kepler{}, spec.tableau);
   s.step = std::move(steps.first);
-  set_problem(s, problem, q0, p0);
+  system.set(s);
   s.expected = spec.expected;
   s.substeps = spec.tableau.stages();
   s.max_substeps = 1e6;
@@ -238,7 +200,7 @@ void measure_tableau(const TableauSpec& spec, const TestProblem& problem,
   rep.line("  b | bhat", list(spec.tableau.b) + " | " + list(spec.tableau.bhat));
   rep.line("  solved by", fmt::format("Newton's method on the {} position stages ({} unknowns), "
                                       "the Hessian of the potential by AutoDiff",
-                                      S, S * static_cast<int>(q0.size())));
+                                      S, S * N));
   rep.line("conditions",
            fmt::format("at {} digits from the entries as written: weights sum to 1 within {:.1e}{}",
                        kDigits, spec.weights_residual,
@@ -251,8 +213,7 @@ void measure_tableau(const TableauSpec& spec, const TestProblem& problem,
                        spec.bhat_residual, spec.symplectic_residual, kConditionTol,
                        spec.symplectic_conditions ? "yes" : "NO"));
   rep.line("expected order", fmt::format("{:g} ({})", spec.expected, spec.expected_from));
-  rep.line("problem", fmt::format("{}: {}, q0 = {}, p0 = {}", problem.name, problem.hamiltonian,
-                                  vec_text(q0), vec_text(p0)));
+  rep.line("problem", system.line);
   rep.js["tableau"] = {
       {"file", spec.file},
       {"name", spec.name},
@@ -273,7 +234,7 @@ void measure_tableau(const TableauSpec& spec, const TestProblem& problem,
       {"symplectic_residual", spec.symplectic_residual},
       {"tolerance", kConditionTol},
       {"symplectic", spec.symplectic_conditions}};
-  rep.js["problem"] = {{"name", problem.name}, {"q0", q0}, {"p0", p0}};
+  rep.js["problem"] = system.js;
   if (spec.symplectic_conditions) {
     s.generating = std::move(steps.second);
     s.generating_from =
@@ -288,6 +249,23 @@ void measure_tableau(const TableauSpec& spec, const TestProblem& problem,
     rep.line("variational order", "not defined: " + reason);
     rep.js["variational_order"] = {{"derived", false}, {"measured", false}, {"reason", reason}};
   }
+}
+
+}  // namespace tableau_detail
+
+void measure_tableau(const TableauSpec& spec, const TestProblem& problem,
+                     const std::vector<double>& q0, const std::vector<double>& p0,
+                     const MapStudy& study, bool require_reversible, MapMeasurement& rep) {
+  using tableau_detail::steps_for;
+  std::pair<Step, GeneratingStep> steps;
+  if (problem.name == "pendulum")
+    steps = steps_for(Pendulum{}, spec.tableau);
+  else if (problem.name == "henon-heiles")
+    steps = steps_for(HenonHeiles{}, spec.tableau);
+  else
+    steps = steps_for(Kepler{}, spec.tableau);
+  tableau_detail::measure(spec, static_cast<int>(q0.size()), test_problem_system(problem, q0, p0),
+                          study, require_reversible, rep, std::move(steps));
 }
 
 }  // namespace vibook::verify
