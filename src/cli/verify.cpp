@@ -162,14 +162,21 @@ int run(const VerifyOptions& o, const CLI::App& c) {
     throw ArgumentError("--tableau", "does not apply to --method: give one method");
   if (c.count("--tableau") > 0) {
     // A partitioned Runge-Kutta method from its tableau (verify_tableau.cpp).
-    for (const char* opt :
-         {"--ld", "--lagrangian", "--hamiltonian", "--potential", "--dim", "--modified-order",
-          "--format", "--report", "--reference", "--composition", "--coefficients", "--stepper-lib",
-          "--stepper-cmd", "--stepper-arg", "--stepper-timeout", "--adaptive", "--adaptive-steps"})
+    for (const char* opt : {"--ld", "--modified-order", "--format", "--report", "--reference",
+                            "--composition", "--coefficients", "--stepper-lib", "--stepper-cmd",
+                            "--stepper-arg", "--stepper-timeout", "--adaptive", "--adaptive-steps"})
       if (c.count(opt) > 0)
         throw ArgumentError(opt, "does not apply to --tableau (see vibook verify --help)");
+    for (const char* opt : {"--lagrangian", "--hamiltonian"})
+      if (c.count(opt) > 0)
+        throw ArgumentError(opt,
+                            "does not apply to --tableau: its system is a --problem or "
+                            "H = |p|^2/2 + V(q) with V typed after --potential");
     TableauOptions to;
     set_study_options(to, o, c);
+    to.potential = o.potential;
+    to.potential_given = c.count("--potential") > 0;
+    to.dim = o.dim;
     to.file = o.tableau;
     to.symmetric = o.symmetric;
     return run_tableau(to);
@@ -310,7 +317,8 @@ std::function<int()> add_verify_command(CLI::App& app) {
   c->add_option("--tableau", o->tableau,
                 "verify a partitioned Runge-Kutta method instead of an --ld: a JSON file with "
                 "the tableau (a, b; ahat, bhat for the momenta; order, symmetric, name, source), "
-                "entries as decimals or ratios such as \"5/24\"; see examples/tableaus");
+                "entries as decimals or ratios such as \"5/24\"; see examples/tableaus; on "
+                "--problem or --potential (1-3 dimensions)");
   c->add_option("--composition", o->composition,
                 "verify a composition of this base method instead of an --ld: sv, midpoint, se, "
                 "se-adjoint, or Shen & Sun's vi1, vi1-adjoint, vi2 (on --problem); or ld, the "
@@ -325,7 +333,7 @@ std::function<int()> add_verify_command(CLI::App& app) {
   c->add_option("--problem", o->problem,
                 "with --method, --tableau, --composition or a stepper: the nonlinear test "
                 "problem, kepler (default, eccentricity 0.5), pendulum or henon-heiles "
-                "(--method and --composition ld take --potential instead)");
+                "(--method, --tableau and --composition ld take --potential instead)");
   c->add_option("--stepper-lib", o->stepper_lib,
                 "verify another library's one-step method as a black box: a shared library "
                 "with the C ABI of vibook/verify/stepper_abi.h (needs --expected-order; the "
@@ -347,7 +355,7 @@ std::function<int()> add_verify_command(CLI::App& app) {
   c->add_option("--potential", o->potential,
                 "V in x, y, z (or q, q[1], …), e.g. 'x^2/2+y^2/2+x^2*y-y^3/3' (a leading minus: "
                 "--potential='-cos(x)'); required unless --lagrangian or --hamiltonian is given; "
-                "with --method: the system L = v^2/2 - V(q) the method runs on");
+                "with --method or --tableau: the system L = v^2/2 - V(q) the method runs on");
   c->add_option("--dim", o->dim,
                 fmt::format("dimension 1-{} (default: from the expressions)", verify::kMaxDim));
   c->add_option("--q0", o->q0, "initial position, comma-separated (default 0.1 in each)");

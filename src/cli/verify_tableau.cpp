@@ -1,7 +1,9 @@
 // `vibook verify --tableau FILE` (issue #25): the file and the other arguments checked before
-// any work, then the measurement of vibook/verify/tableau_study.hpp printed.
+// any work, then the measurement of vibook/verify/tableau_study.hpp printed, on a test problem
+// or on the user's own potential (--potential).
 #include "verify_tableau.hpp"
 
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -17,6 +19,7 @@ namespace {
 struct Plan {
   verify::TableauSpec spec;
   const TestProblem* problem = nullptr;
+  std::unique_ptr<verify::TypedDiscreteLagrangian> sys;  // --potential: the typed system
   std::vector<double> q0, p0;
   MapStudy study;  // the measurement settings
 };
@@ -24,8 +27,13 @@ struct Plan {
 Plan check(const TableauOptions& o) {
   Plan p;
   p.spec = verify::read_tableau(o.file);
-  p.problem = &find_test_problem(o.problem);
-  check_initial_state(o, *p.problem, p.q0, p.p0, p.study);
+  if (o.potential_given) {
+    p.sys = check_typed_potential(o, o, "--tableau", p.q0, p.p0, p.study);
+  } else {
+    if (!o.dim.empty()) throw ArgumentError("--dim", "applies to --tableau with --potential only");
+    p.problem = &find_test_problem(o.problem);
+    check_initial_state(o, *p.problem, p.q0, p.p0, p.study);
+  }
   if (o.expected_given) {
     p.spec.expected = parse_number("--expected-order", o.expected);
     if (!(p.spec.expected > 0 && p.spec.expected <= 10))
@@ -43,9 +51,14 @@ Plan check(const TableauOptions& o) {
 }  // namespace
 
 int run_tableau(const TableauOptions& o) {
-  const Plan p = check(o);
+  Plan p = check(o);
   MapReport rep;
-  verify::measure_tableau(p.spec, *p.problem, p.q0, p.p0, p.study, o.symmetric, rep);
+  if (!p.sys) {
+    verify::measure_tableau(p.spec, *p.problem, p.q0, p.p0, p.study, o.symmetric, rep);
+    return rep.finish(o.json_given, o.json_out);
+  }
+  const std::string system = set_typed_potential(p.study, *p.sys, o.potential, p.q0, p.p0);
+  verify::measure_tableau_typed(p.spec, *p.sys, p.q0, p.p0, p.study, system, o.symmetric, rep);
   return rep.finish(o.json_given, o.json_out);
 }
 

@@ -10,7 +10,7 @@
 namespace vibook::cli {
 
 /// The options of a tableau verification, as typed; `given` flags say which the user set.
-struct TableauOptions : StudyOptions {
+struct TableauOptions : StudyOptions, TypedPotentialOptions {
   std::string file;
   bool symmetric = false;
 };

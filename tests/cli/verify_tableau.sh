@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # `vibook verify --tableau FILE`: partitioned Runge-Kutta methods from the example tableaus
-# (examples/tableaus/) reach their documented orders on nonlinear problems, pass the
+# (examples/tableaus/) reach their documented orders on nonlinear problems (built in, or typed
+# after --potential), pass the
 # symplecticity conditions at 120 digits and measure their variational order; the two wrong
 # tableaus fail (Lobatto IIIA for both halves: not symplectic; a mistyped entry: conditions,
 # order, symplecticity); bad files and arguments exit 2 before any work.
@@ -30,6 +31,26 @@ case_ typo 5 "order,symplectic,time-reversible,energy" 'symplectic \(b = bhat .*
 # the right tableau claimed as order 6 fails the order
 case_ lobatto3-as-6 5 "order,energy" 'expected 6 .*: NO' \
   -- --tableau "$T/lobatto3-iiia-iiib.json" --expected-order 6
+
+# On the user's own potential (--potential): H = |p|^2/2 + V(q) with V typed. The typed
+# Henon-Heiles is the built-in one (the same order-study errors where above 1e-9); the
+# mistyped entry fails on a typed pendulum too (on Henon-Heiles its energy drift carries the
+# orbit out of the potential well, and the run ends in a numerical failure, exit 3).
+HH='x^2/2+y^2/2+x^2*y-y^3/3'
+case_ typed-lobatto3 0 "" 'order +(3\.9|4\.0)[0-9]* over .*: yes' 'V = x\^2/2.* \(--potential\)' \
+  'symplectic \(b = bhat .*: yes' -- --tableau "$T/lobatto3-iiia-iiib.json" --potential "$HH" \
+  --q0 0.1,0.2 --p0 0.3,0.1
+case_ typed-typo 5 "order,symplectic,time-reversible,energy" 'symplectic \(b = bhat .*: NO' \
+  -- --tableau "$T/wrong-lobatto3-typo.json" --potential='-cos(x)' --q0 1 --p0 0.5
+"$V" verify --tableau "$T/gauss2.json" --potential "$HH" --q0 0.1,0.2 --p0 0.3,0.1 --steps 4096 \
+  --json-out "$tmp/typed.json" >/dev/null 2>&1
+"$V" verify --tableau "$T/gauss2.json" --problem henon-heiles --q0 0.1,0.2 --p0 0.3,0.1 \
+  --steps 4096 --json-out "$tmp/builtin.json" >/dev/null 2>&1
+same_errors "typed = built-in Henon-Heiles" "$tmp/typed.json" "$tmp/builtin.json" 5
+arg typed-and-problem --potential --tableau "$T/gauss2.json" --potential x^2 --problem pendulum
+arg typed-dim --dim --tableau "$T/gauss2.json" --potential x^2 --dim 4
+arg dim-without-potential --dim --tableau "$T/gauss2.json" --dim 2
+arg typed-hamiltonian --hamiltonian --tableau "$T/gauss2.json" --hamiltonian 'p^2/2+q^2'
 
 printf '{"a": [["0"]], "b": ["1"]}' >"$tmp/no-order.json"
 printf '{"a": [["0", "1"]], "b": ["1/2", "1/2"]}' >"$tmp/shape.json"

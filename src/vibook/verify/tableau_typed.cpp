@@ -1,0 +1,36 @@
+// A partitioned Runge–Kutta method from a tableau measured on the user's own potential
+// (tableau_study.hpp, measure_tableau_typed): the method of integrators/prk.hpp on
+// H = |p|²/2 + V(q), V the expression typed after --potential, its force by forward AutoDiff on
+// the expression's tree (and the force's Jacobian, for the implicit stages, by AutoDiff on
+// that). The work for each dimension (1 to 3, each with 1 to 6 stages) is instantiated in a
+// unit of its own (tableau_typed_n.cpp.in).
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "vibook/verify/tableau_typed_impl.hpp"
+
+namespace vibook::verify {
+
+void measure_tableau_typed(const TableauSpec& spec, const TypedDiscreteLagrangian& sys,
+                           const std::vector<double>& q0, const std::vector<double>& p0,
+                           const MapStudy& study, const std::string& system_line,
+                           bool require_reversible, MapMeasurement& rep) {
+  using tableau_detail::measure_typed_dim;
+  // The study's system is the caller's (set from the same expression): nothing to set here.
+  const StudySystem system{
+      [](MapStudy&) {}, system_line,
+      nlohmann::json{{"name", "typed"}, {"system", system_line}, {"q0", q0}, {"p0", p0}}};
+  switch (sys.dim()) {
+    case 1:
+      return measure_typed_dim<1>(spec, sys, system, study, require_reversible, rep);
+    case 2:
+      return measure_typed_dim<2>(spec, sys, system, study, require_reversible, rep);
+    case 3:
+      return measure_typed_dim<3>(spec, sys, system, study, require_reversible, rep);
+    default:
+      throw std::invalid_argument("measure_tableau_typed: 1 to 3 degrees of freedom");
+  }
+}
+
+}  // namespace vibook::verify

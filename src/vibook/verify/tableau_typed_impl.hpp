@@ -1,0 +1,30 @@
+/// \file tableau_typed_impl.hpp
+/// \brief measure_tableau_typed for N degrees of freedom (tableau_typed.cpp dispatches on the
+/// dimension; tableau_typed_n.cpp.in instantiates each N in a unit of its own). Internal: not
+/// installed.
+#pragma once
+
+#include "vibook/verify/tableau_study_impl.hpp"
+#include "vibook/verify/typed_potential.hpp"
+
+namespace vibook::verify::tableau_detail {
+
+template <int N>
+void measure_typed_dim(const TableauSpec& spec, const TypedDiscreteLagrangian& sys,
+                       const StudySystem& system, const MapStudy& study, bool require_reversible,
+                       MapMeasurement& rep) {
+  measure(spec, N, system, study, require_reversible, rep,
+          steps_for(TypedPotential<N>{&sys}, spec.tableau));
+}
+
+extern template void measure_typed_dim<1>(const TableauSpec&, const TypedDiscreteLagrangian&,
+                                          const StudySystem&, const MapStudy&, bool,
+                                          MapMeasurement&);
+extern template void measure_typed_dim<2>(const TableauSpec&, const TypedDiscreteLagrangian&,
+                                          const StudySystem&, const MapStudy&, bool,
+                                          MapMeasurement&);
+extern template void measure_typed_dim<3>(const TableauSpec&, const TypedDiscreteLagrangian&,
+                                          const StudySystem&, const MapStudy&, bool,
+                                          MapMeasurement&);
+
+}  // namespace vibook::verify::tableau_detail
