@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "vibook/verify/method_typed_impl.hpp"
+#include "vibook/verify/typed_study_system.hpp"
 
 namespace vibook::verify {
 
@@ -16,10 +17,7 @@ void measure_method_typed(const MethodSpec& spec, const TypedDiscreteLagrangian&
                           const MapStudy& study, const std::string& system_line,
                           MapMeasurement& rep) {
   using method_detail::measure_typed_dim;
-  // The study's system is the caller's (set from the same expression): nothing to set here.
-  const StudySystem system{
-      [](MapStudy&) {}, system_line,
-      nlohmann::json{{"name", "typed"}, {"system", system_line}, {"q0", q0}, {"p0", p0}}};
+  const StudySystem system = typed_study_system(system_line, q0, p0);
   switch (sys.dim()) {
     case 1:
       return measure_typed_dim<1>(spec, sys, system, study, rep);

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "vibook/verify/tableau_typed_impl.hpp"
+#include "vibook/verify/typed_study_system.hpp"
 
 namespace vibook::verify {
 
@@ -17,10 +18,7 @@ void measure_tableau_typed(const TableauSpec& spec, const TypedDiscreteLagrangia
                            const MapStudy& study, const std::string& system_line,
                            bool require_reversible, MapMeasurement& rep) {
   using tableau_detail::measure_typed_dim;
-  // The study's system is the caller's (set from the same expression): nothing to set here.
-  const StudySystem system{
-      [](MapStudy&) {}, system_line,
-      nlohmann::json{{"name", "typed"}, {"system", system_line}, {"q0", q0}, {"p0", p0}}};
+  const StudySystem system = typed_study_system(system_line, q0, p0);
   switch (sys.dim()) {
     case 1:
       return measure_typed_dim<1>(spec, sys, system, study, require_reversible, rep);
