@@ -39,7 +39,7 @@ template <int N, class T>
 bool update_is_small(const Vec<T, N>& x, const Vec<T, N>& dx, const Vec<T, N>& ref,
                      const T& step_rel, const T& step_abs, const T& factor = T(1)) {
   const T displacement = (x - ref).template lpNorm<Eigen::Infinity>();
-  for (int i = 0; i < N; ++i) {
+  for (Eigen::Index i = 0; i < x.size(); ++i) {
     using std::abs;
     const T size = std::max(std::max(T(abs(x(i))), T(abs(ref(i)))), displacement);
     if (!(factor * abs(dx(i)) <= step_rel * size + step_abs)) return false;
@@ -71,6 +71,7 @@ bool update_is_small(const Vec<T, N>& x, const Vec<T, N>& dx, const Vec<T, N>& r
 /// Jacobian J at x. Returns the report; x holds the solution. Throws SolveError (with the
 /// report) when the iteration does not converge within max_iterations, when the Jacobian is
 /// singular, or when a non-finite value appears. `what` names the solve in the message.
+/// N may be Eigen::Dynamic (F and J are then given x's size before fj fills them).
 template <int N, class FJ, class T = double>
 SolveReport newton_solve(Vec<T, N>& x, FJ&& fj, const NewtonOptions& opt,
                          const char* what = "Newton solve", const Vec<T, N>* reference = nullptr) {
@@ -78,6 +79,10 @@ SolveReport newton_solve(Vec<T, N>& x, FJ&& fj, const NewtonOptions& opt,
   SolveReport rep;
   Vec<T, N> F;
   Mat<T, N> J;
+  if constexpr (N == Eigen::Dynamic) {  // fj fills blocks of F and J: give them x's size
+    F.resize(x.size());
+    J.resize(x.size(), x.size());
+  }
   const T step_rel(opt.step_rel), step_abs(opt.step_abs);
   const auto evaluate = [&](bool with_jacobian) {
     if constexpr (std::is_invocable_v<FJ&, const Vec<T, N>&, Vec<T, N>&, Mat<T, N>&, bool>)
@@ -128,6 +133,10 @@ SolveReport affine_newton_solve(Vec<T, N>& x, FJ&& fj, const NewtonOptions& opt,
   SolveReport rep;
   Vec<T, N> F;
   Mat<T, N> J;
+  if constexpr (N == Eigen::Dynamic) {
+    F.resize(x.size());
+    J.resize(x.size(), x.size());
+  }
   const T step_rel(opt.step_rel), step_abs(opt.step_abs);
   fj(x, F, J, true);
   const auto lu = J.partialPivLu();

@@ -149,30 +149,39 @@ inline Quadrature quadrature_rule(const std::string& family, int s) {
 
 /// The Galerkin variational integrator of the file comment for a Lagrangian `L(q, v)` (a
 /// callable templated on the scalar, returning a scalar), N degrees of freedom, S stages
-/// (the polynomial's degree and the number of quadrature nodes). `step` has the interface of
-/// DelIntegrator: it advances (q, p) in place, reports the residual and iterations, and throws
-/// SolveError (leaving q, p unchanged) when Newton does not converge or the result is not
-/// finite.
+/// (the polynomial's degree and the number of quadrature nodes). S may be Eigen::Dynamic: the
+/// number of stages is then the rule's, and the step's matrices are sized at run time (one
+/// instance serves every rule; the same arithmetic, a little slower). `step` has the interface
+/// of DelIntegrator: it advances (q, p) in place, reports the residual and iterations, and
+/// throws SolveError (leaving q, p unchanged) when Newton does not converge or the result is
+/// not finite.
 template <int N, int S, class Lagrangian>
 class GalerkinIntegrator {
+  static constexpr bool fixed = S != Eigen::Dynamic;
+
  public:
   static constexpr int dim = N;
-  static constexpr int M = (S + 1) * N;  ///< all control points
-  static constexpr int U = S * N;        ///< the unknowns: interior control points and q1
+  static constexpr int M = fixed ? (S + 1) * N : Eigen::Dynamic;  ///< all control points
+  static constexpr int U = fixed ? S * N : Eigen::Dynamic;  ///< interior control points and q1
 
   GalerkinIntegrator(Lagrangian L, Quadrature rule, NewtonOptions options = {})
-      : L_(std::move(L)), rule_(std::move(rule)), options_(options) {
-    if (static_cast<int>(rule_.c.size()) != S)
-      throw std::invalid_argument("GalerkinIntegrator: the rule must have S nodes");
-    std::vector<long double> d(S + 1);
-    for (int nu = 0; nu <= S; ++nu)
-      d[static_cast<std::size_t>(nu)] = static_cast<long double>(nu) / S;
-    for (int i = 0; i < S; ++i)
-      for (int nu = 0; nu <= S; ++nu) {
+      : L_(std::move(L)),
+        rule_(std::move(rule)),
+        options_(options),
+        s_(static_cast<int>(rule_.c.size())) {
+    if ((fixed && s_ != S) || s_ < 1 || rule_.b.size() != rule_.c.size())
+      throw std::invalid_argument("GalerkinIntegrator: the rule must have S nodes and weights");
+    std::vector<long double> d(static_cast<std::size_t>(s_ + 1));
+    for (int nu = 0; nu <= s_; ++nu)
+      d[static_cast<std::size_t>(nu)] = static_cast<long double>(nu) / s_;
+    ell_.resize(static_cast<std::size_t>(s_ * (s_ + 1)));
+    dell_.resize(ell_.size());
+    for (int i = 0; i < s_; ++i)
+      for (int nu = 0; nu <= s_; ++nu) {
         const long double t = rule_.c[static_cast<std::size_t>(i)];
-        ell_[i][nu] =
+        ell(i, nu) =
             static_cast<double>(galerkin_detail::lagrange(d, static_cast<std::size_t>(nu), t));
-        dell_[i][nu] = static_cast<double>(
+        dell(i, nu) = static_cast<double>(
             galerkin_detail::lagrange_derivative(d, static_cast<std::size_t>(nu), t));
       }
   }
@@ -187,11 +196,13 @@ class GalerkinIntegrator {
   /// ∂Φ/∂W_ν = 0 (ν = 1 … S−1) and p0 + h ∂Φ/∂q0 − ∂Φ/∂W_S = 0 for W = (W_1 … W_S); then
   /// q1 = q0 + h W_S and p1 = ∂Φ/∂W_S = p0 + h ∂Φ/∂q0.
   SolveReport step(Vec<double, N>& q, Vec<double, N>& p, double h) {
+    const int ns = s_, u = ns * N, m = (ns + 1) * N;
     const Vec<double, N> q0 = q, p0 = p;
-    Vec<double, U> w;  // guess W_ν = d_ν p0 (the straight line with velocity p0: unit mass)
-    for (int nu = 1; nu <= S; ++nu) w.template segment<N>((nu - 1) * N) = (double(nu) / S) * p0;
-    Vec<double, M> grad;
-    Mat<double, M> hess;
+    // guess W_ν = d_ν p0 (the straight line with velocity p0: unit mass)
+    Vec<double, U> w = Vec<double, U>::Zero(u);
+    for (int nu = 1; nu <= ns; ++nu) w.template segment<N>((nu - 1) * N) = (double(nu) / ns) * p0;
+    Vec<double, M> grad = Vec<double, M>::Zero(m);
+    Mat<double, M> hess = Mat<double, M>::Zero(m, m);
     double phi = 0;  // Φ = A/h at the last evaluation
     // Φ's gradient and Hessian in X = (q0, W): Φ = Σ_i b_i L(B_i X) with B_i the linear map to
     // (q, v) at node i, so they are Σ b_i B_iᵀ ∇L and Σ b_i B_iᵀ ∇²L B_i, with ∇L and ∇²L in the
@@ -203,21 +214,21 @@ class GalerkinIntegrator {
       grad.setZero();
       hess.setZero();
       phi = 0;
-      for (int i = 0; i < S; ++i) {
-        Eigen::Matrix<double, K, M> B = Eigen::Matrix<double, K, M>::Zero();
+      for (int i = 0; i < ns; ++i) {
+        Eigen::Matrix<double, K, M> B = Eigen::Matrix<double, K, M>::Zero(K, m);
         for (int k = 0; k < N; ++k) {
           B(k, k) = 1;
-          for (int nu = 1; nu <= S; ++nu) {
-            B(k, nu * N + k) = h * ell_[i][nu];
-            B(N + k, nu * N + k) = dell_[i][nu];
+          for (int nu = 1; nu <= ns; ++nu) {
+            B(k, nu * N + k) = h * ell(i, nu);
+            B(N + k, nu * N + k) = dell(i, nu);
           }
         }
         Vec<double, K> z;
         for (int k = 0; k < N; ++k) {
           double qk = q0(k), vk = 0;
-          for (int nu = 1; nu <= S; ++nu) {
-            qk += h * ell_[i][nu] * x((nu - 1) * N + k);
-            vk += dell_[i][nu] * x((nu - 1) * N + k);
+          for (int nu = 1; nu <= ns; ++nu) {
+            qk += h * ell(i, nu) * x((nu - 1) * N + k);
+            vk += dell(i, nu) * x((nu - 1) * N + k);
           }
           z(k) = qk;
           z(N + k) = vk;
@@ -245,10 +256,10 @@ class GalerkinIntegrator {
       // rows: F_0 = p0 + h Φ_q0 − Φ_{W_S}, then Φ_{W_1} … Φ_{W_{S−1}}
       F.template head<N>() = p0 + h * grad.template head<N>() - grad.template tail<N>();
       J.template topRows<N>() =
-          h * hess.template block<N, U>(0, N) - hess.template block<N, U>(M - N, N);
-      if constexpr (S > 1) {
-        F.template tail<U - N>() = grad.template segment<U - N>(N);
-        J.template bottomRows<U - N>() = hess.template block<U - N, U>(N, N);
+          h * hess.template block<N, U>(0, N, N, u) - hess.template block<N, U>(m - N, N, N, u);
+      if (ns > 1) {
+        F.tail(u - N) = grad.segment(N, u - N);
+        J.bottomRows(u - N) = hess.block(N, N, u - N, u);
       }
     };
     // The updates are judged against the size of the momenta as well as each component's own
@@ -279,10 +290,15 @@ class GalerkinIntegrator {
   double action() const { return action_; }
 
  private:
+  // ℓ_ν(c_i) and ℓ'_ν(c_i), i < s, ν ≤ s
+  double& ell(int i, int nu) { return ell_[static_cast<std::size_t>(i * (s_ + 1) + nu)]; }
+  double& dell(int i, int nu) { return dell_[static_cast<std::size_t>(i * (s_ + 1) + nu)]; }
+
   Lagrangian L_;
   Quadrature rule_;
   NewtonOptions options_;
-  double ell_[S][S + 1]{}, dell_[S][S + 1]{};
+  int s_;  ///< the number of stages (S when S is fixed)
+  std::vector<double> ell_, dell_;
   double action_ = 0;
 };
 

@@ -6,7 +6,9 @@
 
 #include <doctest/doctest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <stdexcept>
 
 #include "vibook/kepler/kepler.hpp"
 #include "vibook/problems/problems.hpp"
@@ -107,4 +109,35 @@ TEST_CASE("Galerkin variational integrators are the partitioned Runge-Kutta meth
   // differ by about h^5)
   CHECK(galerkin_vs_prk<2>(gauss_rule(2), lobatto_rule(2), 40, kH) > 1000 * kTol);
   CHECK(galerkin_vs_prk<3>(lobatto_rule(3), gauss_rule(3), 40, kH) > 1000 * kTol);
+}
+
+TEST_CASE("Galerkin integrator: the run-time stage count gives the fixed-S step to round-off") {
+  // GalerkinIntegrator<N, Eigen::Dynamic, L> (what `vibook verify --method` runs) against the
+  // fixed-size instance, state by state along 40 steps of Kepler (e = 0.5), and the discrete
+  // Lagrangian of each step; a rule of another size is refused by the fixed instance.
+  const auto L = mechanical(Kepler{});
+  auto compare = [&](auto& fixed, auto& dynamic) {
+    Vec<double, 2> q(0.5, 0), p(0, std::sqrt(3.0));
+    double state = 0, action = 0;
+    for (int k = 0; k < 40; ++k) {
+      Vec<double, 2> q2 = q, p2 = p;
+      CHECK(fixed.step(q, p, 0.1).converged);
+      CHECK(dynamic.step(q2, p2, 0.1).converged);
+      state =
+          std::max({state, (q - q2).lpNorm<Eigen::Infinity>(), (p - p2).lpNorm<Eigen::Infinity>()});
+      action = std::max(action, std::abs(fixed.action() - dynamic.action()));
+    }
+    CHECK(state <= 16 * 2.2e-16 * 2);  // |z| <= 2
+    CHECK(action <= 16 * 2.2e-16);     // |L_d| < 1 for h = 0.1
+  };
+  GalerkinIntegrator<2, 3, decltype(L)> lobatto3(L, lobatto_rule(3));
+  GalerkinIntegrator<2, Eigen::Dynamic, decltype(L)> lobatto3_dynamic(L, lobatto_rule(3));
+  compare(lobatto3, lobatto3_dynamic);
+  GalerkinIntegrator<2, 2, decltype(L)> gauss2(L, gauss_rule(2));
+  GalerkinIntegrator<2, Eigen::Dynamic, decltype(L)> gauss2_dynamic(L, gauss_rule(2));
+  compare(gauss2, gauss2_dynamic);
+  using Fixed3 = GalerkinIntegrator<2, 3, decltype(L)>;
+  CHECK_THROWS_AS(Fixed3(L, gauss_rule(2)), std::invalid_argument);
+  using Dynamic = GalerkinIntegrator<2, Eigen::Dynamic, decltype(L)>;
+  CHECK_THROWS_AS(Dynamic(L, Quadrature{}), std::invalid_argument);
 }

@@ -24,9 +24,11 @@
 /// Chapter: \ref chapter-verify (section "A method from its tableau").
 #pragma once
 
+#include <array>
 #include <cmath>
 #include <stdexcept>
 #include <string>
+#include <type_traits>
 #include <vector>
 
 #include "vibook/core/autodiff.hpp"
@@ -48,26 +50,35 @@ struct PrkTableau {
 /// `Problem::gradient`, a templated `Problem::potential`). `step` has the interface of the
 /// kernels: it advances (q, p) in place, reports the residual and iterations, and throws
 /// SolveError (leaving q and p as they were) when Newton does not converge or the result is
-/// not finite.
+/// not finite. S may be Eigen::Dynamic: the number of stages is then the tableau's, and the
+/// stage system is sized at run time (one instance serves every tableau).
 template <int S, class Problem>
 class PartitionedRkMethod {
+  static constexpr bool fixed = S != Eigen::Dynamic;
+  // per-stage vectors: on the stack when S is fixed
+  template <class X>
+  using PerStage = std::conditional_t<fixed, std::array<X, fixed ? S : 1>, std::vector<X>>;
+
  public:
   static constexpr int N = Problem::N;
-  static constexpr int U = S * N;
+  static constexpr int U = fixed ? S * N : Eigen::Dynamic;
 
   PartitionedRkMethod(Problem P, const PrkTableau& t, NewtonOptions options = {})
-      : P_(std::move(P)), t_(t), options_(options) {
-    if (t_.stages() != S || static_cast<int>(t_.bhat.size()) != S ||
-        static_cast<int>(t_.a.size()) != S || static_cast<int>(t_.ahat.size()) != S)
+      : P_(std::move(P)), t_(t), options_(options), s_(t_.stages()) {
+    const auto n = static_cast<std::size_t>(s_);
+    if ((fixed && s_ != S) || s_ < 1 || t_.bhat.size() != n || t_.a.size() != n ||
+        t_.ahat.size() != n)
       throw std::invalid_argument("PartitionedRkMethod: the tableau must have S stages");
-    for (int i = 0; i < S; ++i) {
-      if (static_cast<int>(t_.a[i].size()) != S || static_cast<int>(t_.ahat[i].size()) != S)
+    M_.assign(n, std::vector<double>(n));
+    c_.assign(n, 0.0);
+    for (std::size_t i = 0; i < n; ++i) {
+      if (t_.a[i].size() != n || t_.ahat[i].size() != n)
         throw std::invalid_argument("PartitionedRkMethod: a and ahat must be S x S");
       double ci = 0;
-      for (int j = 0; j < S; ++j) {
+      for (std::size_t j = 0; j < n; ++j) {
         ci += t_.a[i][j];
         double m = 0;
-        for (int k = 0; k < S; ++k) m += t_.a[i][k] * t_.ahat[k][j];
+        for (std::size_t k = 0; k < n; ++k) m += t_.a[i][k] * t_.ahat[k][j];
         M_[i][j] = m;
       }
       c_[i] = ci;
@@ -75,26 +86,27 @@ class PartitionedRkMethod {
   }
 
   SolveReport step(Vec<double, N>& q, Vec<double, N>& p, double h) {
+    const int ns = s_;
     const Vec<double, N> q0 = q, p0 = p;
     // W_i = (Q_i − q0)/h, started from the straight line W_i = c̃_i p0
-    Vec<double, U> w;
-    for (int i = 0; i < S; ++i) w.template segment<N>(i * N) = c_[i] * p0;
+    Vec<double, U> w = Vec<double, U>::Zero(ns * N);
+    for (int i = 0; i < ns; ++i) w.template segment<N>(i * N) = c_[i] * p0;
     auto fj = [&](const Vec<double, U>& x, Vec<double, U>& F, Mat<double, U>& J,
                   bool with_jacobian) {
-      Vec<double, N> g[S];
-      Mat<double, N> Hs[S];
-      for (int k = 0; k < S; ++k) {
+      PerStage<Vec<double, N>> g = per_stage<Vec<double, N>>();
+      PerStage<Mat<double, N>> Hs = per_stage<Mat<double, N>>();
+      for (int k = 0; k < ns; ++k) {
         const Vec<double, N> Qk = q0 + h * x.template segment<N>(k * N);
         g[k] = P_.gradient(Qk);
         if (with_jacobian)
           Hs[k] = ad::jacobian<N>([&](const auto& y) { return P_.gradient(y); }, Qk);
       }
-      for (int i = 0; i < S; ++i) {
+      for (int i = 0; i < ns; ++i) {
         Vec<double, N> Fi = x.template segment<N>(i * N) - c_[i] * p0;
-        for (int k = 0; k < S; ++k) Fi += h * M_[i][k] * g[k];
+        for (int k = 0; k < ns; ++k) Fi += h * M_[i][k] * g[k];
         F.template segment<N>(i * N) = Fi;
         if (with_jacobian)
-          for (int k = 0; k < S; ++k) {
+          for (int k = 0; k < ns; ++k) {
             Mat<double, N> block = (h * h * M_[i][k]) * Hs[k];
             if (i == k) block += Mat<double, N>::Identity();
             J.template block<N, N>(i * N, k * N) = block;
@@ -105,14 +117,14 @@ class PartitionedRkMethod {
     opt.step_abs = std::max(opt.step_abs, 4 * std::numeric_limits<double>::epsilon() *
                                               std::max(1.0, p0.template lpNorm<Eigen::Infinity>()));
     const SolveReport rep = newton_solve<U>(w, fj, opt, "partitioned Runge-Kutta stages");
-    Vec<double, N> g[S], Pst[S];
+    PerStage<Vec<double, N>> g = per_stage<Vec<double, N>>(), Pst = per_stage<Vec<double, N>>();
     double action = 0;
-    for (int k = 0; k < S; ++k)
+    for (int k = 0; k < ns; ++k)
       g[k] = P_.gradient(Vec<double, N>(q0 + h * w.template segment<N>(k * N)));
     Vec<double, N> dq = Vec<double, N>::Zero(), dp = Vec<double, N>::Zero();
-    for (int i = 0; i < S; ++i) {
+    for (int i = 0; i < ns; ++i) {
       Pst[i] = p0;
-      for (int j = 0; j < S; ++j) Pst[i] -= h * t_.ahat[i][j] * g[j];
+      for (int j = 0; j < ns; ++j) Pst[i] -= h * t_.ahat[i][j] * g[j];
       dq += t_.b[i] * Pst[i];
       dp -= t_.bhat[i] * g[i];
       const Vec<double, N> Qi = q0 + h * w.template segment<N>(i * N);
@@ -132,11 +144,20 @@ class PartitionedRkMethod {
   double action() const { return action_; }
 
  private:
+  template <class X>
+  PerStage<X> per_stage() const {
+    if constexpr (fixed)
+      return {};
+    else
+      return PerStage<X>(static_cast<std::size_t>(s_));
+  }
+
   Problem P_;
   PrkTableau t_;
   NewtonOptions options_;
-  double M_[S][S]{};
-  double c_[S]{};
+  int s_;                               ///< the number of stages (S when S is fixed)
+  std::vector<std::vector<double>> M_;  ///< M_ij = Σ_k a_ik â_kj
+  std::vector<double> c_;               ///< c̃_i = Σ_j a_ij
   double action_ = 0;
 };
 

@@ -7,7 +7,9 @@
 
 #include <doctest/doctest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <stdexcept>
 #include <string>
 
 #include "vibook/integrators/galerkin.hpp"
@@ -104,4 +106,29 @@ TEST_CASE("tableau file: Lobatto IIIA-IIIB is the Galerkin lobatto:3 method, a t
   const verify::TableauSpec g2 = verify::read_tableau(kTableaus + "gauss2.json");
   CHECK(g2.symplectic_conditions);
   CHECK(g2.row_sum_residual <= 1e-44);
+}
+
+TEST_CASE("tableau method: the run-time stage count gives the fixed-S step to round-off") {
+  // PartitionedRkMethod<Eigen::Dynamic, P> (what `vibook verify --tableau` runs) against the
+  // fixed-size instance on the Lobatto IIIA-IIIB tableau, from the same state at every step
+  const PartitionedRungeKutta<Kepler> prk(Kepler{}, lobatto_rule(3));
+  PrkTableau t{prk.a(), prk.ahat(), lobatto_rule(3).b, lobatto_rule(3).b};
+  PartitionedRkMethod<3, Kepler> fixed(Kepler{}, t);
+  PartitionedRkMethod<Eigen::Dynamic, Kepler> dynamic(Kepler{}, t);
+  Vec<double, 2> q(0.5, 0), p(0, std::sqrt(3.0));
+  double state = 0, action = 0;
+  for (int k = 0; k < 40; ++k) {
+    Vec<double, 2> q2 = q, p2 = p;
+    CHECK(fixed.step(q, p, 0.1).converged);
+    CHECK(dynamic.step(q2, p2, 0.1).converged);
+    state =
+        std::max({state, (q - q2).lpNorm<Eigen::Infinity>(), (p - p2).lpNorm<Eigen::Infinity>()});
+    action = std::max(action, std::abs(fixed.action() - dynamic.action()));
+  }
+  CHECK(state <= 16 * 2.2e-16 * 2);  // |z| <= 2
+  CHECK(action <= 16 * 2.2e-16);     // |L_d| < 1 for h = 0.1
+  // a tableau of another size is refused by the fixed instance, an empty one by both
+  CHECK_THROWS_AS((PartitionedRkMethod<2, Kepler>(Kepler{}, t)), std::invalid_argument);
+  CHECK_THROWS_AS((PartitionedRkMethod<Eigen::Dynamic, Kepler>(Kepler{}, PrkTableau{})),
+                  std::invalid_argument);
 }

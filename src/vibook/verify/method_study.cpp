@@ -76,42 +76,21 @@ void measure(const MethodSpec& p, int N, const StudySystem& system, MapStudy s, 
 
 }  // namespace method_detail
 
-namespace {
-
-using method_detail::galerkin_step;
-using method_detail::measure;
-
-template <int S>
-void measure_stages(const MethodSpec& p, const TestProblem& problem, const std::vector<double>& q0,
-                    const std::vector<double>& p0, const MapStudy& s, MapMeasurement& rep) {
-  const StudySystem system = test_problem_system(problem, q0, p0);
-  const int N = static_cast<int>(q0.size());
-  if (problem.name == "pendulum")
-    return measure(p, N, system, s, rep, galerkin_step<S>(Pendulum{}, p.rule));
-  if (problem.name == "henon-heiles")
-    return measure(p, N, system, s, rep, galerkin_step<S>(HenonHeiles{}, p.rule));
-  return measure(p, N, system, s, rep, galerkin_step<S>(Kepler{}, p.rule));
-}
-
-}  // namespace
-
 void measure_method(const MethodSpec& spec, const TestProblem& problem,
                     const std::vector<double>& q0, const std::vector<double>& p0,
                     const MapStudy& study, MapMeasurement& rep) {
-  switch (spec.stages) {
-    case 1:
-      return measure_stages<1>(spec, problem, q0, p0, study, rep);
-    case 2:
-      return measure_stages<2>(spec, problem, q0, p0, study, rep);
-    case 3:
-      return measure_stages<3>(spec, problem, q0, p0, study, rep);
-    case 4:
-      return measure_stages<4>(spec, problem, q0, p0, study, rep);
-    case 5:
-      return measure_stages<5>(spec, problem, q0, p0, study, rep);
-    default:
-      throw std::invalid_argument("measure_method: 1 to 5 stages");
-  }
+  using method_detail::galerkin_step;
+  const StudySystem system = test_problem_system(problem, q0, p0);
+  const int N = static_cast<int>(q0.size());
+  const char* who = "measure_method";
+  if (problem.name == "pendulum")
+    return method_detail::measure(spec, N, system, study, rep,
+                                  galerkin_step(Pendulum{}, spec.rule, who));
+  if (problem.name == "henon-heiles")
+    return method_detail::measure(spec, N, system, study, rep,
+                                  galerkin_step(HenonHeiles{}, spec.rule, who));
+  return method_detail::measure(spec, N, system, study, rep,
+                                galerkin_step(Kepler{}, spec.rule, who));
 }
 
 }  // namespace vibook::verify

@@ -6,6 +6,7 @@
 
 #include <functional>
 #include <memory>
+#include <stdexcept>
 #include <string>
 #include <type_traits>
 #include <utility>
@@ -27,13 +28,18 @@ auto mechanical_lagrangian(P prob) {
   };
 }
 
-// The one-step map (instantiated for each number of stages and problem); the rest of the
-// report depends on the problem only.
-// With it, the step that also returns the step's discrete Lagrangian (the variational order).
-template <int S, class P>
-std::pair<Step, GeneratingStep> galerkin_step(const P& prob, const Quadrature& rule) {
+// The one-step map (one instance per problem: the number of stages is the rule's, at run time,
+// as in GalerkinIntegrator<N, Eigen::Dynamic, L>); the rest of the report depends on the
+// problem only. With it, the step that also returns the step's discrete Lagrangian (the
+// variational order). `who` names the caller in the message for a number of stages outside
+// 1..5, the catalogue's range.
+template <class P>
+std::pair<Step, GeneratingStep> galerkin_step(const P& prob, const Quadrature& rule,
+                                              const char* who) {
+  if (rule.c.empty() || rule.c.size() > 5)
+    throw std::invalid_argument(std::string(who) + ": 1 to 5 stages");
   constexpr int N = P::N;
-  using Integrator = GalerkinIntegrator<N, S, decltype(mechanical_lagrangian(prob))>;
+  using Integrator = GalerkinIntegrator<N, Eigen::Dynamic, decltype(mechanical_lagrangian(prob))>;
   auto integrator = std::make_shared<Integrator>(mechanical_lagrangian(prob), rule);
   auto generating = std::make_shared<Integrator>(mechanical_lagrangian(prob), rule);
   return {naming_failures(

@@ -17,20 +17,7 @@ template <int N>
 void measure_typed_dim(const MethodSpec& spec, const TypedDiscreteLagrangian& sys,
                        const StudySystem& system, const MapStudy& study, MapMeasurement& rep) {
   const TypedPotential<N> prob{&sys};
-  switch (spec.stages) {
-    case 1:
-      return measure(spec, N, system, study, rep, galerkin_step<1>(prob, spec.rule));
-    case 2:
-      return measure(spec, N, system, study, rep, galerkin_step<2>(prob, spec.rule));
-    case 3:
-      return measure(spec, N, system, study, rep, galerkin_step<3>(prob, spec.rule));
-    case 4:
-      return measure(spec, N, system, study, rep, galerkin_step<4>(prob, spec.rule));
-    case 5:
-      return measure(spec, N, system, study, rep, galerkin_step<5>(prob, spec.rule));
-    default:
-      throw std::invalid_argument("measure_method_typed: 1 to 5 stages");
-  }
+  measure(spec, N, system, study, rep, galerkin_step(prob, spec.rule, "measure_method_typed"));
 }
 
 extern template void measure_typed_dim<1>(const MethodSpec&, const TypedDiscreteLagrangian&,

@@ -14,10 +14,14 @@
 
 namespace vibook::verify::tableau_detail {
 
-template <int S, class P>
-std::pair<Step, GeneratingStep> prk_steps(const P& prob, const PrkTableau& t) {
+// The one-step map and the generating step of the tableau's method on `prob`: one instance per
+// problem, the number of stages the tableau's (PartitionedRkMethod<Eigen::Dynamic, P>).
+template <class P>
+std::pair<Step, GeneratingStep> steps_for(const P& prob, const PrkTableau& t) {
+  if (t.stages() < 1 || t.stages() > 6)
+    throw std::invalid_argument("measure_tableau: 1 to 6 stages");
   constexpr int N = P::N;
-  using Method = PartitionedRkMethod<S, P>;
+  using Method = PartitionedRkMethod<Eigen::Dynamic, P>;
   auto method = std::make_shared<Method>(prob, t);
   auto generating = std::make_shared<Method>(prob, t);
   return {naming_failures([method](Eigen::VectorXd& z, double h) { step_qp<N>(*method, z, h); }, N),
@@ -25,26 +29,6 @@ std::pair<Step, GeneratingStep> prk_steps(const P& prob, const PrkTableau& t) {
             step_qp<N>(*generating, z, h);
             return generating->action();
           }};
-}
-
-template <class P>
-std::pair<Step, GeneratingStep> steps_for(const P& prob, const PrkTableau& t) {
-  switch (t.stages()) {
-    case 1:
-      return prk_steps<1>(prob, t);
-    case 2:
-      return prk_steps<2>(prob, t);
-    case 3:
-      return prk_steps<3>(prob, t);
-    case 4:
-      return prk_steps<4>(prob, t);
-    case 5:
-      return prk_steps<5>(prob, t);
-    case 6:
-      return prk_steps<6>(prob, t);
-    default:
-      throw std::invalid_argument("measure_tableau: 1 to 6 stages");
-  }
 }
 
 // The tableau's lines, then the measurement of map_study.hpp on `system`; N degrees of freedom.
