@@ -35,33 +35,32 @@ using verify::TestProblem;
 using verify::vec_text;
 
 /// Hamilton's equations of the Hamiltonian of `sys` in double-double, (q, p) stacked: the field
-/// every reference of a typed system solves. `sys` must outlive it.
+/// every reference of a typed system solves. `sys` must outlive it. N = 1..verify::kMaxDim,
+/// instantiated once (typed_system.cpp).
 template <int N>
-verify::Field<dd_real> typed_hamilton_field(const verify::TypedDiscreteLagrangian& sys) {
-  return [&sys](const std::vector<dd_real>& y) {
-    Vec<dd_real, N> q, pp;
-    for (int i = 0; i < N; ++i) {
-      q(i) = y[static_cast<std::size_t>(i)];
-      pp(i) = y[static_cast<std::size_t>(N + i)];
-    }
-    const Vec<dd_real, 2 * N> f = sys.hamilton_field<N, dd_real>(q, pp);
-    return std::vector<dd_real>(f.data(), f.data() + 2 * N);
-  };
-}
+verify::Field<dd_real> typed_hamilton_field(const verify::TypedDiscreteLagrangian& sys);
 
 /// The system part of a study from a typed system with a Hamiltonian (`vibook verify
 /// --hamiltonian`, or p^2/2 + V(q) from --potential): z0, the reference's field (Hamilton's
-/// equations in double-double) and the energy. `sys` must outlive the study.
+/// equations in double-double) and the energy. `sys` must outlive the study. N =
+/// 1..verify::kMaxDim, instantiated once (typed_system.cpp).
 template <int N>
 void set_typed_system(MapStudy& s, const verify::TypedDiscreteLagrangian& sys,
-                      const Eigen::VectorXd& z0) {
-  s.z0 = z0;
-  s.field = typed_hamilton_field<N>(sys);
-  s.equations = "Hamilton's equations of H";
-  s.H = [&sys](const Eigen::VectorXd& z) {
-    return sys.hamiltonian<N, double>(Vec<double, N>(z.head<N>()), Vec<double, N>(z.tail<N>()));
-  };
-}
+                      const Eigen::VectorXd& z0);
+
+#define VIBOOK_TYPED_SYSTEM(N)                                                                \
+  extern template verify::Field<dd_real> typed_hamilton_field<N>(                             \
+      const verify::TypedDiscreteLagrangian&);                                                \
+  extern template void set_typed_system<N>(MapStudy&, const verify::TypedDiscreteLagrangian&, \
+                                           const Eigen::VectorXd&);
+VIBOOK_TYPED_SYSTEM(1)
+VIBOOK_TYPED_SYSTEM(2)
+VIBOOK_TYPED_SYSTEM(3)
+VIBOOK_TYPED_SYSTEM(4)
+VIBOOK_TYPED_SYSTEM(5)
+VIBOOK_TYPED_SYSTEM(6)
+#undef VIBOOK_TYPED_SYSTEM
+static_assert(verify::kMaxDim == 6, "instantiate typed_hamilton_field for every dimension");
 
 /// The test problem named by --problem (empty: kepler); ArgumentError naming --problem
 /// otherwise.
@@ -167,5 +166,9 @@ std::unique_ptr<verify::TypedDiscreteLagrangian> check_typed_potential(
 std::string set_typed_potential(MapStudy& s, const verify::TypedDiscreteLagrangian& sys,
                                 const std::string& potential, const std::vector<double>& q0,
                                 const std::vector<double>& p0);
+
+// The largest eigenvalue of the symmetric matrix H (the stability hint's ω² from V's Hessian):
+// one instance for every dimension, compiled once.
+double largest_symmetric_eigenvalue(const Eigen::MatrixXd& H);
 
 }  // namespace vibook::cli

@@ -227,8 +227,9 @@ int run_verify(const VerifyOptions& o, const verify::TypedDiscreteLagrangian& dl
       Mat<double, N> H;
       verify::value_gradient_hessian<N, double>([&](const auto& x) { return dl.potential<N>(x); },
                                                 q, value, g, H);
-      const Eigen::SelfAdjointEigenSolver<Mat<double, N>> es(H);
-      const double lmax = es.eigenvalues().maxCoeff();
+      // (1 x 1 directly: GCC 12 warns, falsely, of bounds in the copy of a 1 x 1 matrix)
+      double lmax = H(0, 0);
+      if constexpr (N > 1) lmax = largest_symmetric_eigenvalue(H);
       omega = lmax > 0 ? std::sqrt(lmax) : 0;
     } catch (const std::exception&) {
       omega = 0;

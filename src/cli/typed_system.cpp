@@ -1,0 +1,46 @@
+// The typed system's reference field and energy (verify_map.hpp), compiled once for each
+// dimension 1..verify::kMaxDim: every typed route of `vibook verify` (--ld, --hamiltonian with a
+// black box, --composition on a typed L_d, --method and --tableau on --potential) uses them.
+#include <vector>
+
+#include "verify_map.hpp"
+
+namespace vibook::cli {
+
+template <int N>
+verify::Field<dd_real> typed_hamilton_field(const verify::TypedDiscreteLagrangian& sys) {
+  return [&sys](const std::vector<dd_real>& y) {
+    Vec<dd_real, N> q, pp;
+    for (int i = 0; i < N; ++i) {
+      q(i) = y[static_cast<std::size_t>(i)];
+      pp(i) = y[static_cast<std::size_t>(N + i)];
+    }
+    const Vec<dd_real, 2 * N> f = sys.hamilton_field<N, dd_real>(q, pp);
+    return std::vector<dd_real>(f.data(), f.data() + 2 * N);
+  };
+}
+
+template <int N>
+void set_typed_system(MapStudy& s, const verify::TypedDiscreteLagrangian& sys,
+                      const Eigen::VectorXd& z0) {
+  s.z0 = z0;
+  s.field = typed_hamilton_field<N>(sys);
+  s.equations = "Hamilton's equations of H";
+  s.H = [&sys](const Eigen::VectorXd& z) {
+    return sys.hamiltonian<N, double>(Vec<double, N>(z.head<N>()), Vec<double, N>(z.tail<N>()));
+  };
+}
+
+#define VIBOOK_TYPED_SYSTEM(N)                                                                     \
+  template verify::Field<dd_real> typed_hamilton_field<N>(const verify::TypedDiscreteLagrangian&); \
+  template void set_typed_system<N>(MapStudy&, const verify::TypedDiscreteLagrangian&,             \
+                                    const Eigen::VectorXd&);
+VIBOOK_TYPED_SYSTEM(1)
+VIBOOK_TYPED_SYSTEM(2)
+VIBOOK_TYPED_SYSTEM(3)
+VIBOOK_TYPED_SYSTEM(4)
+VIBOOK_TYPED_SYSTEM(5)
+VIBOOK_TYPED_SYSTEM(6)
+#undef VIBOOK_TYPED_SYSTEM
+
+}  // namespace vibook::cli
