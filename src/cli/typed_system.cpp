@@ -35,12 +35,7 @@ void set_typed_system(MapStudy& s, const verify::TypedDiscreteLagrangian& sys,
   template verify::Field<dd_real> typed_hamilton_field<N>(const verify::TypedDiscreteLagrangian&); \
   template void set_typed_system<N>(MapStudy&, const verify::TypedDiscreteLagrangian&,             \
                                     const Eigen::VectorXd&);
-VIBOOK_TYPED_SYSTEM(1)
-VIBOOK_TYPED_SYSTEM(2)
-VIBOOK_TYPED_SYSTEM(3)
-VIBOOK_TYPED_SYSTEM(4)
-VIBOOK_TYPED_SYSTEM(5)
-VIBOOK_TYPED_SYSTEM(6)
+VIBOOK_FOR_EACH_DIM(VIBOOK_TYPED_SYSTEM)
 #undef VIBOOK_TYPED_SYSTEM
 
 }  // namespace vibook::cli

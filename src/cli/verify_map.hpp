@@ -48,19 +48,17 @@ template <int N>
 void set_typed_system(MapStudy& s, const verify::TypedDiscreteLagrangian& sys,
                       const Eigen::VectorXd& z0);
 
+// X(1) … X(kMaxDim): explicit instantiations (here extern, in typed_system.cpp the definitions)
+// for every dimension, from one list.
+#define VIBOOK_FOR_EACH_DIM(X) X(1) X(2) X(3) X(4) X(5) X(6)
+static_assert(verify::kMaxDim == 6, "VIBOOK_FOR_EACH_DIM lists the dimensions 1..kMaxDim");
 #define VIBOOK_TYPED_SYSTEM(N)                                                                \
   extern template verify::Field<dd_real> typed_hamilton_field<N>(                             \
       const verify::TypedDiscreteLagrangian&);                                                \
   extern template void set_typed_system<N>(MapStudy&, const verify::TypedDiscreteLagrangian&, \
                                            const Eigen::VectorXd&);
-VIBOOK_TYPED_SYSTEM(1)
-VIBOOK_TYPED_SYSTEM(2)
-VIBOOK_TYPED_SYSTEM(3)
-VIBOOK_TYPED_SYSTEM(4)
-VIBOOK_TYPED_SYSTEM(5)
-VIBOOK_TYPED_SYSTEM(6)
+VIBOOK_FOR_EACH_DIM(VIBOOK_TYPED_SYSTEM)
 #undef VIBOOK_TYPED_SYSTEM
-static_assert(verify::kMaxDim == 6, "instantiate typed_hamilton_field for every dimension");
 
 /// The test problem named by --problem (empty: kepler); ArgumentError naming --problem
 /// otherwise.

@@ -10,6 +10,7 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "vibook/integrators/step_difference_test.hpp"
 #include "vibook/kepler/kepler.hpp"
 #include "vibook/problems/problems.hpp"
 
@@ -116,19 +117,11 @@ TEST_CASE("Galerkin integrator: the run-time stage count gives the fixed-S step 
   // fixed-size instance, state by state along 40 steps of Kepler (e = 0.5), and the discrete
   // Lagrangian of each step; a rule of another size is refused by the fixed instance.
   const auto L = mechanical(Kepler{});
-  auto compare = [&](auto& fixed, auto& dynamic) {
-    Vec<double, 2> q(0.5, 0), p(0, std::sqrt(3.0));
-    double state = 0, action = 0;
-    for (int k = 0; k < 40; ++k) {
-      Vec<double, 2> q2 = q, p2 = p;
-      CHECK(fixed.step(q, p, 0.1).converged);
-      CHECK(dynamic.step(q2, p2, 0.1).converged);
-      state =
-          std::max({state, (q - q2).lpNorm<Eigen::Infinity>(), (p - p2).lpNorm<Eigen::Infinity>()});
-      action = std::max(action, std::abs(fixed.action() - dynamic.action()));
-    }
-    CHECK(state <= 16 * 2.2e-16 * 2);  // |z| <= 2
-    CHECK(action <= 16 * 2.2e-16);     // |L_d| < 1 for h = 0.1
+  auto compare = [](auto& fixed, auto& dynamic) {
+    const test::StepDifference d = test::step_difference(fixed, dynamic, 40, 0.1);
+    CHECK(d.converged);
+    CHECK(d.state <= 16 * 2.2e-16 * 2);  // |z| <= 2
+    CHECK(d.action <= 16 * 2.2e-16);     // |L_d| < 1 for h = 0.1
   };
   GalerkinIntegrator<2, 3, decltype(L)> lobatto3(L, lobatto_rule(3));
   GalerkinIntegrator<2, Eigen::Dynamic, decltype(L)> lobatto3_dynamic(L, lobatto_rule(3));

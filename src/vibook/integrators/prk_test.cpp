@@ -13,6 +13,7 @@
 #include <string>
 
 #include "vibook/integrators/galerkin.hpp"
+#include "vibook/integrators/step_difference_test.hpp"
 #include "vibook/kepler/kepler.hpp"
 #include "vibook/verify/tableau_study.hpp"
 
@@ -115,18 +116,10 @@ TEST_CASE("tableau method: the run-time stage count gives the fixed-S step to ro
   PrkTableau t{prk.a(), prk.ahat(), lobatto_rule(3).b, lobatto_rule(3).b};
   PartitionedRkMethod<3, Kepler> fixed(Kepler{}, t);
   PartitionedRkMethod<Eigen::Dynamic, Kepler> dynamic(Kepler{}, t);
-  Vec<double, 2> q(0.5, 0), p(0, std::sqrt(3.0));
-  double state = 0, action = 0;
-  for (int k = 0; k < 40; ++k) {
-    Vec<double, 2> q2 = q, p2 = p;
-    CHECK(fixed.step(q, p, 0.1).converged);
-    CHECK(dynamic.step(q2, p2, 0.1).converged);
-    state =
-        std::max({state, (q - q2).lpNorm<Eigen::Infinity>(), (p - p2).lpNorm<Eigen::Infinity>()});
-    action = std::max(action, std::abs(fixed.action() - dynamic.action()));
-  }
-  CHECK(state <= 16 * 2.2e-16 * 2);  // |z| <= 2
-  CHECK(action <= 16 * 2.2e-16);     // |L_d| < 1 for h = 0.1
+  const test::StepDifference d = test::step_difference(fixed, dynamic, 40, 0.1);
+  CHECK(d.converged);
+  CHECK(d.state <= 16 * 2.2e-16 * 2);  // |z| <= 2
+  CHECK(d.action <= 16 * 2.2e-16);     // |L_d| < 1 for h = 0.1
   // a tableau of another size is refused by the fixed instance, an empty one by both
   CHECK_THROWS_AS((PartitionedRkMethod<2, Kepler>(Kepler{}, t)), std::invalid_argument);
   CHECK_THROWS_AS((PartitionedRkMethod<Eigen::Dynamic, Kepler>(Kepler{}, PrkTableau{})),
