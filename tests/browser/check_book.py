@@ -28,7 +28,8 @@ chromium-driver, driven by python3-selenium) and fail on:
     whose narrow columns quote the papers' displays verbatim, let a display scroll),
   - a numbered list born of a sentence that ends in a number (Markdown reads "a drift 1." at
     the end of a line, followed by text, as a list: an <ol> with a single item or a start
-    other than 1), and history words a reader has no use for ("this version", "until now").
+    other than 1), and history words a reader has no use for ("this version", "a first
+    version", "until now").
 The book's own pages (chapters, report, index, anything with TeX), and the first page of each
 kind of Doxygen API page, are opened in the browser. The other API pages (about 300, with no
 TeX: the API documentation writes its formulas in Unicode) are checked without a browser for
@@ -210,7 +211,7 @@ document.querySelectorAll('div.contents ol').forEach(ol => {
              ' item(s) starting at ' + (start || '1') + ', born of a sentence ending in a number? "' +
              ol.textContent.trim().slice(0, 60) + '"');
 });
-const words = /\\b(this version|previous version|until now|until this|used to be)\\b/i;
+const words = /\\b(this version|previous version|first version|earlier version|until now|until this|used to be)\\b/i;
 const walker = document.createTreeWalker(document.querySelector('div.contents') || document.body,
                                          NodeFilter.SHOW_TEXT);
 while (walker.nextNode()) {
