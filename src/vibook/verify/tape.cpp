@@ -154,6 +154,16 @@ class Graph {
         if (cb && is(cb, 1)) return a;
         if (na >= 0) return op(Op::neg, op(Op::div, na, b));  // (−x)/y = −(x/y)
         if (nb >= 0) return op(Op::neg, op(Op::div, a, nb));
+        // x/2^k = 2^−k·x: both are x·2^−k correctly rounded, the same number, and a product
+        // costs a fraction of a quotient (the chain rule of √ and of quotients makes many).
+        if (cb && power_of_two(cb->exact) && representable(cb->exact))
+          return op(Op::mul, constant(1 / cb->exact), a);
+        {  // (c·x)/(c·y) = x/y for a power of two |c| >= 1: c·x and c·y are exact
+          const Const* cx = scaling(a);
+          const Const* cy = scaling(b);
+          if (cx && cy && cx->exact.is_equal(cy->exact) && GiNaC::abs(cx->exact) >= 1)
+            return op(Op::div, nodes_[a].b, nodes_[b].b);
+        }
         break;
       case Op::neg:
         if (ca) return constant(-ca->exact);
@@ -372,6 +382,17 @@ class Graph {
       return n.is_equal(GiNaC::numeric(1));
     };
     return pow2(m.numer()) && pow2(m.denom());
+  }
+  // A power of two whose reciprocal is a normal double too.
+  static bool representable(const GiNaC::numeric& c) {
+    const GiNaC::numeric m = GiNaC::abs(c), big = GiNaC::numeric(2).power(1000);
+    return m < big && m * big > 1;
+  }
+  // The constant c of a node c·y, c a power of two (the product keeps its constant first).
+  const Const* scaling(int i) const {
+    if (nodes_[i].kind != Kind::operation || nodes_[i].op != Op::mul) return nullptr;
+    const Const* c = exact(nodes_[i].a);
+    return c && power_of_two(c->exact) ? c : nullptr;
   }
   static bool is(const Const* c, int k) { return c->exact.is_equal(GiNaC::numeric(k)); }
   const Const* exact(int i) const {
