@@ -178,6 +178,53 @@ TEST_CASE("affine_newton_solve: newton_solve's iterates, one factorisation, two 
   }
 }
 
+namespace {
+// SmallSystemSolve against Eigen's LU with partial pivoting on an n × n system that needs row
+// interchanges (its rows reversed from a diagonally dominant matrix). The criterion: the two
+// solutions agree to 64 n ε κ(A) |x|, κ the 2-norm condition number.
+template <int n>
+void check_small_solve() {
+  CAPTURE(n);
+  Mat<double, n> A;
+  Vec<double, n> b;
+  for (int i = 0; i < n; ++i) {
+    b(i) = std::sin(1.0 + i);
+    for (int j = 0; j < n; ++j) A(n - 1 - i, j) = (i == j ? n + 1.0 : 0.0) + std::cos(3.0 * i + j);
+  }
+  const Vec<double, n> reference = A.partialPivLu().solve(b);
+  const Vec<double, n> x = SmallSystemSolve::factor(A).solve(b);
+  const Eigen::JacobiSVD<Eigen::MatrixXd> svd{Eigen::MatrixXd(A)};
+  const double kappa = svd.singularValues()(0) / svd.singularValues()(n - 1);
+  CHECK((x - reference).template lpNorm<Eigen::Infinity>() <=
+        64 * n * kEps * kappa * reference.template lpNorm<Eigen::Infinity>());
+  // A deliberately wrong input: a singular matrix (two equal rows) is a typed failure of
+  // Newton's method, never an update.
+  Mat<double, n> S = A;
+  if (n > 1)
+    S.row(n - 1) = S.row(0);
+  else
+    S(0, 0) = 0.0;
+  Vec<double, n> y = Vec<double, n>::Zero();
+  auto fj = [&](const Vec<double, n>& v, Vec<double, n>& F, Mat<double, n>& J) {
+    F = S * v - b;
+    J = S;
+  };
+  CHECK_THROWS_AS((newton_solve<n, decltype(fj)&, double, SmallSystemSolve>(y, fj, {})),
+                  SolveError);
+}
+}  // namespace
+
+TEST_CASE("SmallSystemSolve: Eigen's LU solution to round-off for n = 1…8; singular is typed") {
+  check_small_solve<1>();
+  check_small_solve<2>();
+  check_small_solve<3>();
+  check_small_solve<4>();
+  check_small_solve<5>();
+  check_small_solve<6>();
+  check_small_solve<7>();
+  check_small_solve<8>();
+}
+
 TEST_CASE("TrajectoryRecorder: header, every K-th row, first and last always") {
   std::ostringstream out;
   TrajectoryRecorder rec(out, {"step", "x"}, 3);

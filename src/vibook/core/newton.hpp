@@ -4,6 +4,7 @@
 #pragma once
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <string>
 #include <type_traits>
@@ -47,6 +48,96 @@ bool update_is_small(const Vec<T, N>& x, const Vec<T, N>& dx, const Vec<T, N>& r
   return true;
 }
 
+// How a Newton step solves J dx = F: the default factors J by LU with partial pivoting.
+struct PivotedLu {
+  template <class M>
+  static auto factor(const M& J) {
+    return J.partialPivLu();
+  }
+};
+}  // namespace newton_detail
+
+/// The Newton linear solve for small fixed-size systems, where Eigen's general LU costs more
+/// than the rest of a compiled discrete Lagrangian's or a Lobatto tableau's step (benchmarks
+/// in tests/bench):
+/// - n = 1…4: Eigen's closed-form inverse (cofactors), J⁻¹F a matrix–vector product. Its error
+///   grows with the condition number of J as an LU's does, but it is not backward stable;
+///   Newton's iteration corrects either (an inexact inverse only slows the contraction).
+/// - n = 5…8: LU with partial pivoting (the pivot the largest entry of its column, rows
+///   interchanged), the algorithm of Eigen's PartialPivLU written out for the fixed n so that
+///   the compiler unrolls it, without Eigen's blocked and stride-generic machinery. Each pivot
+///   is inverted once and multiplied by (a quotient is the slow operation on the step's
+///   critical path), so the round-off differs from Eigen's by that and by the order of a few
+///   sums.
+/// - other sizes and Eigen::Dynamic: Eigen's PartialPivLU.
+/// A singular J gives a non-finite update, reported as a singular Jacobian as for Eigen's LU.
+struct SmallSystemSolve {
+  template <class M>
+  struct Inverse {
+    M inverse;
+    template <class V>
+    V solve(const V& F) const {
+      return inverse * F;
+    }
+  };
+  template <class M>
+  class Lu {
+   public:
+    static constexpr int n = M::RowsAtCompileTime;
+    explicit Lu(const M& J) : lu_(J) {
+      using std::abs;
+      using T = typename M::Scalar;
+      for (int k = 0; k < n; ++k) {
+        int p = k;
+        T largest = abs(lu_(k, k));
+        for (int i = k + 1; i < n; ++i)
+          if (abs(lu_(i, k)) > largest) {
+            largest = abs(lu_(i, k));
+            p = i;
+          }
+        perm_[k] = p;
+        if (p != k)
+          for (int j = 0; j < n; ++j) std::swap(lu_(k, j), lu_(p, j));
+        const T inverse = T(1) / lu_(k, k);
+        inverse_pivot_[k] = inverse;
+        for (int i = k + 1; i < n; ++i) {
+          const T l = lu_(i, k) * inverse;
+          lu_(i, k) = l;
+          for (int j = k + 1; j < n; ++j) lu_(i, j) -= l * lu_(k, j);
+        }
+      }
+    }
+    template <class V>
+    V solve(const V& F) const {
+      V x = F;
+      for (int k = 0; k < n; ++k)
+        if (perm_[k] != k) std::swap(x(k), x(perm_[k]));
+      for (int i = 1; i < n; ++i)
+        for (int j = 0; j < i; ++j) x(i) -= lu_(i, j) * x(j);
+      for (int i = n - 1; i >= 0; --i) {
+        for (int j = i + 1; j < n; ++j) x(i) -= lu_(i, j) * x(j);
+        x(i) *= inverse_pivot_[i];
+      }
+      return x;
+    }
+
+   private:
+    M lu_;
+    std::array<typename M::Scalar, std::size_t(n)> inverse_pivot_{};
+    std::array<int, std::size_t(n)> perm_{};
+  };
+  template <class M>
+  static auto factor(const M& J) {
+    if constexpr (M::RowsAtCompileTime >= 1 && M::RowsAtCompileTime <= 4)
+      return Inverse<M>{M(J.inverse())};
+    else if constexpr (M::RowsAtCompileTime >= 5 && M::RowsAtCompileTime <= 8)
+      return Lu<M>(J);
+    else
+      return J.partialPivLu();
+  }
+};
+
+namespace newton_detail {
 [[gnu::noinline, gnu::cold]] inline SolveError singular_jacobian(const char* what,
                                                                  const SolveReport& rep) {
   return SolveError(std::string(what) + ": singular Jacobian (residual " +
@@ -71,8 +162,9 @@ bool update_is_small(const Vec<T, N>& x, const Vec<T, N>& dx, const Vec<T, N>& r
 /// Jacobian J at x. Returns the report; x holds the solution. Throws SolveError (with the
 /// report) when the iteration does not converge within max_iterations, when the Jacobian is
 /// singular, or when a non-finite value appears. `what` names the solve in the message.
-/// N may be Eigen::Dynamic (F and J are then given x's size before fj fills them).
-template <int N, class FJ, class T = double>
+/// N may be Eigen::Dynamic (F and J are then given x's size before fj fills them). `Linear`
+/// solves J dx = F: Eigen's LU with partial pivoting by default, or SmallSystemSolve.
+template <int N, class FJ, class T = double, class Linear = newton_detail::PivotedLu>
 SolveReport newton_solve(Vec<T, N>& x, FJ&& fj, const NewtonOptions& opt,
                          const char* what = "Newton solve", const Vec<T, N>* reference = nullptr) {
   const Vec<T, N> ref = reference ? *reference : x;
@@ -98,7 +190,7 @@ SolveReport newton_solve(Vec<T, N>& x, FJ&& fj, const NewtonOptions& opt,
       rep.converged = true;
       return rep;
     }
-    const auto lu = J.partialPivLu();
+    const auto lu = Linear::factor(J);
     const Vec<T, N> dx = lu.solve(F);
     if (!std::isfinite(to_double(T(dx.template lpNorm<Eigen::Infinity>()))))
       throw newton_detail::singular_jacobian(what, rep);
@@ -118,14 +210,14 @@ SolveReport newton_solve(Vec<T, N>& x, FJ&& fj, const NewtonOptions& opt,
 /// discrete Euler–Lagrange equation of a discrete Lagrangian whose D2 D1 L_d is free of
 /// q_(k+1), the trapezoidal rule's among them). `fj(x, F, J, with_jacobian)` as for
 /// newton_solve; J is asked for once and factored once, and every later evaluation is of F
-/// alone. The iterates are newton_solve's to the bit (its Jacobian would be the same matrix,
-/// factored the same way), with the same stopping rule and typed failures; what is saved is
-/// the evaluation newton_solve spends after its last update to report the residual there.
-/// Here, as in simplified_newton_solve, the residual reported is |F| at the last evaluation,
-/// before the last update (an update that passed the stopping rule). For an affine F the
-/// first update lands on the solution to round-off, so a step costs two evaluations of F and
+/// alone. The iterates are newton_solve's to the bit for the same `Linear` (its Jacobian
+/// would be the same matrix, factored the same way), with the same stopping rule and typed
+/// failures; what is saved is the evaluation newton_solve spends after its last update to report
+/// the residual there. Here, as in simplified_newton_solve, the residual reported is |F| at the
+/// last evaluation, before the last update (an update that passed the stopping rule). For an affine
+/// F the first update lands on the solution to round-off, so a step costs two evaluations of F and
 /// one factorisation, where newton_solve needs three and two.
-template <int N, class FJ, class T = double>
+template <int N, class FJ, class T = double, class Linear = newton_detail::PivotedLu>
 SolveReport affine_newton_solve(Vec<T, N>& x, FJ&& fj, const NewtonOptions& opt,
                                 const char* what = "Newton solve",
                                 const Vec<T, N>* reference = nullptr) {
@@ -139,7 +231,7 @@ SolveReport affine_newton_solve(Vec<T, N>& x, FJ&& fj, const NewtonOptions& opt,
   }
   const T step_rel(opt.step_rel), step_abs(opt.step_abs);
   fj(x, F, J, true);
-  const auto lu = J.partialPivLu();
+  const auto lu = Linear::factor(J);
   for (rep.iterations = 1; rep.iterations <= opt.max_iterations; ++rep.iterations) {
     rep.residual = to_double(T(F.template lpNorm<Eigen::Infinity>()));
     if (!std::isfinite(rep.residual)) break;

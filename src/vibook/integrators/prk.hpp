@@ -116,7 +116,8 @@ class PartitionedRkMethod {
     NewtonOptions opt = options_;
     opt.step_abs = std::max(opt.step_abs, 4 * std::numeric_limits<double>::epsilon() *
                                               std::max(1.0, p0.template lpNorm<Eigen::Infinity>()));
-    const SolveReport rep = newton_solve<U>(w, fj, opt, "partitioned Runge-Kutta stages");
+    const SolveReport rep = newton_solve<U, decltype(fj)&, double, SmallSystemSolve>(
+        w, fj, opt, "partitioned Runge-Kutta stages");
     PerStage<Vec<double, N>> g = per_stage<Vec<double, N>>(), Pst = per_stage<Vec<double, N>>();
     double action = 0;
     for (int k = 0; k < ns; ++k)

@@ -68,8 +68,11 @@ class DelIntegrator {
     if constexpr (compiled) {
       // D2 D1 L_d free of q_(k+1) (the tape computes it once a step): the equation is affine
       // in q_(k+1), and Newton's iterates need one factorisation and two evaluations.
-      rep = Ld_.jacobian_constant() ? affine_newton_solve<N>(q1, fj, options_, what, &q0)
-                                    : newton_solve<N>(q1, fj, options_, what, &q0);
+      // Its systems are small and its steps cheap: J dx = F by SmallSystemSolve.
+      using Linear = SmallSystemSolve;
+      rep = Ld_.jacobian_constant()
+                ? affine_newton_solve<N, decltype(fj)&, double, Linear>(q1, fj, options_, what, &q0)
+                : newton_solve<N, decltype(fj)&, double, Linear>(q1, fj, options_, what, &q0);
     } else {
       rep = newton_solve<N>(q1, fj, options_, what, &q0);
     }
