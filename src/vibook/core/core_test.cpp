@@ -214,7 +214,7 @@ void check_small_solve() {
 }
 }  // namespace
 
-TEST_CASE("SmallSystemSolve: Eigen's LU solution to round-off for n = 1…8; singular is typed") {
+TEST_CASE("SmallSystemSolve: Eigen's LU solution to round-off for n = 1…8, singular is typed") {
   check_small_solve<1>();
   check_small_solve<2>();
   check_small_solve<3>();
