@@ -1,7 +1,7 @@
 /// \file method_study_impl.hpp
 /// \brief The parts of method_study.cpp that the typed route (method_typed.cpp) shares: the
-/// Galerkin one-step map of L = |v|²/2 − V(q) for a problem type with `potential<T>(q)`, and
-/// the report around the measurement. Internal: not installed.
+/// Galerkin one-step map of any Lagrangian L(q, v), or of L = |v|²/2 − V(q) for a problem type
+/// with `potential<T>(q)`, and the report around the measurement. Internal: not installed.
 #pragma once
 
 #include <functional>
@@ -28,26 +28,34 @@ auto mechanical_lagrangian(P prob) {
   };
 }
 
-// The one-step map (one instance per problem: the number of stages is the rule's, at run time,
-// as in GalerkinIntegrator<N, Eigen::Dynamic, L>); the rest of the report depends on the
-// problem only. With it, the step that also returns the step's discrete Lagrangian (the
-// variational order). `who` names the caller in the message for a number of stages outside
-// 1..5, the catalogue's range.
-template <class P>
-std::pair<Step, GeneratingStep> galerkin_step(const P& prob, const Quadrature& rule,
-                                              const char* who) {
+// The one-step map of the Galerkin integrator of the Lagrangian `lagrangian(q, v)` (a callable
+// templated on the scalar, its return type declared, as AutoDiff needs) with N degrees of
+// freedom (one instance per Lagrangian: the number of stages is the rule's, at run time, as in
+// GalerkinIntegrator<N, Eigen::Dynamic, L>); the rest of the report depends on the system only.
+// With it, the step that also returns the step's discrete Lagrangian (the variational order).
+// `who` names the caller in the message for a number of stages outside 1..5, the catalogue's
+// range.
+template <int N, class L>
+std::pair<Step, GeneratingStep> galerkin_step_of(const L& lagrangian, const Quadrature& rule,
+                                                 const char* who) {
   if (rule.c.empty() || rule.c.size() > 5)
     throw std::invalid_argument(std::string(who) + ": 1 to 5 stages");
-  constexpr int N = P::N;
-  using Integrator = GalerkinIntegrator<N, Eigen::Dynamic, decltype(mechanical_lagrangian(prob))>;
-  auto integrator = std::make_shared<Integrator>(mechanical_lagrangian(prob), rule);
-  auto generating = std::make_shared<Integrator>(mechanical_lagrangian(prob), rule);
+  using Integrator = GalerkinIntegrator<N, Eigen::Dynamic, L>;
+  auto integrator = std::make_shared<Integrator>(lagrangian, rule);
+  auto generating = std::make_shared<Integrator>(lagrangian, rule);
   return {naming_failures(
               [integrator](Eigen::VectorXd& z, double h) { step_qp<N>(*integrator, z, h); }, N),
           [generating](Eigen::VectorXd& z, double h) {
             step_qp<N>(*generating, z, h);
             return generating->action();
           }};
+}
+
+// The same for L = |v|²/2 − V(q), V the problem type's `potential<T>(q)`.
+template <class P>
+std::pair<Step, GeneratingStep> galerkin_step(const P& prob, const Quadrature& rule,
+                                              const char* who) {
+  return galerkin_step_of<P::N>(mechanical_lagrangian(prob), rule, who);
 }
 
 // The method's lines, then the measurement of map_study.hpp; N degrees of freedom.
