@@ -149,6 +149,9 @@ vibook_verify_tableau(verify-tableau-iiia.txt 5 wrong-lobatto3-iiia-only.json)
 vibook_verify_case(verify-method-lobatto3.txt 0 --method lobatto:3 --problem kepler)
 vibook_verify_case(verify-method-typed.txt 0 --method lobatto:3 --potential x^2/2+y^2/2+x^2*y-y^3/3
                    --q0 0.1,0.2 --p0 0.3,0.1)
+vibook_verify_case(verify-method-lagrangian.txt 0 --method gauss:2 --lagrangian
+                   "sqrt(1+q[2]^2)*v[1]^2/2 + v[2]^2/(2*sqrt(1+q[2]^2)) - q[1]^2/2 - q[2]^4/4"
+                   --q0 0.3,0.5 --p0 0.2,-0.1)
 # Every Galerkin method on Kepler and Henon-Heiles is the long study field-audit-galerkin (rows
 # A-GAUSS1 ... A-LOBATTO5 of the ledger), measured in step 2 when VIBOOK_LONG_STUDIES is set.
 

@@ -14,10 +14,11 @@ struct StudyOptions {
 };
 
 /// A catalogue route's own system instead of --problem (--method, --tableau): L = |v|²/2 − V(q)
-/// with V typed after --potential, 1 to 3 degrees of freedom (--dim fixes the number).
+/// with V typed after --potential, 1 to 3 degrees of freedom (--dim fixes the number); for
+/// --method also any L(q, v) typed after --lagrangian (which may call the V of --potential).
 struct TypedPotentialOptions {
-  std::string potential, dim;
-  bool potential_given = false;
+  std::string potential, dim, lagrangian;
+  bool potential_given = false, lagrangian_given = false;
 };
 
 }  // namespace vibook::cli

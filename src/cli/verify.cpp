@@ -190,16 +190,17 @@ int run(const VerifyOptions& o, const CLI::App& c) {
           "--stepper-timeout", "--adaptive", "--adaptive-steps"})
       if (c.count(opt) > 0)
         throw ArgumentError(opt, "does not apply to --method (see vibook verify --help)");
-    for (const char* opt : {"--lagrangian", "--hamiltonian"})
-      if (c.count(opt) > 0)
-        throw ArgumentError(opt,
-                            "does not apply to --method: its system is a --problem or "
-                            "L = |v|^2/2 - V(q) with V typed after --potential");
+    if (c.count("--hamiltonian") > 0)
+      throw ArgumentError("--hamiltonian",
+                          "does not apply to --method: a Galerkin method discretizes a "
+                          "Lagrangian; type it after --lagrangian (or V after --potential)");
     MethodOptions mo;
     set_study_options(mo, o, c);
     mo.method = o.method;
     mo.potential = o.potential;
     mo.potential_given = c.count("--potential") > 0;
+    mo.lagrangian = o.lagrangian;
+    mo.lagrangian_given = c.count("--lagrangian") > 0;
     mo.dim = o.dim;
     return run_method(mo);
   }
@@ -333,7 +334,8 @@ std::function<int()> add_verify_command(CLI::App& app) {
   c->add_option("--problem", o->problem,
                 "with --method, --tableau, --composition or a stepper: the nonlinear test "
                 "problem, kepler (default, eccentricity 0.5), pendulum or henon-heiles "
-                "(--method, --tableau and --composition ld take --potential instead)");
+                "(--method, --tableau and --composition ld take --potential instead, and "
+                "--method also --lagrangian)");
   c->add_option("--stepper-lib", o->stepper_lib,
                 "verify another library's one-step method as a black box: a shared library "
                 "with the C ABI of vibook/verify/stepper_abi.h (needs --expected-order; the "
@@ -349,7 +351,7 @@ std::function<int()> add_verify_command(CLI::App& app) {
                 "with --stepper-cmd: seconds to wait for one answer (default 60)");
   c->add_option("--lagrangian", o->lagrangian,
                 "the intended Lagrangian L(q, v) in q, v (q[1], v[2], …), V(...), grad(V)(...); "
-                "default v^2/2 - V(q)");
+                "default v^2/2 - V(q); with --method: the system the Galerkin method runs on");
   c->add_option("--hamiltonian", o->hamiltonian,
                 "the intended Hamiltonian H(q, p) instead, in q, p, V(...), grad(V)(...)");
   c->add_option("--potential", o->potential,

@@ -79,8 +79,8 @@ int run_composition(const CompositionOptions& o) {
   if (o.base == "ld") {
     if (!o.problem.empty())
       throw ArgumentError("--problem",
-                          "does not apply to --composition ld: the system is --potential or "
-                          "--hamiltonian");
+                          "does not apply to --composition ld: the system is --potential, "
+                          "--lagrangian or --hamiltonian");
     verify::CompositionSpec spec;
     check_coefficients(o, spec);
     return run_composition_ld(o, std::move(spec));

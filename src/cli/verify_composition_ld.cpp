@@ -5,7 +5,8 @@
 // so a '*' in the coefficients applies the true adjoint of the user's method. Whether the base
 // is symmetric (L_d* = L_d), which decides the order conditions, is computed from the
 // expression: symbolically by the engine, else at random points. The system is the one typed
-// (--potential or --hamiltonian), its reference Hamilton's equations in double-double.
+// (--potential, --hamiltonian, or --lagrangian through its Legendre transform), its reference
+// Hamilton's equations in double-double.
 #include <array>
 #include <cmath>
 #include <memory>
@@ -127,17 +128,23 @@ int run_n(const CompositionOptions& o, const verify::TypedDiscreteLagrangian& dl
     z0(i) = q0[static_cast<std::size_t>(i)];
     z0(N + i) = p0[static_cast<std::size_t>(i)];
   }
-  set_typed_system<N>(study, dl, z0);
-  const std::string system = o.hamiltonian.empty()
-                                 ? "H = |p|^2/2 + V(q), V = " + o.potential + " (--potential)"
-                                 : "H = " + o.hamiltonian + " (--hamiltonian)";
+  std::string line;
+  if (!o.lagrangian.empty()) {
+    // L typed: the reference and the energy from its Legendre transform (verify_map.hpp)
+    line = set_typed_lagrangian(study, dl, o.lagrangian, q0, p0);
+  } else {
+    set_typed_system<N>(study, dl, z0);
+    const std::string system = o.hamiltonian.empty()
+                                   ? "H = |p|^2/2 + V(q), V = " + o.potential + " (--potential)"
+                                   : "H = " + o.hamiltonian + " (--hamiltonian)";
+    line = fmt::format("{}, {} degree{} of freedom; q0 = {}, p0 = {}", system, N, N == 1 ? "" : "s",
+                       vec_text(q0), vec_text(p0));
+  }
   MapReport rep;
-  verify::measure_composition(spec, stage(tape, Ld), stage(adj, adjoint_ld),
-                              fmt::format("{}, {} degree{} of freedom; q0 = {}, p0 = {}", system, N,
-                                          N == 1 ? "" : "s", vec_text(q0), vec_text(p0)),
-                              study, rep);
+  verify::measure_composition(spec, stage(tape, Ld), stage(adj, adjoint_ld), line, study, rep);
   rep.js["system"] = {{"ld", o.ld},
                       {"potential", o.potential},
+                      {"lagrangian", o.lagrangian},
                       {"hamiltonian", o.hamiltonian},
                       {"symmetric", sym.symmetric},
                       {"symmetry", sym.how},
@@ -151,16 +158,18 @@ int run_n(const CompositionOptions& o, const verify::TypedDiscreteLagrangian& dl
 int run_composition_ld(const CompositionOptions& t, verify::CompositionSpec spec) {
   const CompositionOptions& o = t;
   if (t.ld.empty()) throw ArgumentError("--ld", "is required with --composition ld");
-  if (!t.lagrangian.empty())
-    throw ArgumentError("--lagrangian",
-                        "does not apply to --composition ld: the system is --potential (H = "
-                        "|p|^2/2 + V) or --hamiltonian");
-  if (t.potential.empty() && t.hamiltonian.empty())
+  if (!t.lagrangian.empty() && !t.hamiltonian.empty())
+    throw ArgumentError("--hamiltonian",
+                        "give the system once: --lagrangian or --hamiltonian, not both");
+  if (t.potential.empty() && t.hamiltonian.empty() && t.lagrangian.empty())
     throw ArgumentError("--potential",
-                        "is required with --composition ld (or --hamiltonian): the system the "
-                        "composition is measured on");
-  // The system in Hamiltonian form: its field is the reference's, H the energy.
-  const std::string hamiltonian = t.hamiltonian.empty() ? "p^2/2 + V(q)" : t.hamiltonian;
+                        "is required with --composition ld (or --lagrangian or --hamiltonian): "
+                        "the system the composition is measured on");
+  // The system: a Hamiltonian (typed, or p^2/2 + V), whose field is the reference's and H the
+  // energy; or a typed Lagrangian, through its Legendre transform (set_typed_lagrangian).
+  const std::string hamiltonian = !t.lagrangian.empty()   ? ""
+                                  : t.hamiltonian.empty() ? "p^2/2 + V(q)"
+                                                          : t.hamiltonian;
   int dim = 0;
   if (!t.dim.empty()) {
     dim = static_cast<int>(parse_integer("--dim", t.dim));
@@ -170,7 +179,7 @@ int run_composition_ld(const CompositionOptions& t, verify::CompositionSpec spec
   {
     std::lock_guard<std::mutex> lock(modified::ginac_mutex());
     dl = std::make_unique<verify::TypedDiscreteLagrangian>(
-        verify::TypedTexts{t.ld, t.potential, "", hamiltonian, dim});
+        verify::TypedTexts{t.ld, t.potential, t.lagrangian, hamiltonian, dim});
   }
   if (dl->dim() > 3)
     throw ArgumentError("--ld", fmt::format("is {}-dimensional; --composition ld runs in 1 to 3 "

@@ -1,8 +1,12 @@
 // The command's side of the measurements of a one-step map (verify_map.hpp).
 #include "verify_map.hpp"
 
+#include <algorithm>
+#include <cmath>
 #include <iostream>
 #include <mutex>
+#include <optional>
+#include <type_traits>
 
 #include <fmt/format.h>
 #include <fmt/ranges.h>
@@ -73,6 +77,157 @@ std::string set_typed_potential(MapStudy& s, const verify::TypedDiscreteLagrangi
       "H = |p|^2/2 + V(q), V = {} (--potential), {} degree{} of freedom; q0 = {}, "
       "p0 = {}",
       potential, n, n == 1 ? "" : "s", vec_text(q0), vec_text(p0));
+}
+
+std::unique_ptr<verify::TypedDiscreteLagrangian> check_typed_lagrangian(
+    const TypedPotentialOptions& t, const StudyOptions& o, const char* route,
+    std::vector<double>& q0, std::vector<double>& p0, MapStudy& s) {
+  if (t.lagrangian.empty()) throw ArgumentError("--lagrangian", "is empty");
+  if (!o.problem.empty())
+    throw ArgumentError("--lagrangian",
+                        "gives the system; --problem names a test problem: give one of them");
+  if (t.potential_given && t.potential.empty()) throw ArgumentError("--potential", "is empty");
+  int dim = 0;
+  if (!t.dim.empty()) {
+    dim = static_cast<int>(parse_integer("--dim", t.dim));
+    if (dim < 1 || dim > 3)
+      throw ArgumentError("--dim", fmt::format("must lie in 1..3 with {}", route));
+  }
+  std::unique_ptr<verify::TypedDiscreteLagrangian> sys;
+  {
+    std::lock_guard<std::mutex> lock(modified::ginac_mutex());
+    verify::TypedTexts texts{"", t.potential, t.lagrangian, "", dim};
+    texts.system_only = true;
+    sys = std::make_unique<verify::TypedDiscreteLagrangian>(texts);
+  }
+  if (sys->dim() > 3)
+    throw ArgumentError("--lagrangian", fmt::format("is {}-dimensional; {} runs in 1 to 3 "
+                                                    "dimensions",
+                                                    sys->dim(), route));
+  check_typed_initial_state(o, sys->dim(), q0, p0, s);
+  return sys;
+}
+
+namespace {
+
+// The Legendre map of the typed L at (q, p) in T (double-double for the reference, double for
+// the energy): v with ∂L/∂v(q, v) = p, and there L and ∂L/∂q. Newton's method from v = p on
+// the Hessian ∂²L/∂v², all from one nested AutoDiff evaluation of L in (q, v) per iteration
+// (one AutoDiff type per T: each type the tree is evaluated in is compiled anew); one
+// correction when L is quadratic in v. It stops when the correction is below
+// rel·max(1, |v|) (max norms; rel = 1e-30 in double-double, 1e-14 in double, where H's error
+// is of second order in v's since ∂H/∂v = p − ∂L/∂v = 0), keeping the point it was computed
+// at; nullopt when that does not happen in 60 iterations or a number leaves the finite ones
+// (L not regular there).
+template <int N, class T>
+struct LegendrePoint {
+  Vec<T, N> v, dLdq;
+  T L;
+};
+
+template <int N, class T>
+std::optional<LegendrePoint<N, T>> legendre(const verify::TypedDiscreteLagrangian& sys,
+                                            const Vec<T, N>& q, const Vec<T, N>& p) {
+  const double rel = std::is_same_v<T, double> ? 1e-14 : 1e-30;
+  Vec<T, 2 * N> w;
+  w << q, p;
+  for (int it = 0; it < 60; ++it) {
+    T value;
+    Vec<T, 2 * N> g;
+    Mat<T, 2 * N> H;
+    verify::value_gradient_hessian<2 * N, T>(
+        [&](const auto& x) {
+          using S = scalar_t<decltype(x)>;
+          const Vec<S, N> qs = x.template head<N>(), vs = x.template tail<N>();
+          return sys.lagrangian<N, S>(qs, vs);
+        },
+        w, value, g, H);
+    const Mat<T, N> M = H.template bottomRightCorner<N, N>();
+    const Vec<T, N> dv = M.partialPivLu().solve(Vec<T, N>(g.template tail<N>() - p));
+    double nd = 0, nv = 1;
+    bool finite = std::isfinite(to_double(value));
+    for (int i = 0; i < N; ++i) {
+      const double d = to_double(dv(i)), x = to_double(w(N + i));
+      finite = finite && std::isfinite(d) && std::isfinite(x);
+      nd = std::max(nd, std::abs(d));
+      nv = std::max(nv, std::abs(x));
+    }
+    if (!finite) return std::nullopt;
+    if (nd <= rel * nv)
+      return LegendrePoint<N, T>{w.template tail<N>(), g.template head<N>(), value};
+    w.template tail<N>() -= dv;
+  }
+  return std::nullopt;
+}
+
+template <int N, class T>
+LegendrePoint<N, T> legendre_or_throw(const verify::TypedDiscreteLagrangian& sys,
+                                      const Vec<T, N>& q, const Vec<T, N>& p) {
+  if (auto r = legendre<N, T>(sys, q, p)) return *r;
+  std::vector<double> qd, pd;
+  for (int i = 0; i < N; ++i) {
+    qd.push_back(to_double(q(i)));
+    pd.push_back(to_double(p(i)));
+  }
+  throw NumericalError(
+      "the Legendre map dL/dv(q, v) = p has no solution near v = p at q = " + vec_text(qd) +
+      ", p = " + vec_text(pd) + ": the Lagrangian is not regular there");
+}
+
+template <int N>
+void set_lagrangian_system(MapStudy& s, const verify::TypedDiscreteLagrangian& sys,
+                           const std::vector<double>& q0, const std::vector<double>& p0) {
+  Eigen::VectorXd z0(2 * N);
+  Vec<double, N> q, p;
+  for (int i = 0; i < N; ++i) {
+    z0(i) = q0[static_cast<std::size_t>(i)];
+    z0(N + i) = p0[static_cast<std::size_t>(i)];
+    q(i) = z0(i);
+    p(i) = z0(N + i);
+  }
+  if (!legendre<N, double>(sys, q, p))
+    throw ArgumentError("--lagrangian",
+                        "is not regular at the initial state: dL/dv(q0, v) = p0 has no solution "
+                        "near v = p0 (q0 = " +
+                            vec_text(q0) + ", p0 = " + vec_text(p0) + ")");
+  s.z0 = z0;
+  // q' = v, p' = ∂L/∂q(q, v)
+  s.field = [&sys](const std::vector<dd_real>& y) {
+    Vec<dd_real, N> qq, pp;
+    for (int i = 0; i < N; ++i) {
+      qq(i) = y[static_cast<std::size_t>(i)];
+      pp(i) = y[static_cast<std::size_t>(N + i)];
+    }
+    const LegendrePoint<N, dd_real> r = legendre_or_throw<N, dd_real>(sys, qq, pp);
+    std::vector<dd_real> f(2 * N);
+    for (int i = 0; i < N; ++i) {
+      f[static_cast<std::size_t>(i)] = r.v(i);
+      f[static_cast<std::size_t>(N + i)] = r.dLdq(i);
+    }
+    return f;
+  };
+  s.equations = "Hamilton's equations of H = p.v - L(q, v) (v from dL/dv = p by Newton)";
+  // H = p·v − L in double
+  s.H = [&sys](const Eigen::VectorXd& z) {
+    const Vec<double, N> qq = z.head<N>(), pp = z.tail<N>();
+    const LegendrePoint<N, double> r = legendre_or_throw<N, double>(sys, qq, pp);
+    return pp.dot(r.v) - r.L;
+  };
+}
+
+}  // namespace
+
+std::string set_typed_lagrangian(MapStudy& s, const verify::TypedDiscreteLagrangian& sys,
+                                 const std::string& lagrangian, const std::vector<double>& q0,
+                                 const std::vector<double>& p0) {
+  const int n = sys.dim();
+  if (n == 1) set_lagrangian_system<1>(s, sys, q0, p0);
+  if (n == 2) set_lagrangian_system<2>(s, sys, q0, p0);
+  if (n == 3) set_lagrangian_system<3>(s, sys, q0, p0);
+  return fmt::format(
+      "L = {} (--lagrangian), {} degree{} of freedom, energy H = p.v - L(q, v); q0 = {}, "
+      "p0 = {} (p = dL/dv)",
+      lagrangian, n, n == 1 ? "" : "s", vec_text(q0), vec_text(p0));
 }
 
 void MapReport::variational_order_not_derived(const std::string& reason) {

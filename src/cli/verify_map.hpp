@@ -159,6 +159,24 @@ std::unique_ptr<verify::TypedDiscreteLagrangian> check_typed_potential(
     const TypedPotentialOptions& t, const StudyOptions& o, const char* route,
     std::vector<double>& q0, std::vector<double>& p0, MapStudy& s);
 
+/// --lagrangian (with --potential for a V it calls, and --dim) of `vibook verify --method`,
+/// checked before any work: the typed L(q, v) in 1 to 3 dimensions, then --q0, --p0 (default
+/// 0.1 each; p0 is the canonical momentum ∂L/∂v) and --t-end. An ArgumentError names
+/// --lagrangian, --potential, --problem, --dim, --q0, --p0 or --t-end.
+std::unique_ptr<verify::TypedDiscreteLagrangian> check_typed_lagrangian(
+    const TypedPotentialOptions& t, const StudyOptions& o, const char* route,
+    std::vector<double>& q0, std::vector<double>& p0, MapStudy& s);
+
+/// The study's system from a typed Lagrangian: the reference solves Hamilton's equations of its
+/// Legendre transform H(q, p) = p·v − L(q, v) in double-double, v from ∂L/∂v(q, v) = p by
+/// Newton's method at every evaluation (q' = v, p' = ∂L/∂q(q, v)); the energy is the same H in
+/// double. Returns the report's line naming the system. An ArgumentError naming --lagrangian
+/// when the Legendre map has no solution at (q0, p0) (L not regular there), before any work;
+/// later failures of the map are NumericalErrors. `sys` must outlive the study.
+std::string set_typed_lagrangian(MapStudy& s, const verify::TypedDiscreteLagrangian& sys,
+                                 const std::string& lagrangian, const std::vector<double>& q0,
+                                 const std::vector<double>& p0);
+
 /// The study's system from a typed potential (Hamilton's equations of |p|²/2 + V, the energy,
 /// z0); returns the report's line naming it. `sys` must outlive the study.
 std::string set_typed_potential(MapStudy& s, const verify::TypedDiscreteLagrangian& sys,

@@ -1,7 +1,8 @@
 // `vibook verify --method gauss:S|lobatto:S` (issue #25): the arguments checked before any work,
 // then the measurement of vibook/verify/method_study.hpp (the Galerkin variational integrator
-// with S stages on a nonlinear test problem, or on L = |v|²/2 − V(q) with the user's V typed
-// after --potential; documented order 2S for Gauss, 2S − 2 for Lobatto) printed.
+// with S stages on a nonlinear test problem, on the user's L(q, v) typed after --lagrangian, or
+// on L = |v|²/2 − V(q) with the user's V typed after --potential; documented order 2S for
+// Gauss, 2S − 2 for Lobatto) printed.
 #include "verify_method.hpp"
 
 #include <memory>
@@ -26,7 +27,8 @@ constexpr int kMaxGauss = 4, kMaxLobatto = 5;
 struct Plan {
   verify::MethodSpec spec;
   const TestProblem* problem = nullptr;
-  // --potential: the typed system (H = |p|^2/2 + V for the reference and the energy)
+  // --potential or --lagrangian: the typed system (H = |p|^2/2 + V, or L's Legendre transform,
+  // for the reference and the energy)
   std::unique_ptr<verify::TypedDiscreteLagrangian> sys;
   std::vector<double> q0, p0;
   MapStudy study;  // the measurement settings
@@ -51,10 +53,13 @@ Plan check(const MethodOptions& o) {
   p.spec.name = o.method;
   p.spec.stages = static_cast<int>(s);
   p.spec.rule = quadrature_rule(family, p.spec.stages);
-  if (o.potential_given) {
+  if (o.lagrangian_given) {
+    p.sys = check_typed_lagrangian(o, o, "--method", p.q0, p.p0, p.study);
+  } else if (o.potential_given) {
     p.sys = check_typed_potential(o, o, "--method", p.q0, p.p0, p.study);
   } else {
-    if (!o.dim.empty()) throw ArgumentError("--dim", "applies to --method with --potential only");
+    if (!o.dim.empty())
+      throw ArgumentError("--dim", "applies to --method with --potential or --lagrangian only");
     p.problem = &find_test_problem(o.problem);
     check_initial_state(o, *p.problem, p.q0, p.p0, p.study);
   }
@@ -80,7 +85,9 @@ int run_method(const MethodOptions& o) {
     verify::measure_method(p.spec, *p.problem, p.q0, p.p0, p.study, rep);
     return rep.finish(o.json_given, o.json_out);
   }
-  const std::string system = set_typed_potential(p.study, *p.sys, o.potential, p.q0, p.p0);
+  const std::string system = o.lagrangian_given
+                                 ? set_typed_lagrangian(p.study, *p.sys, o.lagrangian, p.q0, p.p0)
+                                 : set_typed_potential(p.study, *p.sys, o.potential, p.q0, p.p0);
   verify::measure_method_typed(p.spec, *p.sys, p.q0, p.p0, p.study, system, rep);
   return rep.finish(o.json_given, o.json_out);
 }

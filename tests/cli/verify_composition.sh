@@ -42,7 +42,7 @@ case_ doubled 5 "order conditions,order" 'weight 1 fails' \
   -- --composition sv --coefficients 1,1 --expected-order 2
 
 # --composition ld: compositions of the user's own typed discrete Lagrangian, on the system of
-# --potential. The trapezoidal L_d (Störmer–Verlet) is symmetric (the engine shows it), so
+# --potential (or --lagrangian, below). The trapezoidal L_d (Störmer–Verlet) is symmetric (the engine shows it), so
 # Yoshida's triple jump makes it order 4; typed symplectic Euler is not, and Ruth's third-order
 # method needs its adjoint -L_d(q1, q0, -h) where the coefficients say '*'.
 TRAP='h*(((q1-q0)/h)^2/2 - (V(q0)+V(q1))/2)'
@@ -70,12 +70,25 @@ case_ ld-first-order-base 5 "order conditions,order,energy" 'order 1 by the cond
 "$V" verify --composition sv --problem pendulum --q0 1 --p0 0.5 --steps 4096 \
   --coefficients yoshida4 --json-out "$tmp/sv.json" >/dev/null 2>&1
 same_errors "ld = sv" "$tmp/ld.json" "$tmp/sv.json" 20
+# On a system typed as a Lagrangian (--lagrangian; the reference and the energy from its Legendre
+# transform): the midpoint L_d of a position-dependent mass, composed by Yoshida's triple jump,
+# has order 4. The same L_d measured against a Lagrangian without the mass (a wrong system) fails.
+MASS='(1+q^2)*v^2/2 - q^4/4'
+MID='h*((1+((q0+q1)/2)^2)*((q1-q0)/h)^2/2 - ((q0+q1)/2)^4/4)'
+case_ ld-lagrangian 0 "" '\(--lagrangian\)' 'order 4 by the conditions' '^verdict +PASS' \
+  -- --composition ld --ld "$MID" --lagrangian "$MASS" --q0 0.5 --p0 0.3 --steps 4096 \
+  --coefficients yoshida4
+case_ ld-lagrangian-wrong-system 5 "order,energy" 'expected 4 .*: NO' \
+  -- --composition ld --ld "$MID" --lagrangian 'v^2/2 - q^4/4' --q0 0.5 --p0 0.3 --steps 4096 \
+  --coefficients yoshida4
 arg ld-missing --ld --composition ld --coefficients yoshida4 --potential x^2
 arg ld-no-system --potential --composition ld --coefficients yoshida4 --ld "$TRAP"
 arg ld-problem --problem --composition ld --coefficients yoshida4 --ld "$TRAP" --potential x^2 \
   --problem kepler
-arg ld-lagrangian --lagrangian --composition ld --coefficients yoshida4 --ld "$TRAP" \
-  --potential x^2 --lagrangian 'v^2/2-V(q)'
+arg ld-lagrangian-and-hamiltonian --hamiltonian --composition ld --coefficients yoshida4 \
+  --ld "$TRAP" --lagrangian 'v^2/2-q^2/2' --hamiltonian 'p^2/2+q^2/2'
+arg ld-lagrangian-singular --lagrangian --composition ld --coefficients yoshida4 --ld "$TRAP" \
+  --potential x^2 --lagrangian 'q*v-V(q)'
 arg ld-dim --dim --composition ld --coefficients yoshida4 --ld "$TRAP" --potential x^2 --dim 4
 
 # Bad arguments (arg, verify_case.sh): exit 2, one line naming the argument, nothing on stdout.

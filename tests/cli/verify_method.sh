@@ -1,8 +1,9 @@
 #!/usr/bin/env bash
 # `vibook verify --method gauss:S|lobatto:S`: the Galerkin variational integrators reach their
 # documented orders (2S for Gauss collocation, 2S - 2 for Lobatto IIIA-IIIB) on nonlinear
-# problems and on a potential typed after --potential, are symplectic and time-reversible; a
-# wrong claim about one fails; bad arguments exit 2 before any work. Usage: verify_method.sh path/to/vibook
+# problems, on a potential typed after --potential and on a Lagrangian typed after
+# --lagrangian, are symplectic and time-reversible; a wrong claim about one fails; bad
+# arguments exit 2 before any work. Usage: verify_method.sh path/to/vibook
 set -u
 V=$1
 # shellcheck source=verify_case.sh
@@ -37,6 +38,28 @@ case_ typed-gauss2-as-6 5 "order,energy" 'expected 6 .*: NO' \
   --json-out "$tmp/builtin.json" >/dev/null 2>&1
 same_errors "typed = built-in pendulum" "$tmp/typed.json" "$tmp/builtin.json" 5
 
+# On the user's own Lagrangian (--lagrangian): the Galerkin method of the typed L(q, v), the
+# reference and the energy from its Legendre transform H = p.v - L (v from dL/dv = p by Newton).
+# The pendulum typed as a Lagrangian is the built-in one: the same errors, as above; a wrong
+# Legendre transform (a sign, a factor) would give another reference and other errors.
+"$V" verify --method gauss:2 --lagrangian 'v^2/2+cos(q[1])' --q0 1 --p0 0.5 --steps 4096 \
+  --json-out "$tmp/lagr.json" >/dev/null 2>&1
+same_errors "typed Lagrangian = built-in pendulum" "$tmp/lagr.json" "$tmp/builtin.json" 5
+# A position-dependent mass (the metric of the non-separable example, with a potential):
+# no H = |p|^2/2 + V describes it. Order 4 for gauss:2 and lobatto:3, variational order 4,
+# symplectic, reversible, the Legendre energy bounded.
+metric='sqrt(1+q[2]^2)*v[1]^2/2 + v[2]^2/(2*sqrt(1+q[2]^2)) - q[1]^2/2 - q[2]^4/4'
+case_ lagrangian-gauss2 0 "" 'order +(3\.9|4\.0)[0-9]* over .*: yes' '\(--lagrangian\)' \
+  'energy H = p.v - L' 'symplectic .*: yes' 'time-reversible .*: yes' \
+  -- --method gauss:2 --lagrangian "$metric" --q0 0.3,0.5 --p0 0.2,-0.1 --steps 4096
+case_ lagrangian-lobatto3 0 "" 'order +(3\.9|4\.0)[0-9]* over .*: yes' \
+  '^variational order +(3\.[89]|4\.[01])[0-9] \(measured.*expected 4: agrees' \
+  -- --method lobatto:3 --lagrangian "$metric" --q0 0.3,0.5 --p0 0.2,-0.1 --steps 4096
+# the wrong claim fails on it too
+case_ lagrangian-gauss2-as-6 5 "order,energy" 'expected 6 .*: NO' \
+  -- --method gauss:2 --lagrangian "$metric" --q0 0.3,0.5 --p0 0.2,-0.1 --steps 4096 \
+  --expected-order 6
+
 arg no-stages --method --method gauss
 arg family --method --method radau:3
 arg too-many --method --method gauss:9
@@ -53,8 +76,14 @@ arg typed-dim-too-few --dim --method gauss:2 --potential 'x^2+y^2' --dim 1
 arg dim-without-potential --dim --method gauss:2 --dim 2
 arg typed-empty --potential --method gauss:2 --potential ''
 arg typed-q0 --q0 --method gauss:2 --potential 'x^2+y^2' --q0 1
-arg typed-lagrangian --lagrangian --method gauss:2 --potential x^2 --lagrangian 'v^2/2-V(q)'
 arg typed-hamiltonian --hamiltonian --method gauss:2 --hamiltonian 'p^2/2+q^2'
+arg lagrangian-and-problem --lagrangian --method gauss:2 --lagrangian 'v^2/2' --problem pendulum
+arg lagrangian-empty --lagrangian --method gauss:2 --lagrangian ''
+arg lagrangian-no-v --lagrangian --method gauss:2 --lagrangian 'q^2'
+arg lagrangian-dim --dim --method gauss:2 --lagrangian 'v^2/2' --dim 4
+# dL/dv = q: not regular, refused before any work
+arg lagrangian-singular --lagrangian --method gauss:2 --lagrangian 'q*v - q^2/2'
+arg lagrangian-p0 --p0 --method gauss:2 --lagrangian 'v[1]^2/2+v[2]^2/2' --p0 1
 
 echo "verify_method: $pass passed, $fail failed"
 [ "$fail" = 0 ]

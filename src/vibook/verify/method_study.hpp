@@ -33,12 +33,12 @@ void measure_method(const MethodSpec& spec, const TestProblem& problem,
 
 class TypedDiscreteLagrangian;  // verify/expression.hpp
 
-/// The same measurement on the user's own potential (`vibook verify --method NAME:S
-/// --potential EXPR`): the Galerkin integrator of L = |v|²/2 − V(q) with V the typed potential
-/// of `sys` (1 to 3 degrees of freedom, sys.dim()), evaluated on its expression tree in nested
-/// AutoDiff. `study` carries the system already (its reference field, H and z0, from the same
-/// expression); `system_line` names it in the report. std::invalid_argument for a number of
-/// stages outside 1..5 or a dimension outside 1..3.
+/// The same measurement on the user's own system: the Galerkin integrator of the Lagrangian
+/// of `sys` (1 to 3 degrees of freedom, sys.dim()) — L(q, v) as typed (`vibook verify --method
+/// NAME:S --lagrangian EXPR`), or L = |v|²/2 − V(q) with V typed (`--potential EXPR`) —
+/// evaluated on its expression tree in nested AutoDiff. `study` carries the system already (its
+/// reference field, H and z0, from the same expression); `system_line` names it in the report.
+/// std::invalid_argument for a number of stages outside 1..5 or a dimension outside 1..3.
 void measure_method_typed(const MethodSpec& spec, const TypedDiscreteLagrangian& sys,
                           const std::vector<double>& q0, const std::vector<double>& p0,
                           const MapStudy& study, const std::string& system_line,

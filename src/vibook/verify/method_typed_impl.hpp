@@ -5,6 +5,7 @@
 #pragma once
 
 #include <stdexcept>
+#include <type_traits>
 
 #include "vibook/verify/expression.hpp"
 #include "vibook/verify/method_study.hpp"
@@ -16,8 +17,22 @@ namespace vibook::verify::method_detail {
 template <int N>
 void measure_typed_dim(const MethodSpec& spec, const TypedDiscreteLagrangian& sys,
                        const StudySystem& system, const MapStudy& study, MapMeasurement& rep) {
-  const TypedPotential<N> prob{&sys};
-  measure(spec, N, system, study, rep, galerkin_step(prob, spec.rule, "measure_method_typed"));
+  // --potential gives the system as H = |p|²/2 + V(q) (check_typed_potential), --lagrangian as
+  // L(q, v) typed: the Galerkin method of L = |v|²/2 − V(q) for the first.
+  const bool typed_lagrangian = !sys.default_system() && !sys.has_hamiltonian();
+  if (!typed_lagrangian) {
+    const TypedPotential<N> prob{&sys};
+    measure(spec, N, system, study, rep, galerkin_step(prob, spec.rule, "measure_method_typed"));
+    return;
+  }
+  // L(q, v) typed after --lagrangian, on the tree in the integrator's nested AutoDiff numbers
+  const TypedDiscreteLagrangian* s = &sys;
+  const auto lagrangian = [s](const auto& q, const auto& v) -> std::remove_cvref_t<decltype(q(0))> {
+    using T = std::remove_cvref_t<decltype(q(0))>;
+    return s->template lagrangian<N, T>(Vec<T, N>(q), Vec<T, N>(v));
+  };
+  measure(spec, N, system, study, rep,
+          galerkin_step_of<N>(lagrangian, spec.rule, "measure_method_typed"));
 }
 
 extern template void measure_typed_dim<1>(const MethodSpec&, const TypedDiscreteLagrangian&,
