@@ -144,6 +144,8 @@ function(vibook_verify_tableau out want file)
 endfunction()
 vibook_verify_tableau(verify-tableau-lobatto3.txt 0 lobatto3-iiia-iiib.json)
 vibook_verify_tableau(verify-tableau-iiia.txt 5 wrong-lobatto3-iiia-only.json)
+vibook_verify_tableau(verify-tableau-hamiltonian.txt 0 lobatto3-iiia-iiib.json --hamiltonian
+                      "p^2/(2*(1+q^2)) + q^2/2 + q^4/4" --q0 0.5 --p0 0.3)
 
 # Galerkin variational integrators (the chapter's section "Galerkin variational integrators").
 vibook_verify_case(verify-method-lobatto3.txt 0 --method lobatto:3 --problem kepler)

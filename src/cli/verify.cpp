@@ -167,15 +167,17 @@ int run(const VerifyOptions& o, const CLI::App& c) {
                             "--stepper-arg", "--stepper-timeout", "--adaptive", "--adaptive-steps"})
       if (c.count(opt) > 0)
         throw ArgumentError(opt, "does not apply to --tableau (see vibook verify --help)");
-    for (const char* opt : {"--lagrangian", "--hamiltonian"})
-      if (c.count(opt) > 0)
-        throw ArgumentError(opt,
-                            "does not apply to --tableau: its system is a --problem or "
-                            "H = |p|^2/2 + V(q) with V typed after --potential");
+    if (c.count("--lagrangian") > 0)
+      throw ArgumentError("--lagrangian",
+                          "does not apply to --tableau: a partitioned Runge-Kutta method runs on "
+                          "Hamilton's equations; type H after --hamiltonian (or V after "
+                          "--potential)");
     TableauOptions to;
     set_study_options(to, o, c);
     to.potential = o.potential;
     to.potential_given = c.count("--potential") > 0;
+    to.hamiltonian = o.hamiltonian;
+    to.hamiltonian_given = c.count("--hamiltonian") > 0;
     to.dim = o.dim;
     to.file = o.tableau;
     to.symmetric = o.symmetric;
@@ -334,8 +336,8 @@ std::function<int()> add_verify_command(CLI::App& app) {
   c->add_option("--problem", o->problem,
                 "with --method, --tableau, --composition or a stepper: the nonlinear test "
                 "problem, kepler (default, eccentricity 0.5), pendulum or henon-heiles "
-                "(--method, --tableau and --composition ld take --potential instead, and "
-                "--method also --lagrangian)");
+                "(--method, --tableau and --composition ld take --potential instead; --method "
+                "also --lagrangian, --tableau also --hamiltonian)");
   c->add_option("--stepper-lib", o->stepper_lib,
                 "verify another library's one-step method as a black box: a shared library "
                 "with the C ABI of vibook/verify/stepper_abi.h (needs --expected-order; the "
@@ -353,7 +355,8 @@ std::function<int()> add_verify_command(CLI::App& app) {
                 "the intended Lagrangian L(q, v) in q, v (q[1], v[2], …), V(...), grad(V)(...); "
                 "default v^2/2 - V(q); with --method: the system the Galerkin method runs on");
   c->add_option("--hamiltonian", o->hamiltonian,
-                "the intended Hamiltonian H(q, p) instead, in q, p, V(...), grad(V)(...)");
+                "the intended Hamiltonian H(q, p) instead, in q, p, V(...), grad(V)(...); with "
+                "--tableau: the system the method runs on");
   c->add_option("--potential", o->potential,
                 "V in x, y, z (or q, q[1], …), e.g. 'x^2/2+y^2/2+x^2*y-y^3/3' (a leading minus: "
                 "--potential='-cos(x)'); required unless --lagrangian or --hamiltonian is given; "

@@ -108,6 +108,46 @@ std::unique_ptr<verify::TypedDiscreteLagrangian> check_typed_lagrangian(
   return sys;
 }
 
+std::unique_ptr<verify::TypedDiscreteLagrangian> check_typed_hamiltonian(
+    const TypedPotentialOptions& t, const std::string& hamiltonian, const StudyOptions& o,
+    const char* route, std::vector<double>& q0, std::vector<double>& p0, MapStudy& s) {
+  if (hamiltonian.empty()) throw ArgumentError("--hamiltonian", "is empty");
+  if (!o.problem.empty())
+    throw ArgumentError("--hamiltonian",
+                        "gives the system; --problem names a test problem: give one of them");
+  if (t.potential_given && t.potential.empty()) throw ArgumentError("--potential", "is empty");
+  int dim = 0;
+  if (!t.dim.empty()) {
+    dim = static_cast<int>(parse_integer("--dim", t.dim));
+    if (dim < 1 || dim > 3)
+      throw ArgumentError("--dim", fmt::format("must lie in 1..3 with {}", route));
+  }
+  std::unique_ptr<verify::TypedDiscreteLagrangian> sys;
+  {
+    std::lock_guard<std::mutex> lock(modified::ginac_mutex());
+    verify::TypedTexts texts{"", t.potential, "", hamiltonian, dim};
+    texts.system_only = true;
+    sys = std::make_unique<verify::TypedDiscreteLagrangian>(texts);
+  }
+  if (sys->dim() > 3)
+    throw ArgumentError("--hamiltonian", fmt::format("is {}-dimensional; {} runs in 1 to 3 "
+                                                     "dimensions",
+                                                     sys->dim(), route));
+  check_typed_initial_state(o, sys->dim(), q0, p0, s);
+  return sys;
+}
+
+std::string set_typed_hamiltonian(MapStudy& s, const verify::TypedDiscreteLagrangian& sys,
+                                  const std::string& hamiltonian, const std::vector<double>& q0,
+                                  const std::vector<double>& p0) {
+  const int n = sys.dim();
+  if (n == 1) set_potential_system<1>(s, sys, q0, p0);
+  if (n == 2) set_potential_system<2>(s, sys, q0, p0);
+  if (n == 3) set_potential_system<3>(s, sys, q0, p0);
+  return fmt::format("H = {} (--hamiltonian), {} degree{} of freedom; q0 = {}, p0 = {}",
+                     hamiltonian, n, n == 1 ? "" : "s", vec_text(q0), vec_text(p0));
+}
+
 namespace {
 
 // The Legendre map of the typed L at (q, p) in T (double-double for the reference, double for

@@ -167,6 +167,20 @@ std::unique_ptr<verify::TypedDiscreteLagrangian> check_typed_lagrangian(
     const TypedPotentialOptions& t, const StudyOptions& o, const char* route,
     std::vector<double>& q0, std::vector<double>& p0, MapStudy& s);
 
+/// --hamiltonian `hamiltonian` (with --potential for a V it calls, and --dim) of a catalogue
+/// route, checked before any work: the typed H(q, p) in 1 to 3 dimensions, then --q0, --p0
+/// (default 0.1 each) and --t-end. An ArgumentError names --hamiltonian, --potential, --problem,
+/// --dim, --q0, --p0 or --t-end.
+std::unique_ptr<verify::TypedDiscreteLagrangian> check_typed_hamiltonian(
+    const TypedPotentialOptions& t, const std::string& hamiltonian, const StudyOptions& o,
+    const char* route, std::vector<double>& q0, std::vector<double>& p0, MapStudy& s);
+
+/// The study's system from a typed Hamiltonian (Hamilton's equations of H in double-double,
+/// the energy H, z0); returns the report's line naming it. `sys` must outlive the study.
+std::string set_typed_hamiltonian(MapStudy& s, const verify::TypedDiscreteLagrangian& sys,
+                                  const std::string& hamiltonian, const std::vector<double>& q0,
+                                  const std::vector<double>& p0);
+
 /// The study's system from a typed Lagrangian: the reference solves Hamilton's equations of its
 /// Legendre transform H(q, p) = p·v − L(q, v) in double-double, v from ∂L/∂v(q, v) = p by
 /// Newton's method at every evaluation (q' = v, p' = ∂L/∂q(q, v)); the energy is the same H in

@@ -1,6 +1,6 @@
 // `vibook verify --tableau FILE` (issue #25): the file and the other arguments checked before
-// any work, then the measurement of vibook/verify/tableau_study.hpp printed, on a test problem
-// or on the user's own potential (--potential).
+// any work, then the measurement of vibook/verify/tableau_study.hpp printed, on a test problem,
+// on the user's own potential (--potential) or on any Hamiltonian typed (--hamiltonian).
 #include "verify_tableau.hpp"
 
 #include <memory>
@@ -19,7 +19,8 @@ namespace {
 struct Plan {
   verify::TableauSpec spec;
   const TestProblem* problem = nullptr;
-  std::unique_ptr<verify::TypedDiscreteLagrangian> sys;  // --potential: the typed system
+  // --potential or --hamiltonian: the typed system
+  std::unique_ptr<verify::TypedDiscreteLagrangian> sys;
   std::vector<double> q0, p0;
   MapStudy study;  // the measurement settings
 };
@@ -27,10 +28,13 @@ struct Plan {
 Plan check(const TableauOptions& o) {
   Plan p;
   p.spec = verify::read_tableau(o.file);
-  if (o.potential_given) {
+  if (o.hamiltonian_given) {
+    p.sys = check_typed_hamiltonian(o, o.hamiltonian, o, "--tableau", p.q0, p.p0, p.study);
+  } else if (o.potential_given) {
     p.sys = check_typed_potential(o, o, "--tableau", p.q0, p.p0, p.study);
   } else {
-    if (!o.dim.empty()) throw ArgumentError("--dim", "applies to --tableau with --potential only");
+    if (!o.dim.empty())
+      throw ArgumentError("--dim", "applies to --tableau with --potential or --hamiltonian only");
     p.problem = &find_test_problem(o.problem);
     check_initial_state(o, *p.problem, p.q0, p.p0, p.study);
   }
@@ -57,8 +61,11 @@ int run_tableau(const TableauOptions& o) {
     verify::measure_tableau(p.spec, *p.problem, p.q0, p.p0, p.study, o.symmetric, rep);
     return rep.finish(o.json_given, o.json_out);
   }
-  const std::string system = set_typed_potential(p.study, *p.sys, o.potential, p.q0, p.p0);
-  verify::measure_tableau_typed(p.spec, *p.sys, p.q0, p.p0, p.study, system, o.symmetric, rep);
+  const std::string system = o.hamiltonian_given
+                                 ? set_typed_hamiltonian(p.study, *p.sys, o.hamiltonian, p.q0, p.p0)
+                                 : set_typed_potential(p.study, *p.sys, o.potential, p.q0, p.p0);
+  verify::measure_tableau_typed(p.spec, *p.sys, p.q0, p.p0, p.study, system, o.symmetric,
+                                o.hamiltonian_given, rep);
   return rep.finish(o.json_given, o.json_out);
 }
 

@@ -13,6 +13,9 @@ namespace vibook::cli {
 struct TableauOptions : StudyOptions, TypedPotentialOptions {
   std::string file;
   bool symmetric = false;
+  /// --hamiltonian: any H(q, p) typed, instead of |p|²/2 + V(q) (HamiltonianPrkMethod)
+  std::string hamiltonian;
+  bool hamiltonian_given = false;
 };
 
 /// Run it; the exit status as for `vibook verify` (0 pass, 5 a verdict failed, 2, 3, 4).

@@ -1,8 +1,8 @@
 #!/usr/bin/env bash
 # `vibook verify --tableau FILE`: partitioned Runge-Kutta methods from the example tableaus
-# (examples/tableaus/) reach their documented orders on nonlinear problems (built in, or typed
-# after --potential), pass the
-# symplecticity conditions at 120 digits and measure their variational order; the two wrong
+# (examples/tableaus/) reach their documented orders on nonlinear problems (built in, typed
+# after --potential, or any H typed after --hamiltonian), pass the symplecticity conditions at
+# 120 digits and measure their variational order; the two wrong
 # tableaus fail (Lobatto IIIA for both halves: not symplectic; a mistyped entry: conditions,
 # order, symplecticity); bad files and arguments exit 2 before any work.
 # Usage: verify_tableau.sh path/to/vibook path/to/examples/tableaus
@@ -50,7 +50,32 @@ same_errors "typed = built-in Henon-Heiles" "$tmp/typed.json" "$tmp/builtin.json
 arg typed-and-problem --potential --tableau "$T/gauss2.json" --potential x^2 --problem pendulum
 arg typed-dim --dim --tableau "$T/gauss2.json" --potential x^2 --dim 4
 arg dim-without-potential --dim --tableau "$T/gauss2.json" --dim 2
-arg typed-hamiltonian --hamiltonian --tableau "$T/gauss2.json" --hamiltonian 'p^2/2+q^2'
+
+# On any Hamiltonian typed after --hamiltonian: the method of the tableau on Hamilton's equations
+# of H (stage positions and momenta solved together). H = |p|^2/2 + V typed whole gives the
+# --potential route's errors (another solver of the same method), and on a non-separable H (a
+# position-dependent mass) Gauss 2 and Lobatto IIIA-IIIB pass with variational order 4, while
+# the mistyped entry and Lobatto IIIA for both halves fail as they do on the built-in problems.
+"$V" verify --tableau "$T/gauss2.json" --hamiltonian 'p^2/2+V(q)' --potential "$HH" \
+  --q0 0.1,0.2 --p0 0.3,0.1 --steps 4096 --json-out "$tmp/ham.json" >/dev/null 2>&1
+same_errors "--hamiltonian = --potential" "$tmp/ham.json" "$tmp/typed.json" 5
+MASS='p^2/(2*(1+q^2)) + q^2/2 + q^4/4'
+case_ ham-gauss2 0 "" 'order +(3\.9|4\.0)[0-9]* over .*: yes' '\(--hamiltonian\)' \
+  'position and momentum stages' '^variational order +(3\.[89]|4\.[01])[0-9] \(measured.*agrees' \
+  -- --tableau "$T/gauss2.json" --hamiltonian "$MASS" --q0 0.5 --p0 0.3 --steps 4096
+case_ ham-lobatto3 0 "" 'order +(3\.9|4\.0)[0-9]* over .*: yes' \
+  '^variational order +(3\.[89]|4\.[01])[0-9] \(measured.*agrees' \
+  -- --tableau "$T/lobatto3-iiia-iiib.json" --hamiltonian "$MASS" --q0 0.5 --p0 0.3 --steps 4096
+case_ ham-typo 5 "order,symplectic,time-reversible,energy" 'symplectic \(b = bhat .*: NO' \
+  -- --tableau "$T/wrong-lobatto3-typo.json" --hamiltonian "$MASS" --q0 0.5 --p0 0.3 --steps 4096
+case_ ham-iiia 5 "symplectic" 'symplectic +defect .*: NO' \
+  -- --tableau "$T/wrong-lobatto3-iiia-only.json" --hamiltonian "$MASS" --q0 0.5 --p0 0.3 \
+  --steps 4096
+arg ham-and-problem --hamiltonian --tableau "$T/gauss2.json" --hamiltonian 'p^2/2' \
+  --problem pendulum
+arg ham-empty --hamiltonian --tableau "$T/gauss2.json" --hamiltonian ''
+arg ham-dim --dim --tableau "$T/gauss2.json" --hamiltonian 'p^2/2+q^2/2' --dim 4
+arg tableau-lagrangian --lagrangian --tableau "$T/gauss2.json" --lagrangian 'v^2/2-q^2/2'
 
 printf '{"a": [["0"]], "b": ["1"]}' >"$tmp/no-order.json"
 printf '{"a": [["0", "1"]], "b": ["1/2", "1/2"]}' >"$tmp/shape.json"

@@ -1,7 +1,8 @@
 /// \file prk.hpp
 /// \brief A partitioned Runge–Kutta method from its tableau, for a mechanical problem
-/// H = ½|p|² + U(q): the route `vibook verify --tableau FILE` takes any pair (a, b) for q and
-/// (â, b̂) for p, explicit or implicit.
+/// H = ½|p|² + U(q) (PartitionedRkMethod) or any Hamiltonian H(q, p) (HamiltonianPrkMethod, at
+/// the end): the route `vibook verify --tableau FILE` takes any pair (a, b) for q and (â, b̂)
+/// for p, explicit or implicit.
 ///
 /// **The method** (Hairer, Lubich and Wanner, *Geometric Numerical Integration*, §II.2.2):
 ///
@@ -24,8 +25,10 @@
 /// Chapter: \ref chapter-verify (section "A method from its tableau").
 #pragma once
 
+#include <algorithm>
 #include <array>
 #include <cmath>
+#include <limits>
 #include <stdexcept>
 #include <string>
 #include <type_traits>
@@ -159,6 +162,124 @@ class PartitionedRkMethod {
   int s_;                               ///< the number of stages (S when S is fixed)
   std::vector<std::vector<double>> M_;  ///< M_ij = Σ_k a_ik â_kj
   std::vector<double> c_;               ///< c̃_i = Σ_j a_ij
+  double action_ = 0;
+};
+
+/// The method of the same tableau on any Hamiltonian H(q, p) (Hairer, Lubich and Wanner, §II.2.2,
+/// (2.2)): with Z_i = (Q_i, P_i),
+///
+///     Q_i = q0 + h Σ_j a_ij ∂H/∂p(Z_j),   P_i = p0 − h Σ_j â_ij ∂H/∂q(Z_j),
+///     q1  = q0 + h Σ_i b_i ∂H/∂p(Z_i),     p1  = p0 − h Σ_i b̂_i ∂H/∂q(Z_i).
+///
+/// For a non-separable H the stage momenta no longer drop out, so Newton's method runs on the
+/// 2sN increments X_i = (Q_i − q0)/h, Y_i = (P_i − p0)/h together (started from
+/// X_i = c_i ∂H/∂p(z0), Y_i = −ĉ_i ∂H/∂q(z0), the row sums of a and â), with the Jacobian from
+/// the Hessian of H at each stage (AutoDiff on `Problem::gradient`). For H = ½|p|² + U it is
+/// PartitionedRkMethod's step (the doctests hold the two to round-off). When the tableau is
+/// symplectic the method is variational (HLW §VI.6.3), and its discrete Lagrangian is
+/// L_d = h Σ_i b_i (P_i·Q̇_i − H(Z_i)) with Q̇_i = ∂H/∂p(Z_i), the Lagrangian L = p·q̇ − H at the
+/// stages; `action()` returns it.
+///
+/// `Problem` has `N`, `template <class T> Vec<T, 2N> gradient(const Vec<T, 2N>& z)` (∇H at
+/// z = (q, p): ∂H/∂q, then ∂H/∂p) and `template <class T> T hamiltonian(q, p)`. `step` has the
+/// interface of the kernels (SolveError, q and p unchanged, when Newton fails or the result is
+/// not finite). The stage system is sized at run time.
+template <class Problem>
+class HamiltonianPrkMethod {
+ public:
+  static constexpr int N = Problem::N;
+
+  HamiltonianPrkMethod(Problem P, const PrkTableau& t, NewtonOptions options = {})
+      : P_(std::move(P)), t_(t), options_(options), s_(t_.stages()) {
+    const auto n = static_cast<std::size_t>(s_);
+    if (s_ < 1 || t_.bhat.size() != n || t_.a.size() != n || t_.ahat.size() != n)
+      throw std::invalid_argument("HamiltonianPrkMethod: a, ahat, b and bhat must have s stages");
+    for (std::size_t i = 0; i < n; ++i)
+      if (t_.a[i].size() != n || t_.ahat[i].size() != n)
+        throw std::invalid_argument("HamiltonianPrkMethod: a and ahat must be s x s");
+  }
+
+  SolveReport step(Vec<double, N>& q, Vec<double, N>& p, double h) {
+    const int ns = s_, half = ns * N;
+    Vec<double, 2 * N> z0;
+    z0 << q, p;
+    const Vec<double, 2 * N> g0 = P_.gradient(z0);
+    Eigen::VectorXd x(2 * half);
+    for (int i = 0; i < ns; ++i) {
+      double c = 0, chat = 0;
+      for (int j = 0; j < ns; ++j) {
+        c += t_.a[i][j];
+        chat += t_.ahat[i][j];
+      }
+      x.segment<N>(i * N) = c * g0.template tail<N>();
+      x.segment<N>(half + i * N) = -chat * g0.template head<N>();
+    }
+    auto stage = [&](const Eigen::VectorXd& u, int k) {
+      Vec<double, 2 * N> z;
+      z << q + h * u.segment<N>(k * N), p + h * u.segment<N>(half + k * N);
+      return z;
+    };
+    auto fj = [&](const Eigen::VectorXd& u, Eigen::VectorXd& F, Eigen::MatrixXd& J,
+                  bool with_jacobian) {
+      std::vector<Vec<double, 2 * N>> g(static_cast<std::size_t>(ns));
+      std::vector<Mat<double, 2 * N>> H(static_cast<std::size_t>(ns));
+      for (int k = 0; k < ns; ++k) {
+        const auto kk = static_cast<std::size_t>(k);
+        const Vec<double, 2 * N> z = stage(u, k);
+        g[kk] = P_.gradient(z);
+        if (with_jacobian)
+          H[kk] = ad::jacobian<2 * N>([&](const auto& y) { return P_.gradient(y); }, z);
+      }
+      F = u;
+      if (with_jacobian) J.setIdentity(2 * half, 2 * half);
+      for (int i = 0; i < ns; ++i)
+        for (int k = 0; k < ns; ++k) {
+          const auto kk = static_cast<std::size_t>(k);
+          const double a = t_.a[i][k], ah = t_.ahat[i][k];
+          F.segment<N>(i * N) -= a * g[kk].template tail<N>();
+          F.segment<N>(half + i * N) += ah * g[kk].template head<N>();
+          if (!with_jacobian) continue;
+          // rows of ∂H/∂q: [H_qq H_qp]; of ∂H/∂p: [H_pq H_pp]; a stage moves by h (X, Y)
+          J.block<N, N>(i * N, k * N) -= (h * a) * H[kk].template block<N, N>(N, 0);
+          J.block<N, N>(i * N, half + k * N) -= (h * a) * H[kk].template block<N, N>(N, N);
+          J.block<N, N>(half + i * N, k * N) += (h * ah) * H[kk].template block<N, N>(0, 0);
+          J.block<N, N>(half + i * N, half + k * N) += (h * ah) * H[kk].template block<N, N>(0, N);
+        }
+    };
+    NewtonOptions opt = options_;
+    opt.step_abs = std::max(opt.step_abs, 4 * std::numeric_limits<double>::epsilon() *
+                                              std::max(1.0, g0.template lpNorm<Eigen::Infinity>()));
+    const SolveReport rep =
+        newton_solve<Eigen::Dynamic>(x, fj, opt, "partitioned Runge-Kutta stages (H(q, p))");
+    Vec<double, N> dq = Vec<double, N>::Zero(), dp = Vec<double, N>::Zero();
+    double action = 0;
+    for (int i = 0; i < ns; ++i) {
+      const Vec<double, 2 * N> z = stage(x, i);
+      const Vec<double, 2 * N> g = P_.gradient(z);
+      dq += t_.b[static_cast<std::size_t>(i)] * g.template tail<N>();
+      dp -= t_.bhat[static_cast<std::size_t>(i)] * g.template head<N>();
+      const Vec<double, N> Qi = z.template head<N>(), Pi = z.template tail<N>();
+      action += t_.b[static_cast<std::size_t>(i)] *
+                (Pi.dot(g.template tail<N>()) - P_.template hamiltonian<double>(Qi, Pi));
+    }
+    const Vec<double, N> q1 = q + h * dq, p1 = p + h * dp;
+    if (!q1.allFinite() || !p1.allFinite() || !std::isfinite(action))
+      throw SolveError("partitioned Runge-Kutta step (H(q, p)): non-finite state", rep);
+    q = q1;
+    p = p1;
+    action_ = h * action;
+    return rep;
+  }
+
+  /// h Σ b_i (P_i·∂H/∂p(Z_i) − H(Z_i)) of the last step: its discrete Lagrangian when the
+  /// tableau is symplectic (see above).
+  double action() const { return action_; }
+
+ private:
+  Problem P_;
+  PrkTableau t_;
+  NewtonOptions options_;
+  int s_;
   double action_ = 0;
 };
 

@@ -11,10 +11,14 @@
 #include <cmath>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
+#include "vibook/core/order.hpp"
+#include "vibook/core/precision.hpp"
 #include "vibook/integrators/galerkin.hpp"
 #include "vibook/integrators/step_difference_test.hpp"
 #include "vibook/kepler/kepler.hpp"
+#include "vibook/verify/reference.hpp"
 #include "vibook/verify/tableau_study.hpp"
 
 using namespace vibook;
@@ -124,4 +128,100 @@ TEST_CASE("tableau method: the run-time stage count gives the fixed-S step to ro
   CHECK_THROWS_AS((PartitionedRkMethod<2, Kepler>(Kepler{}, t)), std::invalid_argument);
   CHECK_THROWS_AS((PartitionedRkMethod<Eigen::Dynamic, Kepler>(Kepler{}, PrkTableau{})),
                   std::invalid_argument);
+}
+
+namespace {
+
+// Kepler as a Hamiltonian H(q, p) = |p|²/2 − 1/|q| for HamiltonianPrkMethod.
+struct KeplerH {
+  static constexpr int N = 2;
+  template <class T>
+  T hamiltonian(const Vec<T, 2>& q, const Vec<T, 2>& p) const {
+    using std::sqrt;
+    return T(p.squaredNorm() / 2) - T(1) / T(sqrt(T(q.squaredNorm())));
+  }
+  template <class T>
+  Vec<T, 4> gradient(const Vec<T, 4>& z) const {
+    using std::sqrt;
+    const T r2 = z(0) * z(0) + z(1) * z(1);
+    const T r3 = r2 * T(sqrt(r2));
+    Vec<T, 4> g;
+    g << z(0) / r3, z(1) / r3, z(2), z(3);
+    return g;
+  }
+};
+
+// A position-dependent mass, H = p²/(2(1 + q²)) + q²/2 + q⁴/4: not separable.
+struct MassH {
+  static constexpr int N = 1;
+  template <class T>
+  T hamiltonian(const Vec<T, 1>& q, const Vec<T, 1>& p) const {
+    return T(p(0) * p(0) / (T(2) * (T(1) + q(0) * q(0)))) + q(0) * q(0) / T(2) +
+           q(0) * q(0) * q(0) * q(0) / T(4);
+  }
+  template <class T>
+  Vec<T, 2> gradient(const Vec<T, 2>& z) const {
+    const T m = T(1) + z(0) * z(0);
+    Vec<T, 2> g;
+    g << -z(1) * z(1) * z(0) / (m * m) + z(0) + z(0) * z(0) * z(0), z(1) / m;
+    return g;
+  }
+};
+
+// The error at T = 1 of the method of `t` on MassH from (q, p) = (0.5, 0.3), against the GBS
+// reference in double-double (verify/reference.hpp), for steps 1/n.
+std::vector<double> mass_errors(const PrkTableau& t, const std::vector<int>& ns) {
+  const verify::Field<dd_real> f = [](const std::vector<dd_real>& y) {
+    const Vec<dd_real, 2> g = MassH{}.gradient(Vec<dd_real, 2>(y[0], y[1]));
+    return std::vector<dd_real>{g(1), -g(0)};
+  };
+  const auto ref = verify::reference_solution<dd_real>(f, {dd_real(0.5), dd_real(0.3)}, 1.0);
+  std::vector<double> err;
+  for (int n : ns) {
+    HamiltonianPrkMethod<MassH> m(MassH{}, t);
+    Vec<double, 1> q(0.5), p(0.3);
+    for (int k = 0; k < n; ++k) m.step(q, p, 1.0 / n);
+    err.push_back(
+        std::max(std::abs(q(0) - to_double(ref.y[0])), std::abs(p(0) - to_double(ref.y[1]))));
+  }
+  return err;
+}
+
+}  // namespace
+
+TEST_CASE("tableau method on any H: the mechanical step when separable and order 4 when not") {
+  // On Kepler, H = |p|²/2 − 1/|q|, the general solver (stage positions and momenta together)
+  // gives PartitionedRkMethod's step (momenta eliminated) and its discrete Lagrangian, from
+  // the same state at every step, to round-off.
+  const verify::TableauSpec lob = verify::read_tableau(kTableaus + "lobatto3-iiia-iiib.json");
+  PartitionedRkMethod<Eigen::Dynamic, Kepler> mech(Kepler{}, lob.tableau);
+  HamiltonianPrkMethod<KeplerH> general(KeplerH{}, lob.tableau);
+  const test::StepDifference d = test::step_difference(mech, general, 40, 0.05);
+  CHECK(d.converged);
+  CHECK(d.state <= 64 * 2.2e-16 * 2);  // |z| <= 2
+  CHECK(d.action <= 64 * 2.2e-16);     // |L_d| < 1 for h = 0.05
+
+  // Non-separable: Gauss 2 and Lobatto IIIA-IIIB have order 4 against an independent
+  // reference, two-sided, over steps 1/8 … 1/64 (errors 1e-6 … 1e-10, far above round-off);
+  // the file with one entry mistyped does not reach it.
+  const std::vector<int> ns{8, 16, 32, 64};
+  std::vector<double> hs;
+  for (int n : ns) hs.push_back(1.0 / n);
+  for (const char* file : {"gauss2.json", "lobatto3-iiia-iiib.json"}) {
+    INFO(file);
+    const std::vector<double> e = mass_errors(verify::read_tableau(kTableaus + file).tableau, ns);
+    CHECK(e.back() > 1e-13);  // above the round-off plateau
+    CHECK(std::abs(fit_order(hs, e, 0.0).slope - 4) < 0.1);
+  }
+  const std::vector<double> typo =
+      mass_errors(verify::read_tableau(kTableaus + "wrong-lobatto3-typo.json").tableau, ns);
+  CHECK(std::abs(fit_order(hs, typo, 0.0).slope - 4) > 1);
+
+  // a solve that cannot converge in one iteration is a typed failure, the state unchanged
+  HamiltonianPrkMethod<MassH> limited(MassH{}, lob.tableau, NewtonOptions{.max_iterations = 1});
+  Vec<double, 1> q(0.5), p(0.3);
+  CHECK_THROWS_AS(limited.step(q, p, 0.1), SolveError);
+  CHECK(q(0) == 0.5);
+  CHECK(p(0) == 0.3);
+  CHECK_THROWS_AS((HamiltonianPrkMethod<MassH>(MassH{}, PrkTableau{})), std::invalid_argument);
 }

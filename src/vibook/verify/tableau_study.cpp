@@ -181,7 +181,8 @@ std::string list(const std::vector<double>& v) {
 namespace tableau_detail {
 
 void measure(const TableauSpec& spec, int N, const StudySystem& system, const MapStudy& study,
-             bool require_reversible, MapMeasurement& rep, std::pair<Step, GeneratingStep> steps) {
+             bool require_reversible, MapMeasurement& rep, std::pair<Step, GeneratingStep> steps,
+             bool general_h) {
   MapStudy s = study;
   s.step = std::move(steps.first);
   system.set(s);
@@ -198,9 +199,13 @@ void measure(const TableauSpec& spec, int N, const StudySystem& system, const Ma
     rep.line(i == 0 ? "  a | ahat" : "", list(spec.tableau.a[static_cast<std::size_t>(i)]) + " | " +
                                              list(spec.tableau.ahat[static_cast<std::size_t>(i)]));
   rep.line("  b | bhat", list(spec.tableau.b) + " | " + list(spec.tableau.bhat));
-  rep.line("  solved by", fmt::format("Newton's method on the {} position stages ({} unknowns), "
-                                      "the Hessian of the potential by AutoDiff",
-                                      S, S * N));
+  rep.line("  solved by",
+           general_h ? fmt::format("Newton's method on the {} position and momentum stages ({} "
+                                   "unknowns), the Hessian of H by AutoDiff",
+                                   S, 2 * S * N)
+                     : fmt::format("Newton's method on the {} position stages ({} unknowns), "
+                                   "the Hessian of the potential by AutoDiff",
+                                   S, S * N));
   rep.line("conditions",
            fmt::format("at {} digits from the entries as written: weights sum to 1 within {:.1e}{}",
                        kDigits, spec.weights_residual,
@@ -238,8 +243,10 @@ void measure(const TableauSpec& spec, int N, const StudySystem& system, const Ma
   if (spec.symplectic_conditions) {
     s.generating = std::move(steps.second);
     s.generating_from =
-        "h sum_i b_i (|P_i|^2/2 - U(Q_i)) at the solved stages (the tableau is symplectic, so "
-        "the method is variational)";
+        general_h ? "h sum_i b_i (P_i.dH/dp(Q_i, P_i) - H(Q_i, P_i)) at the solved stages (the "
+                    "tableau is symplectic, so the method is variational)"
+                  : "h sum_i b_i (|P_i|^2/2 - U(Q_i)) at the solved stages (the tableau is "
+                    "symplectic, so the method is variational)";
   }
   measure_map(s, rep);
   if (!spec.symplectic_conditions) {

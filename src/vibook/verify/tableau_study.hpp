@@ -65,14 +65,16 @@ void measure_tableau(const TableauSpec& spec, const TestProblem& problem,
 
 class TypedDiscreteLagrangian;  // verify/expression.hpp
 
-/// The same measurement on the user's own potential (`vibook verify --tableau FILE --potential
-/// EXPR`): the method on H = |p|²/2 + V(q) with V the typed potential of `sys` (1 to 3 degrees
-/// of freedom, sys.dim()), the force by AutoDiff on the expression's tree. `study` carries the
-/// system already (its reference field, H and z0, from the same expression); `system_line`
-/// names it in the report. std::invalid_argument for a dimension outside 1..3.
+/// The same measurement on the user's own system: with `general_h` false (`vibook verify
+/// --tableau FILE --potential EXPR`) the method on H = |p|²/2 + V(q) with V the typed potential
+/// of `sys`, the force by AutoDiff on the expression's tree; with `general_h` (`--hamiltonian
+/// EXPR`) HamiltonianPrkMethod on the H typed in `sys`, any H(q, p), ∇H and its Hessian by
+/// AutoDiff. 1 to 3 degrees of freedom (sys.dim()). `study` carries the system already (its
+/// reference field, H and z0, from the same expression); `system_line` names it in the
+/// report. std::invalid_argument for a dimension outside 1..3.
 void measure_tableau_typed(const TableauSpec& spec, const TypedDiscreteLagrangian& sys,
                            const std::vector<double>& q0, const std::vector<double>& p0,
                            const MapStudy& study, const std::string& system_line,
-                           bool require_reversible, MapMeasurement& rep);
+                           bool require_reversible, bool general_h, MapMeasurement& rep);
 
 }  // namespace vibook::verify

@@ -31,8 +31,28 @@ std::pair<Step, GeneratingStep> steps_for(const P& prob, const PrkTableau& t) {
           }};
 }
 
+// The same for a problem type with `hamiltonian` and `gradient` (∇H in (q, p)): the method of
+// the tableau on any H (HamiltonianPrkMethod).
+template <class P>
+std::pair<Step, GeneratingStep> hamiltonian_steps_for(const P& prob, const PrkTableau& t) {
+  if (t.stages() < 1 || t.stages() > 6)
+    throw std::invalid_argument("measure_tableau: 1 to 6 stages");
+  constexpr int N = P::N;
+  using Method = HamiltonianPrkMethod<P>;
+  auto method = std::make_shared<Method>(prob, t);
+  auto generating = std::make_shared<Method>(prob, t);
+  return {naming_failures([method](Eigen::VectorXd& z, double h) { step_qp<N>(*method, z, h); }, N),
+          [generating](Eigen::VectorXd& z, double h) {
+            step_qp<N>(*generating, z, h);
+            return generating->action();
+          }};
+}
+
 // The tableau's lines, then the measurement of map_study.hpp on `system`; N degrees of freedom.
+// `general_h`: the steps are HamiltonianPrkMethod's (the report says how it is solved and what
+// its discrete Lagrangian is).
 void measure(const TableauSpec& spec, int N, const StudySystem& system, const MapStudy& study,
-             bool require_reversible, MapMeasurement& rep, std::pair<Step, GeneratingStep> steps);
+             bool require_reversible, MapMeasurement& rep, std::pair<Step, GeneratingStep> steps,
+             bool general_h = false);
 
 }  // namespace vibook::verify::tableau_detail

@@ -12,19 +12,23 @@ namespace vibook::verify::tableau_detail {
 template <int N>
 void measure_typed_dim(const TableauSpec& spec, const TypedDiscreteLagrangian& sys,
                        const StudySystem& system, const MapStudy& study, bool require_reversible,
-                       MapMeasurement& rep) {
-  measure(spec, N, system, study, require_reversible, rep,
-          steps_for(TypedPotential<N>{&sys}, spec.tableau));
+                       bool general_h, MapMeasurement& rep) {
+  if (general_h)
+    measure(spec, N, system, study, require_reversible, rep,
+            hamiltonian_steps_for(TypedHamiltonian<N>{&sys}, spec.tableau), true);
+  else
+    measure(spec, N, system, study, require_reversible, rep,
+            steps_for(TypedPotential<N>{&sys}, spec.tableau));
 }
 
 extern template void measure_typed_dim<1>(const TableauSpec&, const TypedDiscreteLagrangian&,
-                                          const StudySystem&, const MapStudy&, bool,
+                                          const StudySystem&, const MapStudy&, bool, bool,
                                           MapMeasurement&);
 extern template void measure_typed_dim<2>(const TableauSpec&, const TypedDiscreteLagrangian&,
-                                          const StudySystem&, const MapStudy&, bool,
+                                          const StudySystem&, const MapStudy&, bool, bool,
                                           MapMeasurement&);
 extern template void measure_typed_dim<3>(const TableauSpec&, const TypedDiscreteLagrangian&,
-                                          const StudySystem&, const MapStudy&, bool,
+                                          const StudySystem&, const MapStudy&, bool, bool,
                                           MapMeasurement&);
 
 }  // namespace vibook::verify::tableau_detail
