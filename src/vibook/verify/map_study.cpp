@@ -148,6 +148,35 @@ constexpr double kWindow = 1e-6;
 
 }  // namespace
 
+namespace {
+
+// The exact solution from z0 = (q, p) over t: the study's own reference when it has one, else
+// Hamilton's equations `s.field` in double-double. With `action`, one more component,
+// ∫_0^t L dt: for Hamilton's equations ∫ p·q' dt integrated beside them, less t·H(z0) (L =
+// p·q' − H, and H is constant along the exact solution).
+Reference<dd_real> exact_solution(const MapStudy& s, const std::vector<dd_real>& z0, double t,
+                                  bool action) {
+  if (s.reference) return s.reference(z0, t, action);
+  if (!action) return reference_solution<dd_real>(s.field, z0, t);
+  const std::size_t n = z0.size() / 2;
+  const Field<dd_real> field = [&s, n](const std::vector<dd_real>& y) {
+    std::vector<dd_real> f = s.field(std::vector<dd_real>(y.begin(), y.end() - 1));
+    dd_real a = 0.0;
+    for (std::size_t i = 0; i < n; ++i) a += y[n + i] * f[i];
+    f.push_back(a);
+    return f;
+  };
+  std::vector<dd_real> y0 = z0;
+  y0.emplace_back(0.0);
+  Reference<dd_real> r = reference_solution<dd_real>(field, y0, t);
+  Eigen::VectorXd z(static_cast<Eigen::Index>(z0.size()));
+  for (std::size_t i = 0; i < z0.size(); ++i) z(static_cast<Eigen::Index>(i)) = to_double(z0[i]);
+  r.y.back() = r.y.back() - dd_real(t) * dd_real(s.H(z));
+  return r;
+}
+
+}  // namespace
+
 void measure_map(const MapStudy& s, MapMeasurement& rep) {
   const Step& step = s.step;
   const Eigen::VectorXd& z0 = s.z0;
@@ -158,7 +187,7 @@ void measure_map(const MapStudy& s, MapMeasurement& rep) {
     using T = dd_real;
     std::vector<T> y0(static_cast<std::size_t>(z0.size()));
     for (Eigen::Index i = 0; i < z0.size(); ++i) y0[static_cast<std::size_t>(i)] = T(z0(i));
-    const auto r = reference_solution<T>(s.field, y0, s.t_end);
+    const auto r = exact_solution(s, y0, s.t_end, false);
     zref.resize(z0.size());
     for (Eigen::Index i = 0; i < z0.size(); ++i)
       zref(i) = to_double(r.y[static_cast<std::size_t>(i)]);
@@ -426,16 +455,6 @@ void measure_variational_order(const MapStudy& s, MapMeasurement& rep) {
   try {
     const double H0 = s.H(s.z0);
     const double scale = std::max({1.0, std::abs(H0), 0.5 * p0.squaredNorm()});
-    // Hamilton's equations with the action's p·q' as one more component (L = p·q' − H, and H
-    // is constant along the exact solution, so ∫ L dt = ∫ p·q' dt − h H(z)).
-    const Field<dd_real> field = [&s, n](const std::vector<dd_real>& y) {
-      std::vector<dd_real> f = s.field(std::vector<dd_real>(y.begin(), y.end() - 1));
-      dd_real a = 0.0;
-      for (Eigen::Index i = 0; i < n; ++i)
-        a += y[static_cast<std::size_t>(n + i)] * f[static_cast<std::size_t>(i)];
-      f.push_back(a);
-      return f;
-    };
     const double eps = std::numeric_limits<double>::epsilon();
     // The points of the exact solution where the defect is measured: z(t) at t = T/4, T/2 and
     // 3T/4, not the initial state alone. The test problems start at a point of symmetry
@@ -445,7 +464,7 @@ void measure_variational_order(const MapStudy& s, MapMeasurement& rep) {
     for (int k = 1; k <= 3; ++k) {
       std::vector<dd_real> y(static_cast<std::size_t>(n2));
       for (Eigen::Index i = 0; i < n2; ++i) y[static_cast<std::size_t>(i)] = dd_real(s.z0(i));
-      const auto r = reference_solution<dd_real>(s.field, y, s.t_end * k / 4);
+      const auto r = exact_solution(s, y, s.t_end * k / 4, false);
       Eigen::VectorXd z(n2);
       for (Eigen::Index i = 0; i < n2; ++i) z(i) = to_double(r.y[static_cast<std::size_t>(i)]);
       starts.push_back(z);
@@ -456,13 +475,13 @@ void measure_variational_order(const MapStudy& s, MapMeasurement& rep) {
     auto defect_from = [&](const Eigen::VectorXd& z0, double h, int& iterations) {
       std::vector<dd_real> y0;
       for (Eigen::Index i = 0; i < n2; ++i) y0.emplace_back(z0(i));
-      y0.emplace_back(0.0);
       const Eigen::VectorXd q0 = z0.head(n);
-      const auto ref = reference_solution<dd_real>(field, y0, h);
+      // the action of the exact solution from z0 over h: ∫ L dt
+      const auto ref = exact_solution(s, y0, h, true);
       Eigen::VectorXd target(n);
       for (Eigen::Index i = 0; i < n; ++i)
         target(i) = to_double(ref.y[static_cast<std::size_t>(i)]);
-      const dd_real exact = ref.y.back() - dd_real(h) * dd_real(s.H(z0));
+      const dd_real exact = ref.y.back();
       const double tol = 8 * eps * std::max(1.0, target.lpNorm<Eigen::Infinity>());
       Eigen::VectorXd p = z0.tail(n);
       auto shoot = [&](const Eigen::VectorXd& pp, double& Ld) {

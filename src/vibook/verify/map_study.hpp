@@ -77,7 +77,14 @@ struct MapStudy {
   /// whole run); by default `step` n times.
   std::function<void(Eigen::VectorXd& z, double h, long long n)> propagate;
   Eigen::VectorXd z0;
-  verify::Field<dd_real> field;  ///< Hamilton's equations, for the reference
+  verify::Field<dd_real> field;  ///< Hamilton's equations, for the reference (unless `reference`)
+  /// Optional: the reference in the system's own coordinates, used instead of integrating
+  /// `field`. Called with z0 = (q, p) and a time t, it returns the exact solution's (q, p) at
+  /// t; with `action` true, one more component, ∫_0^t L dt along it (the variational order's
+  /// exact side). A typed Lagrangian's reference integrates its Euler–Lagrange equations in
+  /// (q, v), which needs no Legendre transform inside the field.
+  std::function<Reference<dd_real>(const std::vector<dd_real>& z0, double t, bool action)>
+      reference;
   std::string equations = "Hamilton's equations";
   verify::Observable H;  ///< the energy
   double t_end = 5, h = 0.05, order_tol = 0.2, expected = 2;
