@@ -231,22 +231,65 @@ void set_lagrangian_system(MapStudy& s, const verify::TypedDiscreteLagrangian& s
                         "near v = p0 (q0 = " +
                             vec_text(q0) + ", p0 = " + vec_text(p0) + ")");
   s.z0 = z0;
-  // q' = v, p' = ∂L/∂q(q, v)
-  s.field = [&sys](const std::vector<dd_real>& y) {
+  // The reference (MapStudy::reference; `field` is not used): the Euler–Lagrange equations in
+  // (q, v), M a = ∂L/∂q − B v with the Hessian blocks M = ∂²L/∂v², B = ∂²L/∂v∂q (nested
+  // AutoDiff in double-double), from v of the Legendre map at z0; p = ∂L/∂v formed at the end;
+  // L itself as one more component for the action. No Newton iteration inside the field.
+  s.reference = [&sys](const std::vector<dd_real>& z0d, double t, bool action) {
     Vec<dd_real, N> qq, pp;
     for (int i = 0; i < N; ++i) {
-      qq(i) = y[static_cast<std::size_t>(i)];
-      pp(i) = y[static_cast<std::size_t>(N + i)];
+      qq(i) = z0d[static_cast<std::size_t>(i)];
+      pp(i) = z0d[static_cast<std::size_t>(N + i)];
     }
-    const LegendrePoint<N, dd_real> r = legendre_or_throw<N, dd_real>(sys, qq, pp);
-    std::vector<dd_real> f(2 * N);
+    auto derivatives = [&sys](const Vec<dd_real, 2 * N>& w, dd_real& value, Vec<dd_real, 2 * N>& g,
+                              Mat<dd_real, 2 * N>& H) {
+      verify::value_gradient_hessian<2 * N, dd_real>(
+          [&](const auto& x) {
+            using S = scalar_t<decltype(x)>;
+            const Vec<S, N> qs = x.template head<N>(), vs = x.template tail<N>();
+            return sys.lagrangian<N, S>(qs, vs);
+          },
+          w, value, g, H);
+    };
+    const verify::Field<dd_real> f = [&](const std::vector<dd_real>& y) {
+      Vec<dd_real, 2 * N> w;
+      for (int i = 0; i < 2 * N; ++i) w(i) = y[static_cast<std::size_t>(i)];
+      dd_real value;
+      Vec<dd_real, 2 * N> g;
+      Mat<dd_real, 2 * N> H;
+      derivatives(w, value, g, H);
+      const Mat<dd_real, N> M = H.template bottomRightCorner<N, N>();
+      const Mat<dd_real, N> B = H.template bottomLeftCorner<N, N>();
+      const Vec<dd_real, N> acc =
+          M.partialPivLu().solve(Vec<dd_real, N>(g.template head<N>() - B * w.template tail<N>()));
+      std::vector<dd_real> r(y.size());
+      for (int i = 0; i < N; ++i) {
+        r[static_cast<std::size_t>(i)] = w(N + i);
+        r[static_cast<std::size_t>(N + i)] = acc(i);
+      }
+      if (action) r.back() = value;
+      return r;
+    };
+    const LegendrePoint<N, dd_real> start = legendre_or_throw<N, dd_real>(sys, qq, pp);
+    std::vector<dd_real> y0(2 * N);
     for (int i = 0; i < N; ++i) {
-      f[static_cast<std::size_t>(i)] = r.v(i);
-      f[static_cast<std::size_t>(N + i)] = r.dLdq(i);
+      y0[static_cast<std::size_t>(i)] = qq(i);
+      y0[static_cast<std::size_t>(N + i)] = start.v(i);
     }
-    return f;
+    if (action) y0.emplace_back(0.0);
+    verify::Reference<dd_real> r = verify::reference_solution<dd_real>(f, y0, t);
+    Vec<dd_real, 2 * N> w;
+    for (int i = 0; i < 2 * N; ++i) w(i) = r.y[static_cast<std::size_t>(i)];
+    dd_real value;
+    Vec<dd_real, 2 * N> g;
+    Mat<dd_real, 2 * N> H;
+    derivatives(w, value, g, H);
+    for (int i = 0; i < N; ++i) r.y[static_cast<std::size_t>(N + i)] = g(N + i);  // p = ∂L/∂v
+    return r;
   };
-  s.equations = "Hamilton's equations of H = p.v - L(q, v) (v from dL/dv = p by Newton)";
+  s.equations =
+      "the Euler-Lagrange equations of L in (q, v) (v from dL/dv = p by Newton at "
+      "the start, p = dL/dv at the end)";
   // H = p·v − L in double
   s.H = [&sys](const Eigen::VectorXd& z) {
     const Vec<double, N> qq = z.head<N>(), pp = z.tail<N>();
