@@ -23,13 +23,21 @@ const TestProblem& find_test_problem(const std::string& name) {
                                        "' (kepler, pendulum or henon-heiles)");
 }
 
-std::unique_ptr<verify::TypedDiscreteLagrangian> check_typed_potential(
-    const TypedPotentialOptions& t, const StudyOptions& o, const char* route,
-    std::vector<double>& q0, std::vector<double>& p0, MapStudy& s) {
-  if (t.potential.empty()) throw ArgumentError("--potential", "is empty");
+namespace {
+
+// The typed system of a catalogue route, checked before any work. `option` names the text that
+// gives the system (`text`: a potential, a Lagrangian or a Hamiltonian) in the messages; the
+// system parsed is L (`lagrangian`) or H (`hamiltonian`), either of which may call the V of
+// --potential. 1 to 3 degrees of freedom; then --q0, --p0 and --t-end.
+std::unique_ptr<verify::TypedDiscreteLagrangian> check_typed_system(
+    const char* option, const std::string& text, const std::string& lagrangian,
+    const std::string& hamiltonian, const TypedPotentialOptions& t, const StudyOptions& o,
+    const char* route, std::vector<double>& q0, std::vector<double>& p0, MapStudy& s) {
+  if (text.empty()) throw ArgumentError(option, "is empty");
   if (!o.problem.empty())
-    throw ArgumentError("--potential",
+    throw ArgumentError(option,
                         "gives the system; --problem names a test problem: give one of them");
+  if (t.potential_given && t.potential.empty()) throw ArgumentError("--potential", "is empty");
   int dim = 0;
   if (!t.dim.empty()) {
     dim = static_cast<int>(parse_integer("--dim", t.dim));
@@ -39,16 +47,35 @@ std::unique_ptr<verify::TypedDiscreteLagrangian> check_typed_potential(
   std::unique_ptr<verify::TypedDiscreteLagrangian> sys;
   {
     std::lock_guard<std::mutex> lock(modified::ginac_mutex());
-    verify::TypedTexts texts{"", t.potential, "", "p^2/2 + V(q)", dim};
+    verify::TypedTexts texts{"", t.potential, lagrangian, hamiltonian, dim};
     texts.system_only = true;
     sys = std::make_unique<verify::TypedDiscreteLagrangian>(texts);
   }
   if (sys->dim() > 3)
-    throw ArgumentError("--potential", fmt::format("is {}-dimensional; {} runs in 1 to 3 "
-                                                   "dimensions",
-                                                   sys->dim(), route));
+    throw ArgumentError(
+        option, fmt::format("is {}-dimensional; {} runs in 1 to 3 dimensions", sys->dim(), route));
   check_typed_initial_state(o, sys->dim(), q0, p0, s);
   return sys;
+}
+
+}  // namespace
+
+std::unique_ptr<verify::TypedDiscreteLagrangian> check_typed_potential(
+    const TypedPotentialOptions& t, const StudyOptions& o, const char* route,
+    std::vector<double>& q0, std::vector<double>& p0, MapStudy& s) {
+  return check_typed_system("--potential", t.potential, "", "p^2/2 + V(q)", t, o, route, q0, p0, s);
+}
+
+std::unique_ptr<verify::TypedDiscreteLagrangian> check_typed_lagrangian(
+    const TypedPotentialOptions& t, const StudyOptions& o, const char* route,
+    std::vector<double>& q0, std::vector<double>& p0, MapStudy& s) {
+  return check_typed_system("--lagrangian", t.lagrangian, t.lagrangian, "", t, o, route, q0, p0, s);
+}
+
+std::unique_ptr<verify::TypedDiscreteLagrangian> check_typed_hamiltonian(
+    const TypedPotentialOptions& t, const std::string& hamiltonian, const StudyOptions& o,
+    const char* route, std::vector<double>& q0, std::vector<double>& p0, MapStudy& s) {
+  return check_typed_system("--hamiltonian", hamiltonian, "", hamiltonian, t, o, route, q0, p0, s);
 }
 
 namespace {
@@ -77,64 +104,6 @@ std::string set_typed_potential(MapStudy& s, const verify::TypedDiscreteLagrangi
       "H = |p|^2/2 + V(q), V = {} (--potential), {} degree{} of freedom; q0 = {}, "
       "p0 = {}",
       potential, n, n == 1 ? "" : "s", vec_text(q0), vec_text(p0));
-}
-
-std::unique_ptr<verify::TypedDiscreteLagrangian> check_typed_lagrangian(
-    const TypedPotentialOptions& t, const StudyOptions& o, const char* route,
-    std::vector<double>& q0, std::vector<double>& p0, MapStudy& s) {
-  if (t.lagrangian.empty()) throw ArgumentError("--lagrangian", "is empty");
-  if (!o.problem.empty())
-    throw ArgumentError("--lagrangian",
-                        "gives the system; --problem names a test problem: give one of them");
-  if (t.potential_given && t.potential.empty()) throw ArgumentError("--potential", "is empty");
-  int dim = 0;
-  if (!t.dim.empty()) {
-    dim = static_cast<int>(parse_integer("--dim", t.dim));
-    if (dim < 1 || dim > 3)
-      throw ArgumentError("--dim", fmt::format("must lie in 1..3 with {}", route));
-  }
-  std::unique_ptr<verify::TypedDiscreteLagrangian> sys;
-  {
-    std::lock_guard<std::mutex> lock(modified::ginac_mutex());
-    verify::TypedTexts texts{"", t.potential, t.lagrangian, "", dim};
-    texts.system_only = true;
-    sys = std::make_unique<verify::TypedDiscreteLagrangian>(texts);
-  }
-  if (sys->dim() > 3)
-    throw ArgumentError("--lagrangian", fmt::format("is {}-dimensional; {} runs in 1 to 3 "
-                                                    "dimensions",
-                                                    sys->dim(), route));
-  check_typed_initial_state(o, sys->dim(), q0, p0, s);
-  return sys;
-}
-
-std::unique_ptr<verify::TypedDiscreteLagrangian> check_typed_hamiltonian(
-    const TypedPotentialOptions& t, const std::string& hamiltonian, const StudyOptions& o,
-    const char* route, std::vector<double>& q0, std::vector<double>& p0, MapStudy& s) {
-  if (hamiltonian.empty()) throw ArgumentError("--hamiltonian", "is empty");
-  if (!o.problem.empty())
-    throw ArgumentError("--hamiltonian",
-                        "gives the system; --problem names a test problem: give one of them");
-  if (t.potential_given && t.potential.empty()) throw ArgumentError("--potential", "is empty");
-  int dim = 0;
-  if (!t.dim.empty()) {
-    dim = static_cast<int>(parse_integer("--dim", t.dim));
-    if (dim < 1 || dim > 3)
-      throw ArgumentError("--dim", fmt::format("must lie in 1..3 with {}", route));
-  }
-  std::unique_ptr<verify::TypedDiscreteLagrangian> sys;
-  {
-    std::lock_guard<std::mutex> lock(modified::ginac_mutex());
-    verify::TypedTexts texts{"", t.potential, "", hamiltonian, dim};
-    texts.system_only = true;
-    sys = std::make_unique<verify::TypedDiscreteLagrangian>(texts);
-  }
-  if (sys->dim() > 3)
-    throw ArgumentError("--hamiltonian", fmt::format("is {}-dimensional; {} runs in 1 to 3 "
-                                                     "dimensions",
-                                                     sys->dim(), route));
-  check_typed_initial_state(o, sys->dim(), q0, p0, s);
-  return sys;
 }
 
 std::string set_typed_hamiltonian(MapStudy& s, const verify::TypedDiscreteLagrangian& sys,

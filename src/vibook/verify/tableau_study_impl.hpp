@@ -14,14 +14,14 @@
 
 namespace vibook::verify::tableau_detail {
 
-// The one-step map and the generating step of the tableau's method on `prob`: one instance per
-// problem, the number of stages the tableau's (PartitionedRkMethod<Eigen::Dynamic, P>).
-template <class P>
-std::pair<Step, GeneratingStep> steps_for(const P& prob, const PrkTableau& t) {
+// The one-step map and the generating step of the tableau's method `Method` (constructed from
+// `prob` and the tableau) on `prob`: one instance per problem, the number of stages the
+// tableau's.
+template <class Method, class P>
+std::pair<Step, GeneratingStep> method_steps(const P& prob, const PrkTableau& t) {
   if (t.stages() < 1 || t.stages() > 6)
     throw std::invalid_argument("measure_tableau: 1 to 6 stages");
   constexpr int N = P::N;
-  using Method = PartitionedRkMethod<Eigen::Dynamic, P>;
   auto method = std::make_shared<Method>(prob, t);
   auto generating = std::make_shared<Method>(prob, t);
   return {naming_failures([method](Eigen::VectorXd& z, double h) { step_qp<N>(*method, z, h); }, N),
@@ -31,21 +31,17 @@ std::pair<Step, GeneratingStep> steps_for(const P& prob, const PrkTableau& t) {
           }};
 }
 
-// The same for a problem type with `hamiltonian` and `gradient` (∇H in (q, p)): the method of
-// the tableau on any H (HamiltonianPrkMethod).
+// For a mechanical problem type (`potential`, `gradient` of U): PartitionedRkMethod.
+template <class P>
+std::pair<Step, GeneratingStep> steps_for(const P& prob, const PrkTableau& t) {
+  return method_steps<PartitionedRkMethod<Eigen::Dynamic, P>>(prob, t);
+}
+
+// For a problem type with `hamiltonian` and `gradient` (∇H in (q, p)): the method of the
+// tableau on any H (HamiltonianPrkMethod).
 template <class P>
 std::pair<Step, GeneratingStep> hamiltonian_steps_for(const P& prob, const PrkTableau& t) {
-  if (t.stages() < 1 || t.stages() > 6)
-    throw std::invalid_argument("measure_tableau: 1 to 6 stages");
-  constexpr int N = P::N;
-  using Method = HamiltonianPrkMethod<P>;
-  auto method = std::make_shared<Method>(prob, t);
-  auto generating = std::make_shared<Method>(prob, t);
-  return {naming_failures([method](Eigen::VectorXd& z, double h) { step_qp<N>(*method, z, h); }, N),
-          [generating](Eigen::VectorXd& z, double h) {
-            step_qp<N>(*generating, z, h);
-            return generating->action();
-          }};
+  return method_steps<HamiltonianPrkMethod<P>>(prob, t);
 }
 
 // The tableau's lines, then the measurement of map_study.hpp on `system`; N degrees of freedom.
