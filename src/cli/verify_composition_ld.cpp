@@ -5,8 +5,9 @@
 // so a '*' in the coefficients applies the true adjoint of the user's method. Whether the base
 // is symmetric (L_d* = L_d), which decides the order conditions, is computed from the
 // expression: symbolically by the engine, else at random points. The system is the one typed
-// (--potential, --hamiltonian, or --lagrangian through its Legendre transform), its reference
-// Hamilton's equations in double-double.
+// (--potential or --hamiltonian, the reference Hamilton's equations in double-double; or
+// --lagrangian, the reference its Euler–Lagrange equations and the energy its Legendre
+// transform, set_typed_lagrangian).
 #include <array>
 #include <cmath>
 #include <memory>
