@@ -184,9 +184,10 @@ std::string set_typed_hamiltonian(MapStudy& s, const verify::TypedDiscreteLagran
 /// The study's system from a typed Lagrangian: the reference (MapStudy::reference) solves its
 /// Euler–Lagrange equations in (q, v) in double-double, v from ∂L/∂v(q0, v) = p0 by Newton's
 /// method at the start and p = ∂L/∂v at the end; the energy is its Legendre transform
-/// H(q, p) = p·v − L(q, v) in double, v by Newton's method at each evaluation. Returns the report's line naming the system. An ArgumentError naming --lagrangian
-/// when the Legendre map has no solution at (q0, p0) (L not regular there), before any work;
-/// later failures of the map are NumericalErrors. `sys` must outlive the study.
+/// H(q, p) = p·v − L(q, v) in double, v by Newton's method at each evaluation. Returns the
+/// report's line naming the system. An ArgumentError naming --lagrangian when the Legendre map
+/// has no solution at (q0, p0) (L not regular there), before any work; later failures are
+/// NumericalErrors. `sys` must outlive the study.
 std::string set_typed_lagrangian(MapStudy& s, const verify::TypedDiscreteLagrangian& sys,
                                  const std::string& lagrangian, const std::vector<double>& q0,
                                  const std::vector<double>& p0);
