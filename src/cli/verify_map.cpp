@@ -128,6 +128,19 @@ namespace {
 // is of second order in v's since ∂H/∂v = p − ∂L/∂v = 0), keeping the point it was computed
 // at; nullopt when that does not happen in 60 iterations or a number leaves the finite ones
 // (L not regular there).
+// L, its gradient and its Hessian at w = (q, v), by nested forward AutoDiff in T on the tree.
+template <int N, class T>
+void lagrangian_derivatives(const verify::TypedDiscreteLagrangian& sys, const Vec<T, 2 * N>& w,
+                            T& value, Vec<T, 2 * N>& g, Mat<T, 2 * N>& H) {
+  verify::value_gradient_hessian<2 * N, T>(
+      [&](const auto& x) {
+        using S = scalar_t<decltype(x)>;
+        const Vec<S, N> qs = x.template head<N>(), vs = x.template tail<N>();
+        return sys.lagrangian<N, S>(qs, vs);
+      },
+      w, value, g, H);
+}
+
 template <int N, class T>
 struct LegendrePoint {
   Vec<T, N> v, dLdq;
@@ -144,13 +157,7 @@ std::optional<LegendrePoint<N, T>> legendre(const verify::TypedDiscreteLagrangia
     T value;
     Vec<T, 2 * N> g;
     Mat<T, 2 * N> H;
-    verify::value_gradient_hessian<2 * N, T>(
-        [&](const auto& x) {
-          using S = scalar_t<decltype(x)>;
-          const Vec<S, N> qs = x.template head<N>(), vs = x.template tail<N>();
-          return sys.lagrangian<N, S>(qs, vs);
-        },
-        w, value, g, H);
+    lagrangian_derivatives<N, T>(sys, w, value, g, H);
     const Mat<T, N> M = H.template bottomRightCorner<N, N>();
     const Vec<T, N> dv = M.partialPivLu().solve(Vec<T, N>(g.template tail<N>() - p));
     double nd = 0, nv = 1;
@@ -210,23 +217,13 @@ void set_lagrangian_system(MapStudy& s, const verify::TypedDiscreteLagrangian& s
       qq(i) = z0d[static_cast<std::size_t>(i)];
       pp(i) = z0d[static_cast<std::size_t>(N + i)];
     }
-    auto derivatives = [&sys](const Vec<dd_real, 2 * N>& w, dd_real& value, Vec<dd_real, 2 * N>& g,
-                              Mat<dd_real, 2 * N>& H) {
-      verify::value_gradient_hessian<2 * N, dd_real>(
-          [&](const auto& x) {
-            using S = scalar_t<decltype(x)>;
-            const Vec<S, N> qs = x.template head<N>(), vs = x.template tail<N>();
-            return sys.lagrangian<N, S>(qs, vs);
-          },
-          w, value, g, H);
-    };
     const verify::Field<dd_real> f = [&](const std::vector<dd_real>& y) {
       Vec<dd_real, 2 * N> w;
       for (int i = 0; i < 2 * N; ++i) w(i) = y[static_cast<std::size_t>(i)];
       dd_real value;
       Vec<dd_real, 2 * N> g;
       Mat<dd_real, 2 * N> H;
-      derivatives(w, value, g, H);
+      lagrangian_derivatives<N, dd_real>(sys, w, value, g, H);
       const Mat<dd_real, N> M = H.template bottomRightCorner<N, N>();
       const Mat<dd_real, N> B = H.template bottomLeftCorner<N, N>();
       const Vec<dd_real, N> acc =
@@ -252,7 +249,7 @@ void set_lagrangian_system(MapStudy& s, const verify::TypedDiscreteLagrangian& s
     dd_real value;
     Vec<dd_real, 2 * N> g;
     Mat<dd_real, 2 * N> H;
-    derivatives(w, value, g, H);
+    lagrangian_derivatives<N, dd_real>(sys, w, value, g, H);
     for (int i = 0; i < N; ++i) r.y[static_cast<std::size_t>(N + i)] = g(N + i);  // p = ∂L/∂v
     return r;
   };
