@@ -210,10 +210,12 @@ const std::vector<ex>& Engine::l_disc() {
     subs[dl_.q1[i]] = shifted_jet(J, i, numeric(1, 2), P0);
   }
   subs[J.h()] = Series::h();
+  if (dl_.interior_on_curve && !dl_.qm_at.empty())
+    throw std::logic_error("interior_on_curve applies to one interior node at the midpoint");
   if (!dl_.qm.empty()) {
     const auto m = dl_.interior_on_curve ? std::vector<Series>{} : interior_node(subs, K_ + 4);
-    for (int i = 0; i < J.dofs(); ++i)
-      subs[dl_.qm[i]] = dl_.interior_on_curve ? shifted_jet(J, i, 0, P0) : m[i];
+    for (std::size_t i = 0; i < dl_.qm.size(); ++i)
+      subs[dl_.qm[i]] = dl_.interior_on_curve ? shifted_jet(J, static_cast<int>(i), 0, P0) : m[i];
   }
   SeriesEvaluator eval(J, subs, K_ + 3);
   const Series L = eval(dl_.Ld) / Series::h();
@@ -507,7 +509,7 @@ std::vector<std::vector<ex>> Engine::modified_equation_direct() {
     throw ArgumentError("--method", "the direct route needs the interior node eliminated");
   if (!dl_.qm.empty()) {  // ∂L_eff/∂q = ∂L_d/∂q at the interior node (∂L_d/∂qm = 0 there)
     const auto mb = interior_node(back, K_ + 5), mf = interior_node(fwd, K_ + 5);
-    for (int i = 0; i < n; ++i) {
+    for (std::size_t i = 0; i < dl_.qm.size(); ++i) {
       back[dl_.qm[i]] = mb[i];
       fwd[dl_.qm[i]] = mf[i];
     }
@@ -528,11 +530,56 @@ std::vector<std::vector<ex>> Engine::modified_equation_direct() {
   return solve_for_acceleration(E, K_);
 }
 
+namespace {
+
+// x = A⁻¹ b for a square matrix of series, by Gaussian elimination: in each column the pivot
+// is the entry of lowest valuation (the first whose leading coefficient does not vanish), so
+// a pivot's leading term is never a zero that only looks nonzero.
+std::vector<Series> solve_series(std::vector<std::vector<Series>> A, std::vector<Series> b) {
+  const std::size_t n = b.size();
+  auto lead = [](const Series& s) {
+    for (std::size_t k = 0; k < s.c.size() && s.low + static_cast<int>(k) < s.prec; ++k)
+      if (!vanishes(s.c[k])) return s.low + static_cast<int>(k);
+    return Series::exact;
+  };
+  for (std::size_t k = 0; k < n; ++k) {
+    std::size_t piv = n;
+    int best = Series::exact;
+    for (std::size_t r = k; r < n; ++r) {
+      const int v = lead(A[r][k]);
+      if (v < best) {
+        best = v;
+        piv = r;
+      }
+    }
+    if (piv == n)
+      throw NumericalError(
+          "the interior points of the discrete Lagrangian could not be eliminated: "
+          "∂²L_d/∂Q² is singular");
+    std::swap(A[k], A[piv]);
+    std::swap(b[k], b[piv]);
+    for (std::size_t r = k + 1; r < n; ++r) {
+      const Series f = A[r][k] / A[k][k];
+      for (std::size_t c = k + 1; c < n; ++c) A[r][c] = A[r][c] - f * A[k][c];
+      b[r] = b[r] - f * b[k];
+    }
+  }
+  std::vector<Series> x(n);
+  for (std::size_t k = n; k-- > 0;) {
+    Series acc = b[k];
+    for (std::size_t c = k + 1; c < n; ++c) acc = acc - A[k][c] * x[c];
+    x[k] = acc / A[k][k];
+  }
+  return x;
+}
+
+}  // namespace
+
 // Newton's method on series for ∂L_d/∂qm(q0, qm, q1, h) = 0: each step doubles the number of
 // correct terms; the result is checked to vanish to the requested precision.
 std::vector<Series> Engine::interior_node(const SubsMap& subs, int cap) const {
   const JetSpace& J = *dl_.jets;
-  const int n = J.dofs();
+  const int n = static_cast<int>(dl_.qm.size());
   std::vector<ex> G(n);
   std::vector<std::vector<ex>> H(n, std::vector<ex>(n));
   for (int i = 0; i < n; ++i) {
@@ -540,8 +587,16 @@ std::vector<Series> Engine::interior_node(const SubsMap& subs, int cap) const {
     for (int j = 0; j < n; ++j) H[i][j] = G[i].diff(dl_.qm[j]);
   }
   std::vector<Series> m(n);
-  for (int i = 0; i < n; ++i)
-    m[i] = (subs.at(dl_.q0[i]) + subs.at(dl_.q1[i])) * Series::constant(numeric(1, 2));
+  if (dl_.qm_at.empty()) {  // one interior node, started at the mean of q0, q1
+    for (int i = 0; i < n; ++i)
+      m[i] = (subs.at(dl_.q0[i]) + subs.at(dl_.q1[i])) * Series::constant(numeric(1, 2));
+  } else {  // several: each on the chord q0 + τ(q1 − q0)
+    for (int i = 0; i < n; ++i) {
+      const int d = dl_.qm_dof[i];
+      m[i] = subs.at(dl_.q0[d]) +
+             (subs.at(dl_.q1[d]) - subs.at(dl_.q0[d])) * Series::constant(dl_.qm_at[i]);
+    }
+  }
   auto residual = [&](SubsMap& s, std::vector<Series>& g, std::vector<std::vector<Series>>* hess,
                       int at) {
     for (int i = 0; i < n; ++i) s[dl_.qm[i]] = m[i];
@@ -562,9 +617,26 @@ std::vector<Series> Engine::interior_node(const SubsMap& subs, int cap) const {
     std::vector<Series> g(n);
     std::vector<std::vector<Series>> hm(n, std::vector<Series>(n));
     residual(s, g, &hm, at);
-    // δ = −H⁻¹ g by cofactors (n ≤ 3).
+    // δ = −H⁻¹ g by cofactors (n ≤ 3), or by elimination (more interior unknowns).
     Series det;
     std::vector<std::vector<Series>> adj(n, std::vector<Series>(n));
+    if (n > 3) {
+      bool moved = false;
+      const std::vector<Series> delta = solve_series(hm, g);
+      for (int i = 0; i < n; ++i) {
+        Series step = delta[i].truncated(at);
+        for (int k = step.valuation(); k < step.prec; ++k)
+          if (!vanishes(step.coeff(k))) {
+            moved = true;
+            break;
+          }
+        step.prec = Series::exact;
+        m[i] = (m[i] - step).truncated(cap);
+      }
+      if (at == cap && !moved && !reference_) break;
+      at = std::min(cap, 2 * at);
+      continue;
+    }
     if (n == 1) {
       det = hm[0][0];
       adj[0][0] = Series::constant(1);

@@ -50,10 +50,20 @@ inline constexpr int max_order = 10;
 /// composition over half steps, Shen & Sun (3.8)). The engine eliminates qm exactly, order by
 /// order in h, from ∂L_d/∂qm = 0 (the discrete Euler–Lagrange equation at the interior node),
 /// which leaves the one-step discrete Lagrangian of the same x_n sequence.
+///
+/// A discrete Lagrangian with *several* interior points (a Galerkin L_d before its interior
+/// control points are eliminated, Marsden & West 2001 §2.6: symbolic_dl_interior) lists all of
+/// their coordinates in qm, point by point, with each coordinate's degree of freedom in
+/// qm_dof and the fraction τ of the step at which Newton's method on series starts it, on the
+/// chord q0 + τ(q1 − q0), in qm_at. All of them are eliminated together.
 struct SymbolicDL {
   std::shared_ptr<JetSpace> jets;
   std::vector<GiNaC::symbol> q0, q1;
-  std::vector<GiNaC::symbol> qm;  ///< interior node of a three-point L_d (empty otherwise)
+  std::vector<GiNaC::symbol> qm;  ///< interior node(s) of L_d (empty for a two-point L_d)
+  /// For each qm[k]: its degree of freedom and the start τ (empty: qm[i] is degree of freedom
+  /// i of one interior node, started at τ = 1/2).
+  std::vector<int> qm_dof;
+  std::vector<GiNaC::numeric> qm_at;
   /// Place the interior node on the curve, qm = x(t), instead of eliminating it (the reading
   /// of Shen & Sun's proof of Theorem 12; not the discrete Lagrangian of the x_n sequence).
   bool interior_on_curve = false;
@@ -107,6 +117,39 @@ SymbolicDL symbolic_dl(const DL& dl, std::shared_ptr<JetSpace> jets, std::string
   }
   const ex h = out.jets->h();
   out.Ld = exact_rationals(dl(a, b, h), &out.inexact_literals);
+  std::sort(out.inexact_literals.begin(), out.inexact_literals.end());  // not GiNaC's order
+  apply_inexact_policy(out, policy);
+  return out;
+}
+
+/// The same for a discrete Lagrangian `dl(q0, Q, q1, h)` with interior points Q (a
+/// std::vector of `at.size()` points Vec<ex, N>), point j started at the fraction at[j] of the
+/// step. The symbols are Q1, Q2, … (Q1_1, Q1_2, … for N > 1).
+template <int N, class DL>
+SymbolicDL symbolic_dl_interior(const DL& dl, std::shared_ptr<JetSpace> jets,
+                                std::string description, const std::vector<GiNaC::numeric>& at,
+                                InexactLiterals policy = InexactLiterals::warn) {
+  SymbolicDL out;
+  out.jets = std::move(jets);
+  out.description = std::move(description);
+  Vec<ex, N> a, b;
+  std::vector<Vec<ex, N>> m(at.size());
+  for (int i = 0; i < N; ++i) {
+    out.q0.emplace_back(N == 1 ? "q0" : "q0_" + std::to_string(i + 1));
+    out.q1.emplace_back(N == 1 ? "q1" : "q1_" + std::to_string(i + 1));
+    a(i) = out.q0.back();
+    b(i) = out.q1.back();
+  }
+  for (std::size_t j = 0; j < at.size(); ++j)
+    for (int i = 0; i < N; ++i) {
+      const std::string name = "Q" + std::to_string(j + 1);
+      out.qm.emplace_back(N == 1 ? name : name + "_" + std::to_string(i + 1));
+      out.qm_dof.push_back(i);
+      out.qm_at.push_back(at[j]);
+      m[j](i) = out.qm.back();
+    }
+  const ex h = out.jets->h();
+  out.Ld = exact_rationals(dl(a, m, b, h), &out.inexact_literals);
   std::sort(out.inexact_literals.begin(), out.inexact_literals.end());  // not GiNaC's order
   apply_inexact_policy(out, policy);
   return out;
@@ -250,8 +293,9 @@ class Engine {
   std::vector<std::vector<Series>> jets_along(const std::vector<Series>& F,
                                               const std::vector<std::vector<ex>>& uses,
                                               int cap) const;
-  /// Three-point L_d: the interior node as a series, from ∂L_d/∂qm = 0 with q0, q1 (and h)
-  /// given as series in `subs` (Newton's method on series, started at the mean of q0, q1).
+  /// L_d with interior points: their coordinates (qm) as series, from ∂L_d/∂qm = 0 with q0,
+  /// q1 (and h) given as series in `subs` (Newton's method on series, started on the chord:
+  /// the mean of q0, q1 for one interior node).
   std::vector<Series> interior_node(const std::map<ex, Series, GiNaC::ex_is_less>& subs,
                                     int cap) const;
   /// Σ h^k (e[k] with x^{(ℓ)} → jets), truncated at cap.
