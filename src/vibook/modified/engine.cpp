@@ -617,48 +617,39 @@ std::vector<Series> Engine::interior_node(const SubsMap& subs, int cap) const {
     std::vector<Series> g(n);
     std::vector<std::vector<Series>> hm(n, std::vector<Series>(n));
     residual(s, g, &hm, at);
-    // δ = −H⁻¹ g by cofactors (n ≤ 3), or by elimination (more interior unknowns).
-    Series det;
-    std::vector<std::vector<Series>> adj(n, std::vector<Series>(n));
+    // δ = H⁻¹ g by cofactors (n ≤ 3), or by elimination (more interior unknowns).
+    std::vector<Series> delta(n);
     if (n > 3) {
-      bool moved = false;
-      const std::vector<Series> delta = solve_series(hm, g);
-      for (int i = 0; i < n; ++i) {
-        Series step = delta[i].truncated(at);
-        for (int k = step.valuation(); k < step.prec; ++k)
-          if (!vanishes(step.coeff(k))) {
-            moved = true;
-            break;
-          }
-        step.prec = Series::exact;
-        m[i] = (m[i] - step).truncated(cap);
-      }
-      if (at == cap && !moved && !reference_) break;
-      at = std::min(cap, 2 * at);
-      continue;
-    }
-    if (n == 1) {
-      det = hm[0][0];
-      adj[0][0] = Series::constant(1);
-    } else if (n == 2) {
-      det = hm[0][0] * hm[1][1] - hm[0][1] * hm[1][0];
-      adj = {{hm[1][1], -hm[0][1]}, {-hm[1][0], hm[0][0]}};
+      delta = solve_series(hm, g);
     } else {
-      auto cof = [&](int r, int c) {
-        const int r1 = (r + 1) % 3, r2 = (r + 2) % 3, c1 = (c + 1) % 3, c2 = (c + 2) % 3;
-        return hm[r1][c1] * hm[r2][c2] - hm[r1][c2] * hm[r2][c1];
-      };
-      det = hm[0][0] * cof(0, 0) + hm[0][1] * cof(0, 1) + hm[0][2] * cof(0, 2);
-      for (int r = 0; r < 3; ++r)
-        for (int c = 0; c < 3; ++c) adj[c][r] = cof(r, c);
+      Series det;
+      std::vector<std::vector<Series>> adj(n, std::vector<Series>(n));
+      if (n == 1) {
+        det = hm[0][0];
+        adj[0][0] = Series::constant(1);
+      } else if (n == 2) {
+        det = hm[0][0] * hm[1][1] - hm[0][1] * hm[1][0];
+        adj = {{hm[1][1], -hm[0][1]}, {-hm[1][0], hm[0][0]}};
+      } else {
+        auto cof = [&](int r, int c) {
+          const int r1 = (r + 1) % 3, r2 = (r + 2) % 3, c1 = (c + 1) % 3, c2 = (c + 2) % 3;
+          return hm[r1][c1] * hm[r2][c2] - hm[r1][c2] * hm[r2][c1];
+        };
+        det = hm[0][0] * cof(0, 0) + hm[0][1] * cof(0, 1) + hm[0][2] * cof(0, 2);
+        for (int r = 0; r < 3; ++r)
+          for (int c = 0; c < 3; ++c) adj[c][r] = cof(r, c);
+      }
+      for (int i = 0; i < n; ++i) {
+        Series d = Series::constant(0);
+        for (int j = 0; j < n; ++j) d = d + adj[i][j] * g[j];
+        delta[i] = d / det;
+      }
     }
     bool moved = false;
     for (int i = 0; i < n; ++i) {
-      Series d = Series::constant(0);
-      for (int j = 0; j < n; ++j) d = d + adj[i][j] * g[j];
       // The correction to O(h^at), applied as a polynomial: m stays a polynomial in h that
       // the next, more precise step refines.
-      Series step = (d / det).truncated(at);
+      Series step = delta[i].truncated(at);
       for (int k = step.valuation(); k < step.prec; ++k)
         if (!vanishes(step.coeff(k))) {
           moved = true;
@@ -677,8 +668,8 @@ std::vector<Series> Engine::interior_node(const SubsMap& subs, int cap) const {
     for (int k = g[i].valuation(); k < std::min(g[i].prec, cap - 1); ++k)
       if (!vanishes(g[i].coeff(k)))
         throw NumericalError(
-            "the interior node of the three-point discrete Lagrangian could not "
-            "be eliminated (∂L_d/∂qm = 0 has no series solution)");
+            "the interior node(s) of the discrete Lagrangian could not be eliminated "
+            "(∂L_d/∂qm = 0 has no series solution)");
   return m;
 }
 
