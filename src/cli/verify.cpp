@@ -158,6 +158,10 @@ int run(const VerifyOptions& o, const CLI::App& c) {
   }
   // The typed expressions' derivatives are derived symbolically: the limit covers that too.
   const Watchdog watchdog("verify", max_seconds, o.progress);
+  if (c.count("--symbolic") > 0 && c.count("--method") == 0)
+    throw ArgumentError("--symbolic",
+                        "applies to --method only (a typed --ld's variational order is always "
+                        "derived; a composition's, a tableau's and a black box's are measured)");
   if (c.count("--method") > 0 && c.count("--tableau") > 0)
     throw ArgumentError("--tableau", "does not apply to --method: give one method");
   if (c.count("--tableau") > 0) {
@@ -204,6 +208,7 @@ int run(const VerifyOptions& o, const CLI::App& c) {
     mo.lagrangian = o.lagrangian;
     mo.lagrangian_given = c.count("--lagrangian") > 0;
     mo.dim = o.dim;
+    mo.symbolic = o.symbolic;
     return run_method(mo);
   }
   const bool stepper = c.count("--stepper-lib") > 0 || c.count("--stepper-cmd") > 0;
@@ -317,6 +322,10 @@ std::function<int()> add_verify_command(CLI::App& app) {
                 "(S = 2-5), the Galerkin variational integrator with S stages (Gauss "
                 "collocation, order 2S; Lobatto IIIA-IIIB, order 2S-2), on --problem or on "
                 "--potential (1-3 dimensions)");
+  c->add_option("--symbolic", o->symbolic,
+                "with --method: when the symbolic engine derives the variational order beside "
+                "the measured one: auto (default: where it is quick, i.e. one degree of "
+                "freedom, a polynomial Lagrangian, or order <= 4), always, never");
   c->add_option("--tableau", o->tableau,
                 "verify a partitioned Runge-Kutta method instead of an --ld: a JSON file with "
                 "the tableau (a, b; ahat, bhat for the momenta; order, symmetric, name, source), "

@@ -1,7 +1,8 @@
 // `vibook verify --method gauss:S|lobatto:S`: a Galerkin variational integrator
 // (integrators/galerkin.hpp) judged by its measured order against an independent reference,
 // symplecticity, reversibility and energy (verify_method.cpp), on a test problem or on the
-// user's own potential (--potential).
+// user's own potential (--potential) or Lagrangian (--lagrangian), with its variational order
+// derived by the symbolic engine beside the measured one (--symbolic).
 #pragma once
 
 #include <string>
@@ -14,6 +15,7 @@ namespace vibook::cli {
 /// set.
 struct MethodOptions : StudyOptions, TypedPotentialOptions {
   std::string method;
+  std::string symbolic = "auto";  ///< --symbolic: when the engine derives the variational order
 };
 
 /// Run it; the exit status as for `vibook verify` (0 pass, 5 a verdict failed, 2, 3, 4).

@@ -327,6 +327,7 @@ void measure_map(const MapStudy& s, MapMeasurement& rep) {
   }
 
   if (s.generating) measure_variational_order(s, rep);
+  if (s.derive_variational_order) s.derive_variational_order(s, rep);
 
   // --- symplecticity and reversibility -------------------------------------------------------
   std::vector<Eigen::VectorXd> states{z0};

@@ -99,6 +99,9 @@ struct MapStudy {
   /// order is measured and reported beside the order (measure_variational_order).
   GeneratingStep generating;
   std::string generating_from;  ///< how the step's L_d is formed, for the report
+  /// Optional: the variational order derived (symbolically), reported right after the measured
+  /// one; it may add "variational order" to the verdict (method_symbolic.hpp).
+  std::function<void(const MapStudy&, MapMeasurement&)> derive_variational_order;
 };
 
 /// The system a method is measured on, for a route that reports one method on several kinds of

@@ -1,0 +1,40 @@
+/// \file method_symbolic.hpp
+/// \brief The variational order of a Galerkin method derived by the symbolic engine (issue #25,
+/// item 2), for `vibook verify --method`: L_d − L_d^E expanded in h along the solutions of the
+/// intended Lagrangian (Marsden & West 2001, §2.3.1 and Theorem 2.3.1), the Galerkin L_d of
+/// modified/galerkin_dl.hpp with its interior control points eliminated as series. Printed
+/// beside the measured variational order; part of the verdict when derived and the expected
+/// order is an integer (as for a typed `--ld`).
+///
+/// Chapter: \ref chapter-verify (section "The variational order of a composition or a Galerkin
+/// method").
+#pragma once
+
+#include <string>
+
+#include "vibook/modified/galerkin_dl.hpp"
+#include "vibook/verify/method_study.hpp"
+
+namespace vibook::verify {
+
+/// When the engine is run: `auto` where it is quick (one degree of freedom, a Lagrangian
+/// polynomial in q and v, or order at most 4; Kepler in 2-D to h^7 takes minutes), `always`,
+/// `never` (`vibook verify --symbolic`).
+enum class SymbolicUse { automatic, always, never };
+
+/// "auto", "always", "never"; ArgumentError("--symbolic") otherwise.
+SymbolicUse parse_symbolic_use(const std::string& s);
+
+/// Set `study.derive_variational_order` for the Galerkin method `spec` on the Lagrangian `L` of
+/// `dim` degrees of freedom (1 to 3; the engine's symbols J.x(0, i), J.x(1, i) are passed for
+/// q_i, v_i). With SymbolicUse::never, or a rule without closed-form nodes, the report says
+/// why it was not derived.
+void derive_galerkin_variational_order(const MethodSpec& spec, int dim,
+                                       modified::SymbolicLagrangian L, SymbolicUse use,
+                                       MapStudy& study);
+
+/// The intended Lagrangian |v|²/2 − U(q) of a test problem ("pendulum", "kepler",
+/// "henon-heiles") on symbols.
+modified::SymbolicLagrangian test_problem_lagrangian(const std::string& problem);
+
+}  // namespace vibook::verify
