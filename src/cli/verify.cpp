@@ -158,10 +158,12 @@ int run(const VerifyOptions& o, const CLI::App& c) {
   }
   // The typed expressions' derivatives are derived symbolically: the limit covers that too.
   const Watchdog watchdog("verify", max_seconds, o.progress);
-  if (c.count("--symbolic") > 0 && c.count("--method") == 0)
+  if (c.count("--symbolic") > 0 &&
+      (c.count("--method") == 0 && (c.count("--composition") == 0 || o.composition == "ld")))
     throw ArgumentError("--symbolic",
-                        "applies to --method only (a typed --ld's variational order is always "
-                        "derived; a composition's, a tableau's and a black box's are measured)");
+                        "applies to --method and to --composition on a built-in base only (a "
+                        "typed --ld's variational order is always derived; that of a "
+                        "composition of a typed --ld, a tableau or a black box is measured)");
   if (c.count("--method") > 0 && c.count("--tableau") > 0)
     throw ArgumentError("--tableau", "does not apply to --method: give one method");
   if (c.count("--tableau") > 0) {
@@ -260,6 +262,7 @@ int run(const VerifyOptions& o, const CLI::App& c) {
     co.lagrangian = o.lagrangian;
     co.hamiltonian = o.hamiltonian;
     co.dim = o.dim;
+    co.symbolic = o.symbolic;
     if (co.base == "ld" && c.count("--ld") == 0)
       throw ArgumentError("--ld", "is required with --composition ld");
     return run_composition(co);
@@ -323,9 +326,10 @@ std::function<int()> add_verify_command(CLI::App& app) {
                 "collocation, order 2S; Lobatto IIIA-IIIB, order 2S-2), on --problem or on "
                 "--potential (1-3 dimensions)");
   c->add_option("--symbolic", o->symbolic,
-                "with --method: when the symbolic engine derives the variational order beside "
-                "the measured one: auto (default: where it is quick, i.e. one degree of "
-                "freedom, a polynomial Lagrangian, or order <= 4), always, never");
+                "with --method, or --composition on a built-in base: when the symbolic engine "
+                "derives the variational order beside the measured one: auto (default: where it "
+                "is quick, i.e. one degree of freedom, a polynomial Lagrangian, or order <= 4), "
+                "always, never");
   c->add_option("--tableau", o->tableau,
                 "verify a partitioned Runge-Kutta method instead of an --ld: a JSON file with "
                 "the tableau (a, b; ahat, bhat for the momenta; order, symmetric, name, source), "

@@ -14,6 +14,7 @@
 #include "vibook/core/precision.hpp"
 #include "vibook/integrators/composition.hpp"
 #include "vibook/verify/composition_study.hpp"
+#include "vibook/verify/method_symbolic.hpp"
 
 namespace vibook::cli {
 
@@ -27,6 +28,7 @@ struct Plan {
   const TestProblem* problem = nullptr;
   std::vector<double> q0, p0;
   MapStudy study;  // the measurement settings (--t-end, --h-list, --h, --steps, …)
+  verify::SymbolicUse symbolic = verify::SymbolicUse::automatic;
 };
 
 // The coefficients: a catalogue entry or a typed list (parsed at 120 digits), and
@@ -67,6 +69,7 @@ Plan check(const CompositionOptions& o) {
                             "the --ld typed)");
   p.problem = &find_test_problem(o.problem);
   check_coefficients(o, p.spec);
+  p.symbolic = verify::parse_symbolic_use(o.symbolic);
   check_initial_state(o, *p.problem, p.q0, p.p0, p.study);
   check_study_options(o, p.study);
   if (o.json_given) check_output_path(o.json_out, "--json-out", true);
@@ -94,7 +97,8 @@ int run_composition(const CompositionOptions& o) {
       throw ArgumentError(opt,
                           "applies to --composition ld only (the composition of the --ld "
                           "typed); the other bases run on --problem");
-  const Plan p = check(o);
+  Plan p = check(o);
+  verify::derive_composition_variational_order(p.spec, p.problem->name, p.symbolic, p.study);
   MapReport rep;
   verify::measure_composition(p.spec, *p.problem, p.q0, p.p0, p.study, rep);
   return rep.finish(o.json_given, o.json_out);

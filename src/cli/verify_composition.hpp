@@ -16,6 +16,7 @@ struct CompositionOptions : StudyOptions {
   std::string base, coefficients;
   /// --composition ld: the typed discrete Lagrangian and the system, as for --ld
   std::string ld, potential, lagrangian, hamiltonian, dim;
+  std::string symbolic = "auto";  ///< --symbolic: when the engine derives the variational order
 };
 
 /// Run it; the exit status as for `vibook verify` (0 pass, 5 a verdict failed, 2, 3, 4).

@@ -31,15 +31,60 @@ case_ triple-jump-vi1 5 "order conditions,order,energy" 'order 1 by the conditio
   -- --composition vi1 --coefficients yoshida4 --expected-order 4
 case_ perturbed 5 "order conditions" 'weight 3 fails by' 'inexact coefficients' \
   -- --composition sv --coefficients "$Y6P" --expected-order 6
-# the swapped stages' discrete Lagrangian has variational order 2, not 3
-case_ swapped 5 "order conditions,order,energy" 'order 2 by the conditions' \
+# the swapped stages' discrete Lagrangian has variational order 2, not 3 (measured, and derived
+# by the engine from the composed L_d with its interior points eliminated)
+case_ swapped 5 "order conditions,order,variational order,energy" 'order 2 by the conditions' \
   '^variational order +(1\.[89]|2\.[01])[0-9] \(measured.*expected 3: differs' \
+  '^  derived +2 by the engine: .*expected 3: NO \(part of the verdict\)' \
   -- --composition se --coefficients '3/8,7/24*,-25/24,3/8*,0,1*' --expected-order 3
 case_ first-order-base 5 "order conditions,order,energy" 'order 1 by the conditions' \
   'expected 4' -- --composition se --coefficients yoshida4 --expected-order 4
-case_ doubled 5 "order conditions,order" 'weight 1 fails' \
+case_ doubled 5 "order conditions,order,variational order" 'weight 1 fails' \
   '^variational order +(-0\.[01]|0\.[01])[0-9] \(measured.*expected 2: differs' \
+  '^  derived +0 by the engine: .*expected 2: NO' \
   -- --composition sv --coefficients 1,1 --expected-order 2
+
+# The variational order derived by the engine (coefficients exact rationals: typed lists, ruth3):
+# Ruth's method is of variational order 3 on Kepler and on Hénon-Heiles (whose 1/3 must stay
+# exact through the stages' halves), midpoint in thirds of order 2. Two Störmer-Verlet half
+# steps are one step of h/2 taken twice: the h^3 coefficient of L_d - L_d^E is exactly a quarter
+# of one whole step's (an independent check on the elimination of the interior point).
+case_ engine-ruth3 0 "" '^  derived +3 by the engine: .*expected 3: yes' \
+  '^verdict +PASS \(order conditions, order, variational order, symplectic, energy\)' \
+  -- --composition se --coefficients ruth3
+case_ engine-hh 0 "" '^  derived +2 by the engine: .*expected 2: yes' \
+  -- --composition sv --coefficients 1/2,1/2 --problem henon-heiles
+case_ engine-midpoint 0 "" '^  derived +2 by the engine: .*expected 2: yes' \
+  -- --composition midpoint --coefficients 1/3,1/3,1/3 --problem pendulum
+"$V" verify --composition sv --coefficients 1 --problem pendulum --json-out "$tmp/sv1.json" \
+  >/dev/null 2>&1
+"$V" verify --composition sv --coefficients 0.5,0.5 --problem pendulum \
+  --json-out "$tmp/sv2.json" >/dev/null 2>&1
+if python3 - "$tmp/sv1.json" "$tmp/sv2.json" <<'PY'; then ok; else bad "engine: two half steps"; fi
+import json, re, sys
+from fractions import Fraction
+def terms(s):  # "-1/12*cos(x1)*v1^2+1/24*sin(x1)^2" -> {monomial: coefficient}
+    out = {}
+    for sign, num, den, mono in re.findall(r"([+-]?)(\d+)(?:/(\d+))?\*([^+-]+)", s):
+        out[mono] = Fraction(int(num), int(den or 1)) * (-1 if sign == "-" else 1)
+    return out
+one, two = (json.load(open(f))["variational_order"]["engine"] for f in sys.argv[1:])
+assert one["order"] == 2 and two["order"] == 2, (one, two)
+a, b = terms(one["defect"][2]), terms(two["defect"][2])
+assert a and {m: c / 4 for m, c in a.items()} == b, (a, b)
+PY
+# Not derived, and said why: irrational (yoshida4) or numerical (yoshida6) coefficients, a base
+# the engine does not compose; --symbolic never.
+case_ engine-cube-roots 0 "" '^  derived +not derived: the coefficients of yoshida4 are cube roots' \
+  -- --composition sv --coefficients yoshida4
+case_ engine-numerical 0 "" '^  derived +not derived: the coefficients of yoshida6 are known only numerically' \
+  -- --composition sv --coefficients yoshida6
+case_ engine-vi1 0 "" '^  derived +not derived: the engine composes sv, midpoint, se and se-adjoint' \
+  -- --composition vi1 --coefficients ruth3 --problem pendulum
+case_ engine-never 0 "" '^  derived +not derived \(--symbolic never\)' \
+  -- --composition se --coefficients ruth3 --problem pendulum --symbolic never
+arg symbolic-ld --symbolic --composition ld --coefficients yoshida4 --ld 'h*((q1-q0)^2/(2*h^2))' \
+  --potential x --symbolic always
 
 # --composition ld: compositions of the user's own typed discrete Lagrangian, on the system of
 # --potential (or --lagrangian, below). The trapezoidal L_d (Störmer–Verlet) is symmetric (the engine shows it), so

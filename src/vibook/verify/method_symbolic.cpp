@@ -3,7 +3,10 @@
 // Lagrangian), the interior control points eliminated order by order in h.
 #include "vibook/verify/method_symbolic.hpp"
 
+#include <cctype>
 #include <cmath>
+#include <functional>
+#include <memory>
 #include <mutex>
 #include <optional>
 #include <string>
@@ -54,80 +57,81 @@ modified::SymbolicLagrangian test_problem_lagrangian(const std::string& problem)
   throw std::invalid_argument("test_problem_lagrangian: no Lagrangian for '" + problem + "'");
 }
 
-void derive_galerkin_variational_order(const MethodSpec& spec, int dim,
-                                       modified::SymbolicLagrangian L, SymbolicUse use,
-                                       MapStudy& study) {
-  const std::optional<modified::ExactQuadrature> rule =
-      modified::exact_quadrature(spec.rule.name, spec.stages);
-  const bool judged =
-      spec.expected == std::floor(spec.expected) && spec.expected <= modified::max_order;
-  const int K = static_cast<int>(std::min<double>(std::ceil(spec.expected), modified::max_order));
-  // Is L polynomial in q and v? (Then the engine is quick in any dimension.)
-  bool polynomial = false;
-  {
-    std::lock_guard<std::mutex> lock(modified::ginac_mutex());
-    modified::JetSpace J(dim);
-    std::vector<modified::ex> x, v;
-    GiNaC::lst vars;
-    for (int i = 0; i < dim; ++i) {
-      x.push_back(J.x(0, i));
-      v.push_back(J.x(1, i));
-      vars.append(x.back());
-      vars.append(v.back());
-    }
-    polynomial = L(x, v).is_polynomial(vars);
+namespace {
+
+// What the engine is given: the discrete Lagrangian (built on the jets it is handed), the
+// intended L, and why it is not derived when it is not.
+struct Derivation {
+  int dim = 1;
+  std::function<modified::SymbolicDL(std::shared_ptr<modified::JetSpace>)> make_dl;
+  modified::SymbolicLagrangian L;
+  std::string source;  ///< for the JSON
+  std::string skip;    ///< when set: not derived, and why
+};
+
+// Is L polynomial in q and v? (Then the engine is quick in any dimension.)
+bool polynomial_lagrangian(const modified::SymbolicLagrangian& L, int dim) {
+  std::lock_guard<std::mutex> lock(modified::ginac_mutex());
+  modified::JetSpace J(dim);
+  std::vector<modified::ex> x, v;
+  GiNaC::lst vars;
+  for (int i = 0; i < dim; ++i) {
+    x.push_back(J.x(0, i));
+    v.push_back(J.x(1, i));
+    vars.append(x.back());
+    vars.append(v.back());
   }
-  std::string skip;
-  if (use == SymbolicUse::never)
-    skip = "not derived (--symbolic never)";
-  else if (!rule)
-    skip = fmt::format(
-        "not derived: the nodes of {} are nested radicals, and the engine's zero test is exact "
-        "only over the rationals and their square roots",
-        spec.name);
-  else if (use == SymbolicUse::automatic && dim > 1 && K > 4 && !polynomial)
-    skip = fmt::format(
-        "not derived by default: to h^{} in {} dimensions, with a Lagrangian that is not "
-        "polynomial, the engine takes minutes (gauss:3 on Kepler: about 2 minutes on 2 cores); "
-        "--symbolic always runs it",
-        K + 1, dim);
-  const MethodSpec method = spec;
-  study.derive_variational_order = [=](const MapStudy& s, MapMeasurement& rep) {
+  return L(x, v).is_polynomial(vars);
+}
+
+// Set study.derive_variational_order: the engine's L_d − L_d^E to h^{K+1}, K the study's
+// expected order (s.expected, known when the hook runs), printed on the line "  derived" and
+// kept in the JSON under variational_order.engine; part of the verdict when the expected order
+// is an integer up to the engine's maximum.
+void install(Derivation d, SymbolicUse use, MapStudy& study) {
+  const bool quick = d.dim == 1 || polynomial_lagrangian(d.L, d.dim);
+  if (use == SymbolicUse::never) d.skip = "not derived (--symbolic never)";
+  study.derive_variational_order = [d, use, quick](const MapStudy& s, MapMeasurement& rep) {
     json& jv = rep.js["variational_order"];
+    const bool judged = s.expected == std::floor(s.expected) && s.expected <= modified::max_order;
+    const int K = static_cast<int>(std::min<double>(std::ceil(s.expected), modified::max_order));
+    std::string skip = d.skip;
+    if (skip.empty() && use == SymbolicUse::automatic && !quick && K > 4)
+      skip = fmt::format(
+          "not derived by default: to h^{} in {} dimensions, with a Lagrangian that is not "
+          "polynomial, the engine takes minutes (gauss:3 on Kepler: about 2 minutes on 2 "
+          "cores); --symbolic always runs it",
+          K + 1, d.dim);
     if (!skip.empty()) {
       rep.line("  derived", skip);
       jv["engine"] = {{"derived", false}, {"reason", skip}};
       return;
     }
     json je;
-    je["source"] =
-        "engine: the Galerkin L_d (quadrature action of the degree-S polynomial, exact nodes "
-        "and weights), its interior control points eliminated as series in h; L_d - L_d^E "
-        "along the solutions of the intended L, expanded about the step's midpoint (Marsden & "
-        "West 2001, Sec. 2.3.1 and 2.6)";
+    je["source"] = d.source;
     je["checked_to"] = fmt::format("h^{}", K + 1);
-    je["expected"] = method.expected;
+    je["expected"] = s.expected;
     int r = -1;
     std::string first_term;
     try {
       std::lock_guard<std::mutex> lock(modified::ginac_mutex());
-      auto J = std::make_shared<modified::JetSpace>(dim);
-      modified::Engine engine(modified::galerkin_dl(*rule, L, J, method.name), K);
+      auto J = std::make_shared<modified::JetSpace>(d.dim);
+      modified::Engine engine(d.make_dl(J), K);
       std::vector<modified::ex> x, v;
-      for (int i = 0; i < dim; ++i) {
+      for (int i = 0; i < d.dim; ++i) {
         x.push_back(J->x(0, i));
         v.push_back(J->x(1, i));
       }
-      const auto vo = engine.variational_order(modified::exact_rationals(L(x, v)));
+      const auto vo = engine.variational_order(modified::exact_rationals(d.L(x, v)));
       json terms = json::array();
-      for (const auto& d : vo.defect)
-        terms.push_back(modified::canonical_string(d, modified::Format::text));
+      for (const auto& t : vo.defect)
+        terms.push_back(modified::canonical_string(t, modified::Format::text));
       je["defect"] = terms;  // [k]: the coefficient of h^{k+1} in L_d − L_d^E
       r = vo.order;
       if (r >= 0) first_term = terms[static_cast<std::size_t>(r)].get<std::string>();
     } catch (const std::exception& e) {
-      // The engine could not reach the answer (an interior point that has no series solution,
-      // a Lagrangian it cannot expand): reported, and the verdict does not count on it.
+      // The engine could not reach the answer (interior points that have no series solution, a
+      // Lagrangian it cannot expand): reported, and the verdict does not count on it.
       const std::string why = std::string("not derived (engine): ") + e.what();
       rep.line("  derived", why);
       jv["engine"] = {{"derived", false}, {"reason", why}};
@@ -135,7 +139,7 @@ void derive_galerkin_variational_order(const MethodSpec& spec, int dim,
     }
     je["derived"] = true;
     je["order"] = r >= 0 ? json(r) : json(nullptr);
-    const bool agrees_expected = r >= 0 && r == method.expected;
+    const bool agrees_expected = r >= 0 && r == s.expected;
     if (judged) je["passed"] = agrees_expected;
     std::string measured;
     if (jv.contains("order") && jv["order"].is_number()) {
@@ -158,10 +162,10 @@ void derive_galerkin_variational_order(const MethodSpec& spec, int dim,
                      K, K + 1);
     rep.line("  derived",
              value +
-                 (judged ? fmt::format("; expected {:g}: {} (part of the verdict)", method.expected,
+                 (judged ? fmt::format("; expected {:g}: {} (part of the verdict)", s.expected,
                                        agrees_expected ? "yes" : "NO")
                          : fmt::format("; expected {:g}: not judged (not an integer up to {})",
-                                       method.expected, modified::max_order)) +
+                                       s.expected, modified::max_order)) +
                  measured);
     jv["engine"] = je;
     if (judged) {
@@ -169,6 +173,206 @@ void derive_galerkin_variational_order(const MethodSpec& spec, int dim,
       if (!agrees_expected) rep.failed.push_back("variational order");
     }
   };
+}
+
+}  // namespace
+
+void derive_galerkin_variational_order(const MethodSpec& spec, int dim,
+                                       modified::SymbolicLagrangian L, SymbolicUse use,
+                                       MapStudy& study) {
+  const std::optional<modified::ExactQuadrature> rule =
+      modified::exact_quadrature(spec.rule.name, spec.stages);
+  Derivation d;
+  d.dim = dim;
+  d.L = L;
+  d.source =
+      "engine: the Galerkin L_d (quadrature action of the degree-S polynomial, exact nodes and "
+      "weights), its interior control points eliminated as series in h; L_d - L_d^E along the "
+      "solutions of the intended L, expanded about the step's midpoint (Marsden & West 2001, "
+      "Sec. 2.3.1 and 2.6)";
+  if (!rule)
+    d.skip = fmt::format(
+        "not derived: the nodes of {} are nested radicals, and the engine's zero test is exact "
+        "only over the rationals and their square roots",
+        spec.name);
+  else
+    d.make_dl = [rule = *rule, L, name = spec.name](std::shared_ptr<modified::JetSpace> J) {
+      return modified::galerkin_dl(rule, L, std::move(J), name);
+    };
+  install(std::move(d), use, study);
+}
+
+// --- compositions -----------------------------------------------------------------------------
+
+namespace {
+
+using ExactStages = std::vector<std::pair<modified::ex, bool>>;  // coefficient, adjoint
+
+// A decimal or a ratio of decimals, exactly ("-25/24", "0.125"); nullopt for anything else.
+std::optional<GiNaC::numeric> exact_number(const std::string& t) {
+  auto decimal = [](const std::string& s) -> std::optional<GiNaC::numeric> {
+    std::size_t i = 0;
+    bool negative = false;
+    if (i < s.size() && (s[i] == '+' || s[i] == '-')) negative = s[i++] == '-';
+    GiNaC::numeric value = 0, scale = 1;
+    bool digits = false, point = false;
+    for (; i < s.size(); ++i) {
+      if (s[i] == '.' && !point) {
+        point = true;
+      } else if (std::isdigit(static_cast<unsigned char>(s[i]))) {
+        digits = true;
+        value = value * 10 + (s[i] - '0');
+        if (point) scale *= 10;
+      } else {
+        return std::nullopt;
+      }
+    }
+    if (!digits) return std::nullopt;
+    return (negative ? -value : value) / scale;
+  };
+  const auto slash = t.find('/');
+  if (slash == std::string::npos) return decimal(t);
+  const auto a = decimal(t.substr(0, slash)), b = decimal(t.substr(slash + 1));
+  if (!a || !b || b->is_zero()) return std::nullopt;
+  return *a / *b;
+}
+
+// The stages as exact rationals: a typed list of exact decimals or ratios, or Ruth's catalogue
+// entry. nullopt, with the reason, otherwise.
+std::optional<ExactStages> exact_stages(const CompositionSpec& spec, std::string& why) {
+  ExactStages st;
+  if (spec.entry) {
+    const std::string& n = spec.entry->name;
+    if (n == "yoshida4" || n == "suzuki4") {
+      // Closed forms in Q(2^(1/3)) exist, but the engine's series with cube roots in every
+      // coefficient did not finish in two minutes on the pendulum: not attempted.
+      why = fmt::format(
+          "not derived: the coefficients of {} are cube roots ({}), and the engine's zero test "
+          "is exact only over the rationals and their square roots",
+          n, spec.entry->derivation);
+      return std::nullopt;
+    }
+    if (n != "ruth3") {
+      why = fmt::format(
+          "not derived: the coefficients of {} are known only numerically ({}), and the "
+          "engine's zero test needs them exactly",
+          n, spec.entry->derivation);
+      return std::nullopt;
+    }
+  }
+  const std::string list = spec.entry ? std::string("7/24*,3/8,3/8*,-25/24,1*") : spec.coefficients;
+  std::size_t from = 0;
+  while (from <= list.size()) {
+    const auto comma = std::min(list.find(',', from), list.size());
+    std::string t = list.substr(from, comma - from);
+    t.erase(0, t.find_first_not_of(" \t"));
+    t.erase(t.find_last_not_of(" \t") + 1);
+    bool adjoint = false;
+    if (!t.empty() && t.back() == '*') {
+      adjoint = true;
+      t.pop_back();
+      t.erase(t.find_last_not_of(" \t") + 1);
+    }
+    const auto x = exact_number(t);
+    if (!x) {
+      why = "not derived: the coefficient '" + t +
+            "' is not an exact decimal or ratio, and the engine's zero test needs it exactly";
+      return std::nullopt;
+    }
+    st.emplace_back(*x, adjoint);
+    from = comma + 1;
+  }
+  return st;
+}
+
+// The composed discrete Lagrangian: the sum of the stages' L_d between consecutive interior
+// points, the adjoint's L_d for a stage marked '*' (composition_study.cpp's construction, on
+// symbols), zero stages dropped. Interior point i starts on the chord at the stages' partial
+// sum (a rational close to it: only the start of Newton's method on series).
+template <int N>
+modified::SymbolicDL composition_dl(const std::string& base, const ExactStages& stages,
+                                    const modified::SymbolicLagrangian& lagrangian,
+                                    std::shared_ptr<modified::JetSpace> J,
+                                    const std::string& description) {
+  using V = Vec<modified::ex, N>;
+  using Dl = std::function<modified::ex(const V&, const V&, const modified::ex&)>;
+  // The stages' discrete Lagrangians (mechanics/discrete_lagrangian.hpp; Vermeeren 2017,
+  // Example 1) on the same L as the engine's exact side, written here with exact halves: the
+  // templates' 0.5 would turn a rational such as Hénon–Heiles' 1/3 into a 17-digit float, and
+  // its binary64 value would differ from 1/6 in the 17th digit, a defect at h^1.
+  const auto L = [&lagrangian](const V& q, const V& v) {
+    std::vector<modified::ex> x(q.data(), q.data() + N), u(v.data(), v.data() + N);
+    return lagrangian(x, u);
+  };
+  const Dl trapezoid = [L](const V& a, const V& b, const modified::ex& h) {
+    const V v = (b - a) / h;
+    return h * (L(a, v) + L(b, v)) / 2;
+  };
+  const Dl midpoint = [L](const V& a, const V& b, const modified::ex& h) {
+    return h * L(V((a + b) / 2), V((b - a) / h));
+  };
+  const Dl right = [L](const V& a, const V& b, const modified::ex& h) {  // se: L(q1, v)
+    return h * L(b, V((b - a) / h));
+  };
+  const Dl left = [L](const V& a, const V& b, const modified::ex& h) {  // se-adjoint: L(q0, v)
+    return h * L(a, V((b - a) / h));
+  };
+  Dl first, second;  // the base's L_d and its adjoint's
+  if (base == "sv") {
+    first = second = trapezoid;
+  } else if (base == "midpoint") {
+    first = second = midpoint;
+  } else {
+    first = base == "se" ? right : left;
+    second = base == "se" ? left : right;
+  }
+  ExactStages st;
+  for (const auto& s : stages)
+    if (!s.first.is_zero()) st.push_back(s);
+  std::vector<GiNaC::numeric> at;
+  double sum = 0;
+  for (std::size_t i = 0; i + 1 < st.size(); ++i) {
+    sum += GiNaC::ex_to<GiNaC::numeric>(GiNaC::evalf(st[i].first)).to_double();
+    at.emplace_back(static_cast<long>(std::lround(sum * 1024)), 1024);
+  }
+  const auto dl = [&](const V& q0, const std::vector<V>& Q, const V& q1, const modified::ex& h) {
+    auto point = [&](std::size_t i) -> const V& {
+      return i == 0 ? q0 : i == st.size() ? q1 : Q[i - 1];
+    };
+    modified::ex total = 0;
+    for (std::size_t i = 0; i < st.size(); ++i)
+      total += (st[i].second ? second : first)(point(i), point(i + 1), st[i].first * h);
+    return total;
+  };
+  return modified::symbolic_dl_interior<N>(dl, std::move(J), description, at);
+}
+
+}  // namespace
+
+void derive_composition_variational_order(const CompositionSpec& spec, const std::string& problem,
+                                          SymbolicUse use, MapStudy& study) {
+  Derivation d;
+  d.L = test_problem_lagrangian(problem);
+  d.dim = problem == "pendulum" ? 1 : 2;
+  d.source =
+      "engine: the composed L_d (the stages' discrete Lagrangians summed over the interior "
+      "points, the coefficients exact), its interior points eliminated as series in h; L_d - "
+      "L_d^E along the solutions of the intended L, expanded about the step's midpoint "
+      "(Marsden & West 2001, Sec. 2.3.1)";
+  const std::string base = spec.base->name;
+  std::string why;
+  const auto stages = exact_stages(spec, why);
+  if (base != "sv" && base != "midpoint" && base != "se" && base != "se-adjoint")
+    d.skip = "not derived: the engine composes sv, midpoint, se and se-adjoint (not " + base + ")";
+  else if (!stages)
+    d.skip = why;
+  else
+    d.make_dl = [base, st = *stages, L = d.L, dim = d.dim,
+                 name = spec.coefficients](std::shared_ptr<modified::JetSpace> J) {
+      return dim == 1 ? composition_dl<1>(base, st, L, std::move(J), name)
+                      : composition_dl<2>(base, st, L, std::move(J), name);
+    };
+  install(std::move(d), use, study);
 }
 
 }  // namespace vibook::verify

@@ -1,10 +1,11 @@
 /// \file method_symbolic.hpp
-/// \brief The variational order of a Galerkin method derived by the symbolic engine (issue #25,
-/// item 2), for `vibook verify --method`: L_d − L_d^E expanded in h along the solutions of the
-/// intended Lagrangian (Marsden & West 2001, §2.3.1 and Theorem 2.3.1), the Galerkin L_d of
-/// modified/galerkin_dl.hpp with its interior control points eliminated as series. Printed
-/// beside the measured variational order; part of the verdict when derived and the expected
-/// order is an integer (as for a typed `--ld`).
+/// \brief The variational order of a Galerkin method or a composition derived by the symbolic
+/// engine (issue #25, item 2), for `vibook verify --method` and `--composition`: L_d − L_d^E
+/// expanded in h along the solutions of the intended Lagrangian (Marsden & West 2001, §2.3.1
+/// and Theorem 2.3.1), the method's L_d written with its interior points (the Galerkin control
+/// points of modified/galerkin_dl.hpp; the points a composition's stages pass through) and
+/// those eliminated as series. Printed beside the measured variational order; part of the
+/// verdict when derived and the expected order is an integer (as for a typed `--ld`).
 ///
 /// Chapter: \ref chapter-verify (section "The variational order of a composition or a Galerkin
 /// method").
@@ -13,6 +14,7 @@
 #include <string>
 
 #include "vibook/modified/galerkin_dl.hpp"
+#include "vibook/verify/composition_study.hpp"
 #include "vibook/verify/method_study.hpp"
 
 namespace vibook::verify {
@@ -32,6 +34,12 @@ SymbolicUse parse_symbolic_use(const std::string& s);
 void derive_galerkin_variational_order(const MethodSpec& spec, int dim,
                                        modified::SymbolicLagrangian L, SymbolicUse use,
                                        MapStudy& study);
+
+/// The same for a composition on a test problem ("pendulum", "kepler", "henon-heiles"): bases
+/// sv, midpoint, se and se-adjoint, coefficients exact rationals (a typed list of exact
+/// decimals or ratios; ruth3). Otherwise the report says why it is not derived.
+void derive_composition_variational_order(const CompositionSpec& spec, const std::string& problem,
+                                          SymbolicUse use, MapStudy& study);
 
 /// The intended Lagrangian |v|²/2 − U(q) of a test problem ("pendulum", "kepler",
 /// "henon-heiles") on symbols.
