@@ -35,10 +35,12 @@ struct NewtonOptions {
 
 namespace newton_detail {
 // The stopping rule of NewtonOptions, for an update dx just applied to x (dx scaled by
-// `factor` >= 1 when the iteration converges only linearly).
+// `factor` >= 1 when the iteration converges only linearly). Always inlined: it is on the
+// critical path of every iteration of a compiled discrete Lagrangian's cheap steps.
 template <int N, class T>
-bool update_is_small(const Vec<T, N>& x, const Vec<T, N>& dx, const Vec<T, N>& ref,
-                     const T& step_rel, const T& step_abs, const T& factor = T(1)) {
+[[gnu::always_inline]] inline bool update_is_small(const Vec<T, N>& x, const Vec<T, N>& dx,
+                                                   const Vec<T, N>& ref, const T& step_rel,
+                                                   const T& step_abs, const T& factor = T(1)) {
   const T displacement = (x - ref).template lpNorm<Eigen::Infinity>();
   for (Eigen::Index i = 0; i < x.size(); ++i) {
     using std::abs;

@@ -341,7 +341,7 @@ class CompiledDiscreteLagrangian {
         T.run(wn_.data(), 0, T.prefix());
       }
     }
-    for (int i = 0; i < N; ++i) wn_[N + i] = q1(i);
+    Eigen::Map<Vec<double, N>>(wn_.data() + N) = q1;  // one vector store: see d2
     if (native_.loaded()) {
       native_.newton_first(wn_.data());
       if (with_jacobian) native_.newton_rest(wn_.data());
@@ -350,7 +350,9 @@ class CompiledDiscreteLagrangian {
     }
     have_prefix_ = true;
     const auto& o = T.outputs();
-    for (int i = 0; i < N; ++i) D1(i) = wn_[o[i]];
+    Vec<double, N> d1;  // gathered in registers and stored whole: the caller adds p0 to it
+    for (int i = 0; i < N; ++i) d1(i) = wn_[o[i]];
+    D1 = d1;
     if (with_jacobian)
       for (int i = 0; i < N; ++i)
         for (int j = 0; j < N; ++j) D12(i, j) = wn_[o[N + N * i + j]];
@@ -358,10 +360,10 @@ class CompiledDiscreteLagrangian {
   /// D2 L_d(q0, q1, h): the momentum p1 at the end of the step.
   Vec<double, N> d2(const Vec<double, N>& q0, const Vec<double, N>& q1, double h) const {
     const Tape& T = t_->momentum;
-    for (int i = 0; i < N; ++i) {
-      wm_[i] = q0(i);
-      wm_[N + i] = q1(i);
-    }
+    // Whole-vector stores: the native code loads q0 and q1 as vectors, and a load that spans
+    // two scalar stores waits for them to retire instead of being forwarded.
+    Eigen::Map<Vec<double, N>>(wm_.data()) = q0;
+    Eigen::Map<Vec<double, N>>(wm_.data() + N) = q1;
     wm_[2 * N] = h;
     if (native_.loaded())
       native_.momentum(wm_.data());
