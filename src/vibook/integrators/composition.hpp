@@ -363,6 +363,10 @@ struct CatalogueEntry {
   int stages = 0;
 };
 
+/// Ruth's third-order method as stages on symplectic Euler, exact rationals ('*' the adjoint):
+/// the catalogue's entry, and the list the symbolic engine derives it from.
+inline constexpr const char* kRuth3Stages = "7/24*,3/8,3/8*,-25/24,1*";
+
 /// The catalogue, in the order the book's audit lists it.
 inline const std::vector<CatalogueEntry>& catalogue() {
   static const std::vector<CatalogueEntry> entries = {
@@ -519,8 +523,16 @@ Stages<Real> catalogue_stages(const std::string& name, int digits,
                           R("-0.60550853383003451169892108")});
   if (name == "ruth3") {
     Stages<Real> s;
-    for (const char* t : {"7/24*", "3/8", "3/8*", "-25/24", "1*"})
-      s.push_back(parse_stage<Real>("--coefficients", t));
+    std::string item;
+    for (const char* c = kRuth3Stages;; ++c) {
+      if (*c == ',' || *c == '\0') {
+        s.push_back(parse_stage<Real>("--coefficients", item));
+        item.clear();
+        if (*c == '\0') break;
+      } else {
+        item += *c;
+      }
+    }
     return s;
   }
   throw ArgumentError("--coefficients", "no catalogue entry '" + name + "'");

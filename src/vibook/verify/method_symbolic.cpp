@@ -260,7 +260,7 @@ std::optional<ExactStages> exact_stages(const CompositionSpec& spec, std::string
       return std::nullopt;
     }
   }
-  const std::string list = spec.entry ? std::string("7/24*,3/8,3/8*,-25/24,1*") : spec.coefficients;
+  const std::string list = spec.entry ? std::string(composition::kRuth3Stages) : spec.coefficients;
   std::size_t from = 0;
   while (from <= list.size()) {
     const auto comma = std::min(list.find(',', from), list.size());
@@ -353,7 +353,10 @@ void derive_composition_variational_order(const CompositionSpec& spec, const std
                                           SymbolicUse use, MapStudy& study) {
   Derivation d;
   d.L = test_problem_lagrangian(problem);
-  d.dim = problem == "pendulum" ? 1 : 2;
+  const TestProblem* tp = find_problem(problem);
+  if (!tp)
+    throw std::logic_error("derive_composition_variational_order: no test problem " + problem);
+  d.dim = static_cast<int>(tp->q0.size());
   d.source =
       "engine: the composed L_d (the stages' discrete Lagrangians summed over the interior "
       "points, the coefficients exact), its interior points eliminated as series in h; L_d - "
