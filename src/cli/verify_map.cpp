@@ -128,19 +128,6 @@ namespace {
 // is of second order in v's since ∂H/∂v = p − ∂L/∂v = 0), keeping the point it was computed
 // at; nullopt when that does not happen in 60 iterations or a number leaves the finite ones
 // (L not regular there).
-// L, its gradient and its Hessian at w = (q, v), by nested forward AutoDiff in T on the tree.
-template <int N, class T>
-void lagrangian_derivatives(const verify::TypedDiscreteLagrangian& sys, const Vec<T, 2 * N>& w,
-                            T& value, Vec<T, 2 * N>& g, Mat<T, 2 * N>& H) {
-  verify::value_gradient_hessian<2 * N, T>(
-      [&](const auto& x) {
-        using S = scalar_t<decltype(x)>;
-        const Vec<S, N> qs = x.template head<N>(), vs = x.template tail<N>();
-        return sys.lagrangian<N, S>(qs, vs);
-      },
-      w, value, g, H);
-}
-
 template <int N, class T>
 struct LegendrePoint {
   Vec<T, N> v, dLdq;
@@ -224,10 +211,8 @@ void set_lagrangian_system(MapStudy& s, const verify::TypedDiscreteLagrangian& s
       Vec<dd_real, 2 * N> g;
       Mat<dd_real, 2 * N> H;
       lagrangian_derivatives<N, dd_real>(sys, w, value, g, H);
-      const Mat<dd_real, N> M = H.template bottomRightCorner<N, N>();
-      const Mat<dd_real, N> B = H.template bottomLeftCorner<N, N>();
       const Vec<dd_real, N> acc =
-          M.partialPivLu().solve(Vec<dd_real, N>(g.template head<N>() - B * w.template tail<N>()));
+          euler_lagrange_acceleration<N, dd_real>(g, H, Vec<dd_real, N>(w.template tail<N>()));
       std::vector<dd_real> r(y.size());
       for (int i = 0; i < N; ++i) {
         r[static_cast<std::size_t>(i)] = w(N + i);

@@ -34,6 +34,31 @@ using verify::test_problems;
 using verify::TestProblem;
 using verify::vec_text;
 
+/// The typed Lagrangian of `sys` (`--lagrangian`, in q and v) at w = (q, v): its value, gradient
+/// and Hessian in the 2N variables, by nested forward AutoDiff in T on the expression tree.
+template <int N, class T>
+void lagrangian_derivatives(const verify::TypedDiscreteLagrangian& sys, const Vec<T, 2 * N>& w,
+                            T& value, Vec<T, 2 * N>& g, Mat<T, 2 * N>& H) {
+  verify::value_gradient_hessian<2 * N, T>(
+      [&](const auto& x) {
+        using S = scalar_t<decltype(x)>;
+        const Vec<S, N> qs = x.template head<N>(), vs = x.template tail<N>();
+        return sys.lagrangian<N, S>(qs, vs);
+      },
+      w, value, g, H);
+}
+
+/// The acceleration the Euler–Lagrange equations give at (q, v), from L's gradient g and Hessian
+/// H there (lagrangian_derivatives): M a = ∂L/∂q − B v, with M = ∂²L/∂v² and B = ∂²L/∂v∂q.
+template <int N, class T>
+Vec<T, N> euler_lagrange_acceleration(const Vec<T, 2 * N>& g, const Mat<T, 2 * N>& H,
+                                      const Vec<T, N>& v) {
+  const Mat<T, N> M = H.template bottomRightCorner<N, N>();
+  const Mat<T, N> B = H.template bottomLeftCorner<N, N>();
+  const Vec<T, N> rhs = g.template head<N>() - B * v;
+  return M.partialPivLu().solve(rhs);
+}
+
 /// Hamilton's equations of the Hamiltonian of `sys` in double-double, (q, p) stacked: the field
 /// every reference of a typed system solves. `sys` must outlive it. N = 1..verify::kMaxDim,
 /// instantiated once (typed_system.cpp).

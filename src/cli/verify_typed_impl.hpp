@@ -487,13 +487,7 @@ int run_verify(const VerifyOptions& o, const verify::TypedDiscreteLagrangian& dl
         Vec<T, 2 * N> w;
         w << q, v;
         T value;
-        verify::value_gradient_hessian<2 * N, T>(
-            [&](const auto& x) {
-              using S = scalar_t<decltype(x)>;
-              const Vec<S, N> qq = x.template head<N>(), vv = x.template tail<N>();
-              return dl.lagrangian<N, S>(qq, vv);
-            },
-            w, value, g, H);
+        lagrangian_derivatives<N, T>(dl, w, value, g, H);
       };
       f = [&](const std::vector<T>& y) {
         Vec<T, N> q, v;
@@ -504,10 +498,7 @@ int run_verify(const VerifyOptions& o, const verify::TypedDiscreteLagrangian& dl
         Vec<T, 2 * N> g;
         Mat<T, 2 * N> H;
         derivatives(q, v, g, H);
-        const Mat<T, N> M = H.template bottomRightCorner<N, N>();
-        const Mat<T, N> B = H.template bottomLeftCorner<N, N>();  // d²L/dv_i dq_j
-        const Vec<T, N> rhs = g.template head<N>() - B * v;
-        const Vec<T, N> a = M.partialPivLu().solve(rhs);
+        const Vec<T, N> a = euler_lagrange_acceleration<N, T>(g, H, v);
         std::vector<T> r(2 * N);
         for (int i = 0; i < N; ++i) {
           r[static_cast<std::size_t>(i)] = v(i);
