@@ -650,7 +650,7 @@ Check field_audit_odeint() {
 Check field_audit_galerkin() {
   return {"field-audit-galerkin",
           "The field audit: Galerkin variational integrators (Gauss 1-4, Lobatto 2-5 nodes) on "
-          "Kepler and Hénon–Heiles (long study: about 35 s)",
+          "Kepler and Hénon–Heiles (long study: about 45 s)",
           false, verify::ids("field-audit-galerkin"),
           [](const Context&) { return verify::run_rows("field-audit-galerkin"); }};
 }
