@@ -158,12 +158,10 @@ int run(const VerifyOptions& o, const CLI::App& c) {
   }
   // The typed expressions' derivatives are derived symbolically: the limit covers that too.
   const Watchdog watchdog("verify", max_seconds, o.progress);
-  if (c.count("--symbolic") > 0 &&
-      (c.count("--method") == 0 && (c.count("--composition") == 0 || o.composition == "ld")))
+  if (c.count("--symbolic") > 0 && c.count("--method") == 0 && c.count("--composition") == 0)
     throw ArgumentError("--symbolic",
-                        "applies to --method and to --composition on a built-in base only (a "
-                        "typed --ld's variational order is always derived; that of a "
-                        "composition of a typed --ld, a tableau or a black box is measured)");
+                        "applies to --method and --composition only (a typed --ld's variational "
+                        "order is always derived; that of a tableau or a black box is measured)");
   if (c.count("--method") > 0 && c.count("--tableau") > 0)
     throw ArgumentError("--tableau", "does not apply to --method: give one method");
   if (c.count("--tableau") > 0) {
@@ -326,7 +324,7 @@ std::function<int()> add_verify_command(CLI::App& app) {
                 "collocation, order 2S; Lobatto IIIA-IIIB, order 2S-2), on --problem or on "
                 "--potential (1-3 dimensions)");
   c->add_option("--symbolic", o->symbolic,
-                "with --method, or --composition on a built-in base: when the symbolic engine "
+                "with --method or --composition: when the symbolic engine "
                 "derives the variational order beside the measured one: auto (default: where it "
                 "is quick, i.e. one degree of freedom, a polynomial Lagrangian, or order <= 4), "
                 "always, never");

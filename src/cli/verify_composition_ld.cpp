@@ -31,6 +31,7 @@
 #include "vibook/modified/series.hpp"
 #include "vibook/verify/composition_study.hpp"
 #include "vibook/verify/expression.hpp"
+#include "vibook/verify/method_symbolic.hpp"
 #include "vibook/verify/tape.hpp"
 
 namespace vibook::cli {
@@ -93,7 +94,7 @@ Symmetry decide_symmetry(const verify::TypedDiscreteLagrangian& dl) {
 template <int N>
 int run_n(const CompositionOptions& o, const verify::TypedDiscreteLagrangian& dl,
           verify::CompositionSpec spec, MapStudy study, const std::vector<double>& q0,
-          const std::vector<double>& p0) {
+          const std::vector<double>& p0, verify::SymbolicUse symbolic) {
   const Symmetry sym = decide_symmetry<N>(dl);
   const verify::CompositionBase base{
       "ld", sym.symmetric, "the typed discrete Lagrangian L_d = " + o.ld + "; " + sym.how};
@@ -141,6 +142,22 @@ int run_n(const CompositionOptions& o, const verify::TypedDiscreteLagrangian& dl
     line = fmt::format("{}, {} degree{} of freedom; q0 = {}, p0 = {}", system, N, N == 1 ? "" : "s",
                        vec_text(q0), vec_text(p0));
   }
+  // The variational order derived by the engine (method_symbolic.hpp): the typed L_d on its
+  // symbols, composed, against the intended Lagrangian (none for a typed Hamiltonian).
+  const verify::SymbolicStageDl symbolic_ld = [Ld](const std::vector<modified::ex>& a,
+                                                   const std::vector<modified::ex>& b,
+                                                   const modified::ex& h) {
+    Vec<modified::ex, N> x, y;
+    for (int i = 0; i < N; ++i) {
+      x(i) = a[static_cast<std::size_t>(i)];
+      y(i) = b[static_cast<std::size_t>(i)];
+    }
+    return Ld(x, y, h);
+  };
+  verify::derive_composition_variational_order(
+      spec, N, symbolic_ld,
+      o.hamiltonian.empty() ? verify::typed_lagrangian<N>(&dl) : modified::SymbolicLagrangian{},
+      symbolic, study);
   MapReport rep;
   verify::measure_composition(spec, stage(tape, Ld), stage(adj, adjoint_ld), line, study, rep);
   rep.js["system"] = {{"ld", o.ld},
@@ -187,6 +204,7 @@ int run_composition_ld(const CompositionOptions& t, verify::CompositionSpec spec
                                             "dimensions",
                                             dl->dim()));
   const int n = dl->dim();
+  const verify::SymbolicUse symbolic = verify::parse_symbolic_use(o.symbolic);
   std::vector<double> q0, p0;
   MapStudy study;
   check_typed_initial_state(o, n, q0, p0, study);
@@ -194,11 +212,11 @@ int run_composition_ld(const CompositionOptions& t, verify::CompositionSpec spec
   if (o.json_given) check_output_path(o.json_out, "--json-out", true);
   switch (n) {
     case 1:
-      return run_n<1>(o, *dl, std::move(spec), study, q0, p0);
+      return run_n<1>(o, *dl, std::move(spec), study, q0, p0, symbolic);
     case 2:
-      return run_n<2>(o, *dl, std::move(spec), study, q0, p0);
+      return run_n<2>(o, *dl, std::move(spec), study, q0, p0, symbolic);
     default:
-      return run_n<3>(o, *dl, std::move(spec), study, q0, p0);
+      return run_n<3>(o, *dl, std::move(spec), study, q0, p0, symbolic);
   }
 }
 

@@ -37,22 +37,6 @@ struct Plan {
   verify::SymbolicUse symbolic = verify::SymbolicUse::automatic;
 };
 
-// The intended Lagrangian of the typed system on the engine's symbols: L(q, v) as typed after
-// --lagrangian, or |v|^2/2 - V(q) with V typed after --potential.
-template <int N>
-modified::SymbolicLagrangian typed_lagrangian(const verify::TypedDiscreteLagrangian* sys) {
-  return [sys](const std::vector<modified::ex>& q, const std::vector<modified::ex>& v) {
-    Vec<modified::ex, N> x, u;
-    for (int i = 0; i < N; ++i) {
-      x(i) = q[static_cast<std::size_t>(i)];
-      u(i) = v[static_cast<std::size_t>(i)];
-    }
-    if (!sys->default_system() && !sys->has_hamiltonian())
-      return sys->lagrangian<N, modified::ex>(x, u);
-    return modified::exact_rationals(u.squaredNorm() / 2 - sys->potential<N, modified::ex>(x));
-  };
-}
-
 Plan check(const MethodOptions& o) {
   Plan p;
   const auto colon = o.method.find(':');
@@ -103,9 +87,9 @@ int run_method(const MethodOptions& o) {
   MapReport rep;
   const int n = static_cast<int>(p.q0.size());
   const modified::SymbolicLagrangian L = !p.sys   ? verify::test_problem_lagrangian(p.problem->name)
-                                         : n == 1 ? typed_lagrangian<1>(p.sys.get())
-                                         : n == 2 ? typed_lagrangian<2>(p.sys.get())
-                                                  : typed_lagrangian<3>(p.sys.get());
+                                         : n == 1 ? verify::typed_lagrangian<1>(p.sys.get())
+                                         : n == 2 ? verify::typed_lagrangian<2>(p.sys.get())
+                                                  : verify::typed_lagrangian<3>(p.sys.get());
   verify::derive_galerkin_variational_order(p.spec, n, L, p.symbolic, p.study);
   if (!p.sys) {
     verify::measure_method(p.spec, *p.problem, p.q0, p.p0, p.study, rep);

@@ -83,8 +83,9 @@ case_ engine-vi1 0 "" '^  derived +not derived: the engine composes sv, midpoint
   -- --composition vi1 --coefficients ruth3 --problem pendulum
 case_ engine-never 0 "" '^  derived +not derived \(--symbolic never\)' \
   -- --composition se --coefficients ruth3 --problem pendulum --symbolic never
-arg symbolic-ld --symbolic --composition ld --coefficients yoshida4 --ld 'h*((q1-q0)^2/(2*h^2))' \
-  --potential x --symbolic always
+arg symbolic-no-method --symbolic --ld 'h*((q1-q0)^2/(2*h^2))' --potential x --symbolic always
+arg symbolic-value --symbolic --composition ld --coefficients 1/2,1/2 \
+  --ld 'h*((q1-q0)^2/(2*h^2))' --potential x --symbolic sometimes
 
 # --composition ld: compositions of the user's own typed discrete Lagrangian, on the system of
 # --potential (or --lagrangian, below). The trapezoidal L_d (Störmer–Verlet) is symmetric (the engine shows it), so
@@ -101,7 +102,8 @@ case_ ld-ruth3 0 "" 'not symmetric: L_d\(q0, q1, h\) \+ L_d\(q1, q0, -h\) reache
   -- --composition ld --ld "$SEL" "${LDP[@]}" --coefficients '7/24*,3/8,3/8*,-25/24,1*'
 # ...and wrong ones fail: the stages in the wrong order, and a symmetric composition of a
 # first-order base.
-case_ ld-swapped 5 "order conditions,order,energy" 'order 2 by the conditions' \
+case_ ld-swapped 5 "order conditions,order,variational order,energy" 'order 2 by the conditions' \
+  '^  derived +2 by the engine: .*expected 3: NO \(part of the verdict\)' \
   -- --composition ld --ld "$SEL" "${LDP[@]}" --coefficients '3/8,7/24*,-25/24,3/8*,0,1*' \
   --expected-order 3
 case_ ld-first-order-base 5 "order conditions,order,energy" 'order 1 by the conditions' \
@@ -126,6 +128,32 @@ case_ ld-lagrangian 0 "" '\(--lagrangian\)' 'order 4 by the conditions' '^verdic
 case_ ld-lagrangian-wrong-system 5 "order,energy" 'expected 4 .*: NO' \
   -- --composition ld --ld "$MID" --lagrangian 'v^2/2 - q^4/4' --q0 0.5 --p0 0.3 --steps 4096 \
   --coefficients yoshida4
+# The engine derives the variational order of a composition of the typed L_d too (its stages
+# the typed expression on the engine's symbols, the adjoint's -L_d(q1, q0, -h)): Ruth's method
+# on the typed symplectic Euler gives, term for term, the h^4 coefficient the built-in se gives
+# on the pendulum (two independent constructions of the same composed L_d). Against a system
+# without the mass the midpoint L_d in two half steps is of variational order 0, its h^1 term
+# the missing kinetic energy; a typed Hamiltonian gives no Lagrangian to expand along.
+case_ ld-engine-ruth3 0 "" '^  derived +3 by the engine: .*expected 3: yes' \
+  -- --composition ld --ld "$SEL" "${LDP[@]}" --coefficients ruth3
+"$V" verify --composition ld --ld "$SEL" "${LDP[@]}" --coefficients ruth3 \
+  --json-out "$tmp/ld-ruth3.json" >/dev/null 2>&1
+"$V" verify --composition se --problem pendulum --q0 1 --p0 0.5 --steps 4096 --coefficients ruth3 \
+  --json-out "$tmp/se-ruth3.json" >/dev/null 2>&1
+if python3 - "$tmp/ld-ruth3.json" "$tmp/se-ruth3.json" <<'PY'; then ok; else bad "engine: typed se = built-in se"; fi
+import json, sys
+a, b = (json.load(open(f))["variational_order"]["engine"] for f in sys.argv[1:])
+assert a["order"] == b["order"] == 3 and a["defect"] == b["defect"] and a["defect"][3], (a, b)
+PY
+case_ ld-engine-wrong-system 5 "order,variational order,energy" \
+  '^  derived +0 by the engine: L_d - L_d\^E = h\^1 \(1/2\*v1\^2\*x1\^2\)' \
+  -- --composition ld --ld "$MID" --lagrangian 'v^2/2 - q^4/4' --q0 0.5 --p0 0.3 --steps 4096 \
+  --coefficients 1/2,1/2
+case_ ld-engine-hamiltonian 0 "" '^  derived +not derived: the system is typed as a Hamiltonian' \
+  -- --composition ld --ld "$TRAP" --potential 'x^4/4' --hamiltonian 'p^2/2+q^4/4' --q0 1 --p0 0 \
+  --steps 4096 --coefficients 1/2,1/2
+case_ ld-engine-never 0 "" '^  derived +not derived \(--symbolic never\)' \
+  -- --composition ld --ld "$SEL" "${LDP[@]}" --coefficients ruth3 --symbolic never
 arg ld-missing --ld --composition ld --coefficients yoshida4 --potential x^2
 arg ld-no-system --potential --composition ld --coefficients yoshida4 --ld "$TRAP"
 arg ld-problem --problem --composition ld --coefficients yoshida4 --ld "$TRAP" --potential x^2 \

@@ -89,7 +89,7 @@ bool polynomial_lagrangian(const modified::SymbolicLagrangian& L, int dim) {
 // kept in the JSON under variational_order.engine; part of the verdict when the expected order
 // is an integer up to the engine's maximum.
 void install(Derivation d, SymbolicUse use, MapStudy& study) {
-  const bool quick = d.dim == 1 || polynomial_lagrangian(d.L, d.dim);
+  const bool quick = !d.skip.empty() || d.dim == 1 || polynomial_lagrangian(d.L, d.dim);
   if (use == SymbolicUse::never) d.skip = "not derived (--symbolic never)";
   study.derive_variational_order = [d, use, quick](const MapStudy& s, MapMeasurement& rep) {
     json& jv = rep.js["variational_order"];
@@ -285,10 +285,65 @@ std::optional<ExactStages> exact_stages(const CompositionSpec& spec, std::string
   return st;
 }
 
+// A stage's discrete Lagrangian on the engine's symbols, positions as vectors of expressions
+// (the form the public API takes; on_vec/on_vectors convert to and from Vec<ex, N>).
+using StageDl = SymbolicStageDl;
+
+template <int N>
+StageDl on_vectors(std::function<modified::ex(const Vec<modified::ex, N>&,
+                                              const Vec<modified::ex, N>&, const modified::ex&)>
+                       f) {
+  return [f](const std::vector<modified::ex>& a, const std::vector<modified::ex>& b,
+             const modified::ex& h) {
+    Vec<modified::ex, N> x, y;
+    for (int i = 0; i < N; ++i) {
+      x(i) = a[static_cast<std::size_t>(i)];
+      y(i) = b[static_cast<std::size_t>(i)];
+    }
+    return f(x, y, h);
+  };
+}
+
+template <int N>
+auto on_vec(const StageDl& f) {
+  return [f](const Vec<modified::ex, N>& a, const Vec<modified::ex, N>& b, const modified::ex& h) {
+    return f(std::vector<modified::ex>(a.data(), a.data() + N),
+             std::vector<modified::ex>(b.data(), b.data() + N), h);
+  };
+}
+
 // The composed discrete Lagrangian: the sum of the stages' L_d between consecutive interior
 // points, the adjoint's L_d for a stage marked '*' (composition_study.cpp's construction, on
 // symbols), zero stages dropped. Interior point i starts on the chord at the stages' partial
 // sum (a rational close to it: only the start of Newton's method on series).
+template <int N>
+modified::SymbolicDL compose_dl(const StageDl& first_v, const StageDl& second_v,
+                                const ExactStages& stages, std::shared_ptr<modified::JetSpace> J,
+                                const std::string& description) {
+  using V = Vec<modified::ex, N>;
+  const auto first = on_vec<N>(first_v), second = on_vec<N>(second_v);
+  ExactStages st;
+  for (const auto& s : stages)
+    if (!s.first.is_zero()) st.push_back(s);
+  std::vector<GiNaC::numeric> at;
+  double sum = 0;
+  for (std::size_t i = 0; i + 1 < st.size(); ++i) {
+    sum += GiNaC::ex_to<GiNaC::numeric>(GiNaC::evalf(st[i].first)).to_double();
+    at.emplace_back(static_cast<long>(std::lround(sum * 1024)), 1024);
+  }
+  const auto dl = [&](const V& q0, const std::vector<V>& Q, const V& q1, const modified::ex& h) {
+    auto point = [&](std::size_t i) -> const V& {
+      return i == 0 ? q0 : i == st.size() ? q1 : Q[i - 1];
+    };
+    modified::ex total = 0;
+    for (std::size_t i = 0; i < st.size(); ++i)
+      total += (st[i].second ? second : first)(point(i), point(i + 1), st[i].first * h);
+    return total;
+  };
+  return modified::symbolic_dl_interior<N>(dl, std::move(J), description, at);
+}
+
+// The stages' L_d of a built-in base on the intended L, composed.
 template <int N>
 modified::SymbolicDL composition_dl(const std::string& base, const ExactStages& stages,
                                     const modified::SymbolicLagrangian& lagrangian,
@@ -326,25 +381,8 @@ modified::SymbolicDL composition_dl(const std::string& base, const ExactStages& 
     first = base == "se" ? right : left;
     second = base == "se" ? left : right;
   }
-  ExactStages st;
-  for (const auto& s : stages)
-    if (!s.first.is_zero()) st.push_back(s);
-  std::vector<GiNaC::numeric> at;
-  double sum = 0;
-  for (std::size_t i = 0; i + 1 < st.size(); ++i) {
-    sum += GiNaC::ex_to<GiNaC::numeric>(GiNaC::evalf(st[i].first)).to_double();
-    at.emplace_back(static_cast<long>(std::lround(sum * 1024)), 1024);
-  }
-  const auto dl = [&](const V& q0, const std::vector<V>& Q, const V& q1, const modified::ex& h) {
-    auto point = [&](std::size_t i) -> const V& {
-      return i == 0 ? q0 : i == st.size() ? q1 : Q[i - 1];
-    };
-    modified::ex total = 0;
-    for (std::size_t i = 0; i < st.size(); ++i)
-      total += (st[i].second ? second : first)(point(i), point(i + 1), st[i].first * h);
-    return total;
-  };
-  return modified::symbolic_dl_interior<N>(dl, std::move(J), description, at);
+  return compose_dl<N>(on_vectors<N>(first), on_vectors<N>(second), stages, std::move(J),
+                       description);
 }
 
 }  // namespace
@@ -374,6 +412,41 @@ void derive_composition_variational_order(const CompositionSpec& spec, const std
                  name = spec.coefficients](std::shared_ptr<modified::JetSpace> J) {
       return dim == 1 ? composition_dl<1>(base, st, L, std::move(J), name)
                       : composition_dl<2>(base, st, L, std::move(J), name);
+    };
+  install(std::move(d), use, study);
+}
+
+void derive_composition_variational_order(const CompositionSpec& spec, int dim,
+                                          const SymbolicStageDl& ld, modified::SymbolicLagrangian L,
+                                          SymbolicUse use, MapStudy& study) {
+  Derivation d;
+  d.L = std::move(L);
+  d.dim = dim;
+  d.source =
+      "engine: the composed L_d (the typed L_d and its adjoint -L_d(q1, q0, -h) summed over the "
+      "interior points, the coefficients exact), its interior points eliminated as series in h; "
+      "L_d - L_d^E along the solutions of the intended L, expanded about the step's midpoint "
+      "(Marsden & West 2001, Sec. 2.3.1)";
+  std::string why;
+  const auto stages = exact_stages(spec, why);
+  if (!d.L)
+    d.skip =
+        "not derived: the system is typed as a Hamiltonian (--hamiltonian), and the engine "
+        "expands L_d - L_d^E along the solutions of a Lagrangian (type --lagrangian, or "
+        "--potential for |v|^2/2 - V)";
+  else if (dim < 1 || dim > 3)
+    d.skip = "not derived: the engine composes in 1 to 3 dimensions";
+  else if (!stages)
+    d.skip = why;
+  else
+    d.make_dl = [ld, st = *stages, dim,
+                 name = spec.coefficients](std::shared_ptr<modified::JetSpace> J) {
+      const StageDl adjoint = [ld](const std::vector<modified::ex>& a,
+                                   const std::vector<modified::ex>& b,
+                                   const modified::ex& h) { return -ld(b, a, -h); };
+      return dim == 1   ? compose_dl<1>(ld, adjoint, st, std::move(J), name)
+             : dim == 2 ? compose_dl<2>(ld, adjoint, st, std::move(J), name)
+                        : compose_dl<3>(ld, adjoint, st, std::move(J), name);
     };
   install(std::move(d), use, study);
 }

@@ -11,10 +11,16 @@
 /// method").
 #pragma once
 
+#include <functional>
 #include <string>
+#include <vector>
 
+#include "vibook/core/types.hpp"
+#include "vibook/modified/engine.hpp"
 #include "vibook/modified/galerkin_dl.hpp"
+#include "vibook/modified/ginac_eigen.hpp"
 #include "vibook/verify/composition_study.hpp"
+#include "vibook/verify/expression.hpp"
 #include "vibook/verify/method_study.hpp"
 
 namespace vibook::verify {
@@ -40,6 +46,35 @@ void derive_galerkin_variational_order(const MethodSpec& spec, int dim,
 /// decimals or ratios; ruth3). Otherwise the report says why it is not derived.
 void derive_composition_variational_order(const CompositionSpec& spec, const std::string& problem,
                                           SymbolicUse use, MapStudy& study);
+
+/// A discrete Lagrangian L_d(q0, q1, h) on the engine's symbols (positions as vectors of
+/// expressions).
+using SymbolicStageDl = std::function<modified::ex(
+    const std::vector<modified::ex>&, const std::vector<modified::ex>&, const modified::ex&)>;
+
+/// The same for a composition of `ld` (`vibook verify --composition ld`, the typed L_d): its
+/// stages `ld`, and `-ld(q1, q0, -h)` for those marked '*', measured against the intended `L`
+/// in `dim` = 1…3 degrees of freedom. Coefficients exact rationals, as above.
+void derive_composition_variational_order(const CompositionSpec& spec, int dim,
+                                          const SymbolicStageDl& ld, modified::SymbolicLagrangian L,
+                                          SymbolicUse use, MapStudy& study);
+
+/// The intended Lagrangian of a typed system on the engine's symbols: L(q, v) as typed after
+/// --lagrangian, or |v|²/2 − V(q) with V typed after --potential (not for a system typed as a
+/// Hamiltonian other than |p|²/2 + V). `sys` must outlive it.
+template <int N>
+modified::SymbolicLagrangian typed_lagrangian(const TypedDiscreteLagrangian* sys) {
+  return [sys](const std::vector<modified::ex>& q, const std::vector<modified::ex>& v) {
+    Vec<modified::ex, N> x, u;
+    for (int i = 0; i < N; ++i) {
+      x(i) = q[static_cast<std::size_t>(i)];
+      u(i) = v[static_cast<std::size_t>(i)];
+    }
+    if (!sys->default_system() && !sys->has_hamiltonian())
+      return sys->lagrangian<N, modified::ex>(x, u);
+    return modified::exact_rationals(u.squaredNorm() / 2 - sys->potential<N, modified::ex>(x));
+  };
+}
 
 /// The intended Lagrangian |v|²/2 − U(q) of a test problem ("pendulum", "kepler",
 /// "henon-heiles") on symbols.
