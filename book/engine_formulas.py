@@ -21,6 +21,7 @@ EXAMPLES = [
     ("vi1-lagrangian", "--method vi1 --potential generic --dim 2 --order 2 --what lagrangian"),
     ("vi1-equation", "--method vi1 --potential generic --dim 2 --order 2 --cross-check"),
     ("vi2-equation", "--method vi2 --potential generic --dim 2 --order 2 --cross-check"),
+    ("vi2-lagrangian", "--method vi2 --potential generic --dim 2 --order 2 --what lagrangian"),
     ("harmonic-equation", "--method sv --potential harmonic --order 8"),
     ("kepler-lagrangian", "--method sv --potential kepler --order 2 --what lagrangian"),
 ]

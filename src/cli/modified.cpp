@@ -14,6 +14,7 @@
 #include "args.hpp"
 #include "cli.hpp"
 #include "vibook/modified/engine.hpp"
+#include "vibook/modified/vector_notation.hpp"
 #include "vibook/verify/expression.hpp"
 #include "watchdog.hpp"
 
@@ -30,6 +31,7 @@ struct ModifiedOptions {
   bool progress = false;
   int dim = 0, order = -1;
   bool cross_check = false, reference = false, dim_given = false, alpha_given = false;
+  bool components = false;
   bool method_given = false, potential_given = false, ld_given = false, lagrangian_given = false;
 };
 
@@ -145,6 +147,10 @@ int run_modified(ModifiedOptions o) {
                                               typed->dim()));
   }
   const int dim = typed ? typed->dim() : (o.dim_given ? o.dim : (p == Potential::kepler ? 2 : 1));
+  if (o.components && f != Format::latex)
+    throw ArgumentError("--components",
+                        "applies to --format latex (text and python are always "
+                        "written in components)");
   if (o.cross_check && o.what != "equation")
     throw ArgumentError("--cross-check",
                         fmt::format("compares two derivations of the modified equation; it does "
@@ -204,6 +210,8 @@ int run_modified(ModifiedOptions o) {
   const std::string comment = f == Format::latex ? "%" : "#";
   // Derive first, print after: the Python header lists every symbol that occurs.
   std::vector<std::pair<std::string, std::vector<ex>>> blocks;  // (left-hand side, series)
+  // The vector quantities whole, for the vector notation: (left-hand side, field[k][i]).
+  std::vector<std::pair<std::string, std::vector<std::vector<ex>>>> vector_blocks;
   std::string cross;
   auto lhs_of = [&](const char* latex, const char* python, const char* text) {
     return std::string(f == Format::latex ? latex : (f == Format::python ? python : text));
@@ -211,6 +219,7 @@ int run_modified(ModifiedOptions o) {
   // One block per component of a vector series field[k][i]: lhs, lhs_1, … (lhs1, … in text).
   const auto add_components = [&](const std::string& lhs,
                                   const std::vector<std::vector<ex>>& field) {
+    vector_blocks.emplace_back(lhs, field);
     for (int i = 0; i < J.dofs(); ++i) {
       std::vector<ex> c;
       for (const auto& row : field) c.push_back(row[i]);
@@ -273,6 +282,21 @@ int run_modified(ModifiedOptions o) {
     fmt::print("{} = symbols('{}')\n", lhs_list, list);
     if (radial) fmt::print("r = sqrt(x1**2 + x2**2)\n");
   }
+  // LaTeX of an abstract potential in 2-3 dimensions: in vector notation, as Shen & Sun write
+  // theirs (vector_notation.hpp), unless --components.
+  if (f == Format::latex && !o.components && !radial) {
+    std::vector<ex> all;
+    for (const auto& [lhs, c] : blocks) all.insert(all.end(), c.begin(), c.end());
+    if (const auto vn = VectorNotation::of(J, all)) {
+      if (!vector_blocks.empty()) {
+        for (const auto& [lhs, field] : vector_blocks)
+          fmt::print("{} = {}\n", lhs, vn->vector_series(field));
+      } else {
+        for (const auto& [lhs, c] : blocks) fmt::print("{} = {}\n", lhs, vn->scalar_series(c));
+      }
+      return kOk;
+    }
+  }
   for (const auto& [lhs, c] : blocks) {
     if (f == Format::text)
       fmt::print("# {} =\n", lhs);
@@ -331,6 +355,10 @@ std::function<int()> add_modified_command(CLI::App& app) {
   c->add_flag("--reference", o->reference,
               "derive on the engine's slow reference path (GiNaC diff symbol by symbol, no early "
               "truncation), to check the fast path's output against");
+  c->add_flag("--components", o->components,
+              "latex: write a 2- or 3-dimensional abstract potential's result component by "
+              "component; by default it is written in vector notation as Shen & Sun write "
+              "theirs (∇φ·ẋ, |∇φ|², φ_xx⟨ẋ,ẋ⟩, φ_xx∇φ, …, the rest in components)");
   c->add_flag("--cross-check", o->cross_check,
               "equation: also derive it from the discrete Euler–Lagrange equation (Vermeeren "
               "§3.2) and require term-by-term agreement");

@@ -147,6 +147,7 @@ row 2 "--dim"            "${M[@]}" --order 2 --dim 4
 row 2 "--what"           "${M[@]}" --order 2 --what everything
 row 2 "--format"         "${M[@]}" --order 2 --format maple
 row 2 "--cross-check"    "${M[@]}" --order 2 --what lagrangian --cross-check
+row 2 "--components"     "${M[@]}" --order 2 --dim 2 --components
 row 2 "--alpha"          modified --method vi1 --potential kepler --order 1 --alpha 1/2x
 row 2 "--alpha"          modified --method vi1 --potential kepler --order 1 --alpha ""
 row 2 "--alpha"          modified --method vi1 --potential kepler --order 1 --alpha 2

@@ -194,6 +194,13 @@ expect 0 "" -- modified --method vi1 --potential kepler --order 1 --alpha 1/2 --
 grep -q "h,p1\|h,x1\|symbols" "$tmp/out" && ok || bad "vi1 kepler python"
 expect 0 "" -- modified --method midpoint --potential pendulum --order 2 --what hamiltonian --format latex
 grep -q "H_{\\\\mathrm{mod}}" "$tmp/out" && ok || bad "latex hamiltonian"
+# an abstract potential in two dimensions: Shen & Sun's vector notation, (4.21) as printed;
+# --components gives the component form
+expect 0 "" -- modified --method vi1 --potential generic --dim 2 --order 2 --what lagrangian --format latex
+grep -qF '\frac{h^{2}}{24}\Bigl(|\nabla \phi|^{2} - 2 \phi_{xx}\langle \dot{x},\dot{x}\rangle + 12 {\phi^{[1]}_{12}} \dot{x}_{1} \dot{x}_{2}\Bigr)' "$tmp/out" &&
+  ok || bad "vector notation of (4.21): $(cat "$tmp/out")"
+expect 0 "" -- modified --method vi1 --potential generic --dim 2 --order 2 --what lagrangian --format latex --components
+grep -qF '{\phi^{[2]}_{1}}' "$tmp/out" && ! grep -qF '\nabla' "$tmp/out" && ok || bad "--components"
 
 # --- symbolic output, the same bytes in every run (#27: a sum's sign followed GiNaC's hash
 # order, which address randomisation changes; 4 texts in 6 runs before) -----------------------
@@ -201,7 +208,8 @@ for args in "--method sv --potential kepler --order 2" \
             "--method sv --potential kepler --order 2 --format latex" \
             "--method se --potential kepler --order 2 --what lagrangian" \
             "--method vi2 --potential kepler --order 3 --alpha 1/3" \
-            "--method midpoint --potential kepler --order 3 --what hamiltonian --format python"; do
+            "--method midpoint --potential kepler --order 3 --what hamiltonian --format python" \
+            "--method vi2 --potential generic --dim 2 --order 2 --format latex"; do
   sums=$(for i in 1 2 3 4; do
            # shellcheck disable=SC2086
            "$V" modified $args | md5sum

@@ -124,6 +124,14 @@ GiNaC::symbol JetSpace::derivative(int family, std::vector<int> index) const {
   return s;
 }
 
+bool JetSpace::derivative_of(const ex& s, int& family, std::vector<int>& index) const {
+  const auto d = deriv_index_.find(s);
+  if (d == deriv_index_.end()) return false;
+  family = d->second.family;
+  index = d->second.index;
+  return true;
+}
+
 namespace {
 // δe = Σ_s ∂e/∂s · δs over the symbols s of e, one GiNaC diff each.
 template <class Rule>

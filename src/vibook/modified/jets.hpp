@@ -46,9 +46,13 @@ class JetSpace {
   int family_arity(int family) const { return static_cast<int>(families_.at(family).dofs.size()); }
   int families() const { return static_cast<int>(families_.size()); }
   const std::string& family_name(int f) const { return families_.at(f).name; }
+  const std::string& family_tex(int f) const { return families_.at(f).tex; }
   /// The symbol for ∂^{|I|} U_f / ∂x_{I} at x (I: argument positions, sorted; empty = the
   /// value).
   GiNaC::symbol derivative(int family, std::vector<int> index) const;
+  /// The reverse of derivative(): true if s is a derivative symbol, with its family and
+  /// index.
+  bool derivative_of(const ex& s, int& family, std::vector<int>& index) const;
 
   /// ∂e/∂x_i^{(order)}; for order 0 the chain rule through the abstract derivatives.
   ex partial(const ex& e, int order, int i) const;

@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <functional>
 #include <map>
+#include <optional>
 #include <set>
 #include <sstream>
 
@@ -13,6 +14,7 @@
 #include "vibook/modified/canonical.hpp"
 #include "vibook/modified/engine.hpp"
 #include "vibook/modified/series.hpp"
+#include "vibook/modified/vector_notation.hpp"
 
 namespace vibook::printed {
 
@@ -72,11 +74,25 @@ std::string latex(const ex& e) { return modified::canonical_string(e, modified::
 // Where printed and ours differ, in a form a reader can take in: both sides when they are
 // short; else their difference when that is short; else both evaluated at one point (every
 // symbol a distinct small rational) when they are numbers there; else only their sizes.
-std::string describe_difference(const ex& printed, const ex& ours) {
-  const std::string a = latex(GiNaC::expand(printed)), b = latex(GiNaC::expand(ours));
-  if (a.size() + b.size() <= 600) return fmt::format("printed \\({}\\), ours \\({}\\)", a, b);
-  const ex d = GiNaC::normal(printed - ours);
-  const std::string dl = latex(d);
+// A scalar of an abstract potential in 2-3 dimensions (J set) is written in vector notation.
+std::string describe_difference(const ex& printed, const ex& ours,
+                                const modified::JetSpace* J = nullptr) {
+  const ex p = GiNaC::expand(printed), o = GiNaC::expand(ours);
+  std::optional<modified::VectorNotation> vn;
+  if (J) vn = modified::VectorNotation::of(*J, {p, o});
+  auto tex = [&](const ex& e) { return vn ? vn->scalar(e) : latex(e); };
+  const std::string a = tex(p), b = tex(o);
+  if (a.size() + b.size() <= 600) {
+    std::string both = fmt::format("printed \\({}\\), ours \\({}\\)", a, b);
+    // grouped, both sides are short more often: their difference shows what differs
+    if (vn) {
+      const std::string d = tex(GiNaC::expand(p - o));
+      if (d.size() <= 400) both += fmt::format("; printed − ours = \\({}\\)", d);
+    }
+    return both;
+  }
+  const ex d = vn ? GiNaC::expand(p - o) : GiNaC::normal(printed - ours);
+  const std::string dl = tex(d);
   if (dl.size() <= 400) return fmt::format("printed − ours = \\({}\\)", dl);
   GiNaC::exset syms;
   struct Collect : GiNaC::visitor, GiNaC::symbol::visitor {
@@ -125,6 +141,7 @@ Differences differences(const std::vector<Token>& tokens, const std::map<std::si
   // One difference: kept; with `stop`, a non-vanishing one ends the work (true); with
   // `describe`, the first non-vanishing one is described, `where` naming its place. Whether it
   // vanishes (a normal form, possibly of radicals) is decided once.
+  const modified::JetSpace* scalar_jets = nullptr;  // a scalar series: vector notation
   auto record = [&](const ex& printed, const ex& ours, const auto& where) {
     const ex diff = printed - ours;
     out.d.push_back(diff);
@@ -134,7 +151,7 @@ Differences differences(const std::vector<Token>& tokens, const std::map<std::si
       out.failed = true;
       return true;
     }
-    out.first = where() + describe_difference(printed, ours);
+    out.first = where() + describe_difference(printed, ours, scalar_jets);
     return false;
   };
   for (const Case& c : cases) {
@@ -184,6 +201,7 @@ Differences differences(const std::vector<Token>& tokens, const std::map<std::si
       if (K < 0) throw ReadError("the display's remainder leaves no power of the step to compare");
       out.through = std::max(out.through, K);
       const auto& J = c.notation->jets();
+      scalar_jets = comps == 1 ? &J : nullptr;
       std::map<ex, modified::Series, GiNaC::ex_is_less> subs;
       subs[J.h()] = modified::Series::h();
       // Extra terms for quotients by powers of h (2/h · arcsin(h/2)); the result must still
@@ -484,19 +502,39 @@ claims::FormulaComparison compare(const Spec& spec, const std::vector<Case>& cas
       for (const auto& e : t.exact) comps.push_back(latex(GiNaC::expand(e)));
       out.through = "exactly";
     } else {
-      const GiNaC::symbol h = cases[0].notation->jets().h();
+      const auto& J = cases[0].notation->jets();
+      std::vector<std::vector<ex>> series;  // series[i][k]
+      std::vector<ex> all;
       for (const auto& s : t.series) {
         std::vector<ex> c = s;
         if (t.through >= 0 && static_cast<int>(c.size()) > t.through + 1)
           c.resize(static_cast<std::size_t>(t.through) + 1);
         for (auto& x : c) x = GiNaC::expand(x);
-        comps.push_back(modified::format_series(c, h, modified::Format::latex));
+        all.insert(all.end(), c.begin(), c.end());
+        series.push_back(std::move(c));
       }
+      // an abstract potential in 2-3 dimensions: in the papers' vector notation
+      // (vector_notation.hpp), so that the two sides can be compared by eye
+      if (const auto vn = modified::VectorNotation::of(J, all)) {
+        if (series.size() == 1) {
+          out.ours = vn->scalar_series(series[0]);
+        } else {
+          std::size_t K = 0;
+          for (const auto& c : series) K = std::max(K, c.size());
+          std::vector<std::vector<ex>> field(K, std::vector<ex>(series.size(), ex(0)));
+          for (std::size_t i = 0; i < series.size(); ++i)
+            for (std::size_t k = 0; k < series[i].size(); ++k) field[k][i] = series[i][k];
+          out.ours = vn->vector_series(field);
+        }
+      }
+      for (const auto& c : series)
+        comps.push_back(modified::format_series(c, J.h(), modified::Format::latex));
     }
-    out.ours =
-        comps.size() == 1
-            ? comps[0]
-            : "\\begin{bmatrix}" + fmt::format("{}", fmt::join(comps, " \\\\ ")) + "\\end{bmatrix}";
+    if (out.ours.empty())
+      out.ours = comps.size() == 1
+                     ? comps[0]
+                     : "\\begin{bmatrix}" + fmt::format("{}", fmt::join(comps, " \\\\ ")) +
+                           "\\end{bmatrix}";
   }
   std::vector<Token> tokens;
   try {

@@ -363,6 +363,22 @@ std::optional<Entity> JetNotation::resolve(const Atom& a, const Reader& r) const
     }
     if (a.sub) {
       const std::string s = a.sub_text();
+      // φ_{12}, φ^{[1]}_{12}: digits name the coordinates of a partial derivative (the
+      // engine's and vector_notation's way of writing what no invariant accounts for)
+      if (!f.letter.empty() && dim() > 1 && a.primes == 0 && !s.empty() &&
+          s.find_first_not_of("123456789") == std::string::npos &&
+          std::all_of(s.begin(), s.end(), [this](char c) { return c - '0' <= dim(); })) {
+        std::vector<ex> at = expansion_point();
+        GiNaC::exmap here;
+        for (std::size_t k = 0; k < point_.size(); ++k) here[point_[k]] = at[k];
+        ex d = f.function;
+        for (char c : s) d = d.diff(point_[static_cast<std::size_t>(c - '1')]);
+        Entity e;
+        e.kind = Entity::Kind::value;
+        e.value = Value::scalar(d.subs(here));
+        e.consumed_sup = consumed;
+        return e;
+      }
       if (f.letter.empty() || s.find_first_not_of(f.letter) != std::string::npos) continue;
       order += static_cast<int>(s.size() / f.letter.size());
     }
