@@ -16,6 +16,8 @@
 #include <fmt/format.h>
 
 #include "vibook/core/errors.hpp"
+#include "vibook/core/precision.hpp"
+#include "vibook/integrators/composition.hpp"
 #include "vibook/kepler/kepler.hpp"
 #include "vibook/modified/canonical.hpp"
 #include "vibook/modified/ginac_eigen.hpp"
@@ -67,7 +69,35 @@ struct Derivation {
   modified::SymbolicLagrangian L;
   std::string source;  ///< for the JSON
   std::string skip;    ///< when set: not derived, and why
+  /// Coefficients known to finite precision (a catalogue entry's, computed at 120 digits): a
+  /// term of L_d − L_d^E all of whose numbers are below this counts as zero, and `precision`
+  /// says so in the report. Unset: the zero test is exact.
+  std::optional<GiNaC::numeric> zero_below;
+  std::string precision;
+  int stages = 0;      ///< a composition's stages (the cost grows quickly with them)
+  bool typed = false;  ///< stages of a typed L_d (--composition ld)
 };
+
+// The largest number in an expanded polynomial's terms (its coefficients), in absolute value.
+GiNaC::numeric largest_coefficient(const modified::ex& e) {
+  GiNaC::numeric top = 0;
+  auto term = [&top](const modified::ex& t) {
+    GiNaC::numeric c = 1;
+    if (GiNaC::is_a<GiNaC::numeric>(t)) {
+      c = GiNaC::ex_to<GiNaC::numeric>(t);
+    } else if (GiNaC::is_a<GiNaC::mul>(t)) {
+      for (std::size_t k = 0; k < t.nops(); ++k)
+        if (GiNaC::is_a<GiNaC::numeric>(t.op(k))) c *= GiNaC::ex_to<GiNaC::numeric>(t.op(k));
+    }
+    if (abs(c) > top) top = abs(c);
+  };
+  const modified::ex x = GiNaC::expand(e);
+  if (GiNaC::is_a<GiNaC::add>(x))
+    for (std::size_t k = 0; k < x.nops(); ++k) term(x.op(k));
+  else if (!x.is_zero())
+    term(x);
+  return top;
+}
 
 // Is L polynomial in q and v? (Then the engine is quick in any dimension.)
 bool polynomial_lagrangian(const modified::SymbolicLagrangian& L, int dim) {
@@ -82,6 +112,13 @@ bool polynomial_lagrangian(const modified::SymbolicLagrangian& L, int dim) {
     vars.append(v.back());
   }
   return L(x, v).is_polynomial(vars);
+}
+
+// The first k whose term has a number at or above `zero_below`; −1 if none.
+int order_above(const std::vector<modified::ex>& defect, const GiNaC::numeric& zero_below) {
+  for (std::size_t k = 0; k < defect.size(); ++k)
+    if (largest_coefficient(defect[k]) >= zero_below) return static_cast<int>(k);
+  return -1;
 }
 
 // Set study.derive_variational_order: the engine's L_d − L_d^E to h^{K+1}, K the study's
@@ -102,6 +139,20 @@ void install(Derivation d, SymbolicUse use, MapStudy& study) {
           "polynomial, the engine takes minutes (gauss:3 on Kepler: about 2 minutes on 2 "
           "cores); --symbolic always runs it",
           K + 1, d.dim);
+    // 120-digit coefficients make every number long: by default only the short compositions
+    // on a polynomial Lagrangian (yoshida4 and suzuki4 on Hénon–Heiles: 1.5 and 5.5 s)
+    if (skip.empty() && use == SymbolicUse::automatic && d.zero_below && d.typed)
+      skip =
+          "not derived by default: the stages of a typed L_d with 120-digit coefficients can "
+          "take the engine many minutes (yoshida4 on a typed midpoint rule with a "
+          "position-dependent mass: over 10 minutes); --symbolic always runs it";
+    else if (skip.empty() && use == SymbolicUse::automatic && d.zero_below &&
+             (d.stages > 5 || !quick))
+      skip = fmt::format(
+          "not derived by default: {} stages with 120-digit coefficients{} take the engine "
+          "minutes (yoshida6 on Hénon–Heiles: about 70 s, suzuki4 on Kepler: about 100 s, on one "
+          "core); --symbolic always runs it",
+          d.stages, quick ? "" : ", on a Lagrangian that is not polynomial,");
     if (!skip.empty()) {
       rep.line("  derived", skip);
       jv["engine"] = {{"derived", false}, {"reason", skip}};
@@ -128,6 +179,18 @@ void install(Derivation d, SymbolicUse use, MapStudy& study) {
         terms.push_back(modified::canonical_string(t, modified::Format::text));
       je["defect"] = terms;  // [k]: the coefficient of h^{k+1} in L_d − L_d^E
       r = vo.order;
+      if (d.zero_below) {
+        // finite precision: the first coefficient with a number at or above the threshold
+        r = order_above(vo.defect, *d.zero_below);
+        json sizes = json::array();
+        for (const auto& t : vo.defect) {
+          const GiNaC::numeric top = largest_coefficient(t);
+          sizes.push_back(top.is_zero() ? 0.0 : top.to_double());
+        }
+        je["largest_coefficient"] = sizes;  // [k]: the largest number in the h^{k+1} term
+        je["zero_below"] = d.zero_below->to_double();
+        je["precision"] = d.precision;
+      }
       if (r >= 0) first_term = terms[static_cast<std::size_t>(r)].get<std::string>();
     } catch (const std::exception& e) {
       // The engine could not reach the answer (interior points that have no series solution, a
@@ -153,13 +216,14 @@ void install(Derivation d, SymbolicUse use, MapStudy& study) {
         first_term.size() <= 100
             ? first_term
             : fmt::format("a {}-character expression, in the JSON", first_term.size());
+    const std::string by =
+        d.zero_below ? fmt::format("by the engine ({})", d.precision) : "by the engine";
     const std::string value =
-        r >= 0 ? fmt::format("{} by the engine: L_d - L_d^E = h^{} ({}) + O(h^{})", r, r + 1, term,
-                             r + 2)
+        r >= 0 ? fmt::format("{} {}: L_d - L_d^E = h^{} ({}) + O(h^{})", r, by, r + 1, term, r + 2)
                : fmt::format(
-                     "more than {} by the engine: every term of L_d - L_d^E through "
+                     "more than {} {}: every term of L_d - L_d^E through "
                      "h^{} vanishes",
-                     K, K + 1);
+                     K, by, K + 1);
     rep.line("  derived",
              value +
                  (judged ? fmt::format("; expected {:g}: {} (part of the verdict)", s.expected,
@@ -237,28 +301,47 @@ std::optional<GiNaC::numeric> exact_number(const std::string& t) {
   return *a / *b;
 }
 
-// The stages as exact rationals: a typed list of exact decimals or ratios, or Ruth's catalogue
-// entry. nullopt, with the reason, otherwise.
-std::optional<ExactStages> exact_stages(const CompositionSpec& spec, std::string& why) {
+// An mpfr value as the rational its decimal digits (`digits` of them) spell.
+GiNaC::numeric rational_of(const mpfr_real& x, int digits) {
+  const std::string t = x.str(digits, std::ios_base::scientific);  // "-1.2345...e-02"
+  const auto e = t.find('e');
+  const auto mantissa = exact_number(t.substr(0, e));
+  if (!mantissa) throw std::logic_error("rational_of: cannot read " + t);
+  const int exponent = e == std::string::npos ? 0 : std::stoi(t.substr(e + 1));
+  return *mantissa * GiNaC::numeric(10).power(exponent);
+}
+
+// A catalogue entry's coefficients are irrational (cube roots) or known only numerically
+// (Newton on the order conditions, or published digits). The engine then derives with each
+// coefficient as the rational of its first kCompositionDigits digits, and a term of
+// L_d − L_d^E whose every number is below kZeroBelow counts as zero. The least precise entry
+// (Kahan & Li's, as published) has 26 digits, which leaves terms near 1e-27; a coefficient off
+// in its eleventh digit leaves terms near 1e-12 (the field audit's A-WRONG-DIGIT).
+const GiNaC::numeric kZeroBelow = GiNaC::numeric(1) / GiNaC::numeric(10).power(20);
+
+// The stages as exact rationals: a typed list of exact decimals or ratios, or a catalogue
+// entry (Ruth's exactly; the others at kCompositionDigits digits, `zero_below` and `precision`
+// then set). nullopt, with the reason, otherwise.
+std::optional<ExactStages> exact_stages(const CompositionSpec& spec, std::string& why,
+                                        std::optional<GiNaC::numeric>* zero_below = nullptr,
+                                        std::string* precision = nullptr) {
   ExactStages st;
-  if (spec.entry) {
+  if (spec.entry && spec.entry->name != "ruth3") {
     const std::string& n = spec.entry->name;
-    if (n == "yoshida4" || n == "suzuki4") {
-      // Closed forms in Q(2^(1/3)) exist, but the engine's series with cube roots in every
-      // coefficient did not finish in two minutes on the pendulum: not attempted.
+    if (!zero_below || !precision) {
       why = fmt::format(
-          "not derived: the coefficients of {} are cube roots ({}), and the engine's zero test "
-          "is exact only over the rationals and their square roots",
+          "not derived: the coefficients of {} are not rational ({}), and the engine's zero "
+          "test needs them exactly",
           n, spec.entry->derivation);
       return std::nullopt;
     }
-    if (n != "ruth3") {
-      why = fmt::format(
-          "not derived: the coefficients of {} are known only numerically ({}), and the "
-          "engine's zero test needs them exactly",
-          n, spec.entry->derivation);
-      return std::nullopt;
-    }
+    for (const auto& [c, adjoint] : catalogue_rationals(n)) st.emplace_back(c, adjoint);
+    *zero_below = kZeroBelow;
+    *precision = fmt::format(
+        "the coefficients of {} to {} digits, a term with every number below 1e-20 counted as "
+        "zero",
+        n, kCompositionDigits);
+    return st;
   }
   const std::string list = spec.entry ? std::string(composition::kRuth3Stages) : spec.coefficients;
   std::size_t from = 0;
@@ -402,7 +485,8 @@ void derive_composition_variational_order(const CompositionSpec& spec, const std
       "(Marsden & West 2001, Sec. 2.3.1)";
   const std::string base = spec.base->name;
   std::string why;
-  const auto stages = exact_stages(spec, why);
+  const auto stages = exact_stages(spec, why, &d.zero_below, &d.precision);
+  if (stages) d.stages = static_cast<int>(stages->size());
   if (base != "sv" && base != "midpoint" && base != "se" && base != "se-adjoint")
     d.skip = "not derived: the engine composes sv, midpoint, se and se-adjoint (not " + base + ")";
   else if (!stages)
@@ -428,7 +512,9 @@ void derive_composition_variational_order(const CompositionSpec& spec, int dim,
       "L_d - L_d^E along the solutions of the intended L, expanded about the step's midpoint "
       "(Marsden & West 2001, Sec. 2.3.1)";
   std::string why;
-  const auto stages = exact_stages(spec, why);
+  const auto stages = exact_stages(spec, why, &d.zero_below, &d.precision);
+  if (stages) d.stages = static_cast<int>(stages->size());
+  d.typed = true;
   if (!d.L)
     d.skip =
         "not derived: the system is typed as a Hamiltonian (--hamiltonian), and the engine "
@@ -449,6 +535,40 @@ void derive_composition_variational_order(const CompositionSpec& spec, int dim,
                         : compose_dl<3>(ld, adjoint, st, std::move(J), name);
     };
   install(std::move(d), use, study);
+}
+
+std::vector<std::pair<GiNaC::numeric, bool>> catalogue_rationals(const std::string& name) {
+  std::vector<std::pair<GiNaC::numeric, bool>> out;
+  const MpfrDigits digits(kCompositionDigits);
+  for (const auto& stage : composition::catalogue_stages<mpfr_real>(name, kCompositionDigits))
+    out.emplace_back(rational_of(stage.c, kCompositionDigits), stage.adjoint);
+  return out;
+}
+
+GiNaC::numeric composition_zero_below() { return kZeroBelow; }
+
+int composition_variational_order(const std::string& base,
+                                  const std::vector<std::pair<GiNaC::numeric, bool>>& stages,
+                                  const std::string& problem, int K,
+                                  std::optional<GiNaC::numeric> zero_below) {
+  const TestProblem* tp = find_problem(problem);
+  if (!tp) throw std::invalid_argument("composition_variational_order: no problem " + problem);
+  const int dim = static_cast<int>(tp->q0.size());
+  const modified::SymbolicLagrangian L = test_problem_lagrangian(problem);
+  ExactStages st;
+  for (const auto& [c, adjoint] : stages) st.emplace_back(c, adjoint);
+  std::lock_guard<std::mutex> lock(modified::ginac_mutex());
+  auto J = std::make_shared<modified::JetSpace>(dim);
+  modified::Engine engine(dim == 1 ? composition_dl<1>(base, st, L, J, "test")
+                                   : composition_dl<2>(base, st, L, J, "test"),
+                          K);
+  std::vector<modified::ex> x, v;
+  for (int i = 0; i < dim; ++i) {
+    x.push_back(J->x(0, i));
+    v.push_back(J->x(1, i));
+  }
+  const auto vo = engine.variational_order(modified::exact_rationals(L(x, v)));
+  return zero_below ? order_above(vo.defect, *zero_below) : vo.order;
 }
 
 }  // namespace vibook::verify

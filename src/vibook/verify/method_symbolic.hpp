@@ -12,7 +12,9 @@
 #pragma once
 
 #include <functional>
+#include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "vibook/core/types.hpp"
@@ -46,6 +48,23 @@ void derive_galerkin_variational_order(const MethodSpec& spec, int dim,
 /// decimals or ratios; ruth3). Otherwise the report says why it is not derived.
 void derive_composition_variational_order(const CompositionSpec& spec, const std::string& problem,
                                           SymbolicUse use, MapStudy& study);
+
+/// A catalogue entry's coefficients as the engine takes them: the rationals of their first
+/// kCompositionDigits digits (Ruth's exactly), with the adjoint marks. A composition of these
+/// has terms of L_d − L_d^E near the coefficients' rounding; the derivation counts a term
+/// with every number below kCompositionZeroBelow as zero and says so in the report.
+std::vector<std::pair<GiNaC::numeric, bool>> catalogue_rationals(const std::string& name);
+/// 1e-20: the least precise catalogue entry (Kahan & Li's, as published) has 26 digits.
+GiNaC::numeric composition_zero_below();
+
+/// The variational order the engine derives for the composition of `base` (sv, midpoint, se,
+/// se-adjoint) with `stages` on a test problem's Lagrangian, through h^{K+1}: the first k
+/// whose term of L_d − L_d^E has a number at or above `zero_below` (any nonzero number when
+/// unset); −1 when there is none. The route the report takes, for tests.
+int composition_variational_order(const std::string& base,
+                                  const std::vector<std::pair<GiNaC::numeric, bool>>& stages,
+                                  const std::string& problem, int K,
+                                  std::optional<GiNaC::numeric> zero_below);
 
 /// A discrete Lagrangian L_d(q0, q1, h) on the engine's symbols (positions as vectors of
 /// expressions).
