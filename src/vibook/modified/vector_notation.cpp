@@ -273,7 +273,9 @@ VectorNotation::Grouped VectorNotation::group(const std::vector<ex>& e, bool vec
   std::vector<Terms> rest;
   for (const ex& x : e) rest.push_back(terms(to_internal(x)));
   Grouped g;
-  for (const Invariant& inv : invariants(vector)) {
+  std::vector<const Invariant*> used;  // the invariants of g.terms, in its order
+  const std::vector<Invariant> invs = invariants(vector);
+  for (const Invariant& inv : invs) {
     // the ratio rest/invariant on each of the invariant's terms; the majority decides
     std::vector<std::pair<numeric, int>> votes;
     int size = 0;
@@ -303,14 +305,12 @@ VectorNotation::Grouped VectorNotation::group(const std::vector<ex>& e, bool vec
         if (r.is_zero()) rest[i].erase(m);
       }
     g.terms.emplace_back(inv.tex, c);
+    used.push_back(&inv);
   }
   // the grouping is a change of basis: it must add up to the input exactly
-  const auto invs = invariants(vector);
   for (std::size_t i = 0; i < e.size(); ++i) {
     ex back = sum(rest[i]);
-    for (const auto& [t, c] : g.terms)
-      for (const auto& inv : invs)
-        if (inv.tex == t) back += c * inv.comp[i];
+    for (std::size_t t = 0; t < used.size(); ++t) back += g.terms[t].second * used[t]->comp[i];
     if (!GiNaC::expand(to_external(back) - e[i]).is_zero())
       throw std::logic_error("vector notation: the grouped form does not add up to the input");
     g.rest.push_back(sum(rest[i]));
