@@ -72,6 +72,54 @@ TEST_CASE("newton_solve fails with a typed error instead of looping or returning
   }
 }
 
+// The stopping rule reachable from rest (chapter "Verify your own integrator", "The criteria
+// of every route"): the midpoint rule's discrete Euler-Lagrange equation of a charged particle
+// in a magnetic field, L = |v|^2/2 + (q1 v2 - q2 v1)/2 - |q|^2/2, from q0 = (1, 0) at rest
+// (p0 = (0, 1/2)). The second component of q1 - q0 is 3e-5 and its componentwise bound
+// 4u·3e-5 lies below the round-off of the equation's O(1) terms: the componentwise rule alone
+// ran 50 iterations at residual 1e-15 and threw. The stagnation test ends it as converged.
+TEST_CASE("newton_solve converges from rest: the stagnation test ends what round-off bounds") {
+  const double h = 0.05;
+  const Vec<double, 2> q0(1.0, 0.0), p0(0.0, 0.5);
+  auto fj = [&](const Vec<double, 2>& q1, Vec<double, 2>& F, Mat<double, 2>& J) {
+    const Vec<double, 2> m = (q0 + q1) / 2, v = (q1 - q0) / h;
+    F(0) = p0(0) + h / 2 * (0.5 * v(1) - m(0)) - (v(0) - 0.5 * m(1));
+    F(1) = p0(1) + h / 2 * (-0.5 * v(0) - m(1)) - (v(1) + 0.5 * m(0));
+    J << -h / 4 - 1 / h, 0.5, -0.5, -h / 4 - 1 / h;
+  };
+  auto check = [&](auto&& solve) {
+    Vec<double, 2> x = q0;
+    const SolveReport r = solve(x);
+    CHECK(r.converged);
+    CHECK(r.iterations <= 6);
+    CHECK(r.residual <= 1e-14);  // the equation's terms are O(1): its round-off
+    // The solution of the linear equation, independently: F(q1) = 0 by Cramer's rule.
+    Vec<double, 2> F;
+    Mat<double, 2> J;
+    Vec<double, 2> zero = q0;
+    fj(zero, F, J);  // F affine in q1: F(q1) = F(q0) + J (q1 - q0)
+    const Vec<double, 2> exact = q0 - J.inverse() * F;
+    CHECK(std::abs(x(0) - exact(0)) <= 1e-15);
+    CHECK(std::abs(x(1) - exact(1)) <= 1e-15 * 1.0 + 1e-12 * std::abs(exact(1)));
+  };
+  check(
+      [&](Vec<double, 2>& x) { return newton_solve<2>(x, fj, NewtonOptions{}, "magnetic", &q0); });
+  check([&](Vec<double, 2>& x) {
+    return affine_newton_solve<2>(
+        x,
+        [&](const Vec<double, 2>& y, Vec<double, 2>& F, Mat<double, 2>& J, bool) { fj(y, F, J); },
+        NewtonOptions{}, "magnetic", &q0);
+  });
+  // The wrong input: a system with no root still throws. The stagnation test needs two tiny,
+  // non-contracting updates in a row, which a diverging or cycling iteration does not give.
+  Vec<double, 1> y(0.5);
+  auto noroot = [](const Vec<double, 1>& v, Vec<double, 1>& F, Mat<double, 1>& J) {
+    F(0) = v(0) * v(0) + 1.0;
+    J(0, 0) = 2.0 * v(0);
+  };
+  CHECK_THROWS_AS(newton_solve<1>(y, noroot, NewtonOptions{}), SolveError);
+}
+
 TEST_CASE("simplified_newton_solve: one Jacobian where it suffices, typed failures") {
   // x² = 2 componentwise from a close start: the frozen Jacobian contracts fast enough.
   int jacobians = 0;

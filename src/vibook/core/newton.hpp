@@ -24,6 +24,13 @@ namespace vibook {
 /// component (a clock t ≈ 40 beside positions ≈ 0.4) does not loosen the small ones, while
 /// the displacement |x − ref| bounds the attainable accuracy of components passing through 0.
 /// The residual criterion |F|_inf <= residual_abs also stops. At most max_iterations.
+/// Stagnation also stops, as converged: two successive updates both within
+/// step_rel · max(|x|_inf, |ref|_inf) (normwise, at the size of the largest component), the
+/// second not 16 times smaller than the first. A component that stays at zero (a particle at
+/// rest) cannot meet the componentwise rule: the round-off of the equation's own terms, of the
+/// size of the largest component, is the floor of its updates, and Newton's iteration, which
+/// would otherwise contract quadratically, has stopped contracting (chapter "Verify your own
+/// integrator", section "The criteria of every route").
 /// For a wider scalar type set step_rel to a few units of *its* round-off (unit_roundoff<T>),
 /// or to the tolerance asked for.
 struct NewtonOptions {
@@ -49,6 +56,30 @@ template <int N, class T>
   }
   return true;
 }
+
+// The stagnation test of NewtonOptions: called after each update that failed the componentwise
+// rule; true when this update and the one before are both at the round-off of the largest
+// component (normwise) and this one is not 16 times smaller than the one before.
+template <int N, class T>
+class Stagnation {
+ public:
+  bool operator()(const Vec<T, N>& x, const Vec<T, N>& dx, const Vec<T, N>& ref,
+                  const T& step_rel) {
+    using std::max;
+    const T size =
+        max(T(x.template lpNorm<Eigen::Infinity>()), T(ref.template lpNorm<Eigen::Infinity>()));
+    const T d = dx.template lpNorm<Eigen::Infinity>();
+    const bool small = d <= step_rel * size;
+    const bool stagnated = small && last_small_ && T(16) * d > last_;
+    last_small_ = small;
+    last_ = d;
+    return stagnated;
+  }
+
+ private:
+  T last_ = T(0);
+  bool last_small_ = false;
+};
 
 // How a Newton step solves J dx = F: the default factors J by LU with partial pivoting.
 struct PivotedLu {
@@ -178,6 +209,7 @@ SolveReport newton_solve(Vec<T, N>& x, FJ&& fj, const NewtonOptions& opt,
     J.resize(x.size(), x.size());
   }
   const T step_rel(opt.step_rel), step_abs(opt.step_abs);
+  newton_detail::Stagnation<N, T> stagnation;
   const auto evaluate = [&](bool with_jacobian) {
     if constexpr (std::is_invocable_v<FJ&, const Vec<T, N>&, Vec<T, N>&, Mat<T, N>&, bool>)
       fj(x, F, J, with_jacobian);
@@ -197,7 +229,8 @@ SolveReport newton_solve(Vec<T, N>& x, FJ&& fj, const NewtonOptions& opt,
     if (!std::isfinite(to_double(T(dx.template lpNorm<Eigen::Infinity>()))))
       throw newton_detail::singular_jacobian(what, rep);
     x -= dx;
-    if (newton_detail::update_is_small<N>(x, dx, ref, step_rel, step_abs)) {
+    if (newton_detail::update_is_small<N>(x, dx, ref, step_rel, step_abs) ||
+        stagnation(x, dx, ref, step_rel)) {
       evaluate(false);  // the residual at the returned point: F alone, when fj can skip J
       rep.residual = to_double(T(F.template lpNorm<Eigen::Infinity>()));
       rep.converged = std::isfinite(rep.residual);
@@ -232,6 +265,7 @@ SolveReport affine_newton_solve(Vec<T, N>& x, FJ&& fj, const NewtonOptions& opt,
     J.resize(x.size(), x.size());
   }
   const T step_rel(opt.step_rel), step_abs(opt.step_abs);
+  newton_detail::Stagnation<N, T> stagnation;
   fj(x, F, J, true);
   const auto lu = Linear::factor(J);
   for (rep.iterations = 1; rep.iterations <= opt.max_iterations; ++rep.iterations) {
@@ -245,7 +279,8 @@ SolveReport affine_newton_solve(Vec<T, N>& x, FJ&& fj, const NewtonOptions& opt,
     if (!std::isfinite(to_double(T(dx.template lpNorm<Eigen::Infinity>()))))
       throw newton_detail::singular_jacobian(what, rep);
     x -= dx;
-    if (newton_detail::update_is_small<N>(x, dx, ref, step_rel, step_abs)) {
+    if (newton_detail::update_is_small<N>(x, dx, ref, step_rel, step_abs) ||
+        stagnation(x, dx, ref, step_rel)) {
       rep.converged = true;
       return rep;
     }
@@ -269,6 +304,7 @@ SolveReport simplified_newton_solve(Vec<T, N>& x, Fn&& f, Jac&& jac, const Newto
   const Vec<T, N> ref = reference ? *reference : x;
   SolveReport rep;
   const T step_rel(opt.step_rel), step_abs(opt.step_abs);
+  newton_detail::Stagnation<N, T> stagnation;
   Mat<T, N> Jinv = Mat<T, N>(jac(x)).inverse();
   T last = T(0);
   for (rep.iterations = 1; rep.iterations <= opt.max_iterations; ++rep.iterations) {
@@ -294,7 +330,8 @@ SolveReport simplified_newton_solve(Vec<T, N>& x, Fn&& f, Jac&& jac, const Newto
     }
     last = dx.template lpNorm<Eigen::Infinity>();
     x -= dx;
-    if (newton_detail::update_is_small<N>(x, dx, ref, step_rel, step_abs, factor)) {
+    if (newton_detail::update_is_small<N>(x, dx, ref, step_rel, step_abs, factor) ||
+        stagnation(x, dx, ref, step_rel)) {
       rep.converged = true;
       return rep;
     }
