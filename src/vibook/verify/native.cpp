@@ -5,15 +5,18 @@
 #include <fcntl.h>
 #include <signal.h>
 #include <spawn.h>
+#include <sys/stat.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <cerrno>
 #include <chrono>
 #include <cstdint>
 #include <cstdlib>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <iostream>
 #include <thread>
 #include <vector>
 
@@ -91,6 +94,108 @@ fs::path cache_dir() {
   return {};
 }
 
+// --- The cache is trusted only if it is ours (issue: the tape cache ran planted code) -------
+// A directory or file is ours when lstat says: not a symbolic link, owned by the effective
+// user, and writable by neither group nor others. Anyone else who could write there could put
+// a shared object under the name we compute, and dlopen runs its constructors.
+bool ours(const struct stat& st) {
+  return st.st_uid == geteuid() && (st.st_mode & (S_IWGRP | S_IWOTH)) == 0;
+}
+
+// Create `dir` and its missing parents with mode 0700; then require it and its parent to be
+// ours. Returns the reason it is not trusted (empty: trusted).
+std::string trust_directory(const fs::path& dir) {
+  std::vector<fs::path> missing;
+  for (fs::path d = dir; !d.empty() && d != d.root_path(); d = d.parent_path()) {
+    struct stat st {};
+    if (::lstat(d.c_str(), &st) == 0) break;
+    missing.push_back(d);
+  }
+  for (auto it = missing.rbegin(); it != missing.rend(); ++it)
+    if (::mkdir(it->c_str(), 0700) != 0 && errno != EEXIST) return "cannot create " + it->string();
+  for (const fs::path& d : {dir, dir.parent_path()}) {
+    struct stat st {};
+    if (::lstat(d.c_str(), &st) != 0) return "cannot read " + d.string();
+    if (!S_ISDIR(st.st_mode)) return d.string() + " is not a directory (a link is refused)";
+    if (!ours(st))
+      return d.string() + (st.st_uid != geteuid() ? " belongs to another user"
+                                                  : " is writable by group or others");
+  }
+  return {};
+}
+
+// The identity of a compiled object, as vibook records it beside the object right after it
+// compiled it: device, inode, size and the kernel's change time. A file put there in any
+// other way (planted, replaced, restored from a copy of the cache) has another inode or
+// change time, which no user can set, and is compiled again instead of loaded.
+std::string identity(const struct stat& st) {
+  return std::to_string(st.st_dev) + " " + std::to_string(st.st_ino) + " " +
+         std::to_string(st.st_size) + " " + std::to_string(st.st_ctim.tv_sec) + "." +
+         std::to_string(st.st_ctim.tv_nsec) + "\n";
+}
+
+// Open `file` without following a link; its stat when it is a regular file that is ours.
+int open_ours(const fs::path& file, struct stat& st) {
+  const int fd = ::open(file.c_str(), O_RDONLY | O_NOFOLLOW | O_CLOEXEC);
+  if (fd < 0) return -1;
+  if (::fstat(fd, &st) != 0 || !S_ISREG(st.st_mode) || !ours(st)) {
+    ::close(fd);
+    return -1;
+  }
+  return fd;
+}
+
+// Is `so` the object vibook compiled, by the record `id` written when it did?
+bool recorded(const fs::path& so, const fs::path& id) {
+  struct stat st {
+  }, rst{};
+  const int fd = open_ours(so, st);
+  if (fd < 0) return false;
+  ::close(fd);
+  const int rfd = open_ours(id, rst);
+  if (rfd < 0) return false;
+  char buf[256];
+  const ssize_t n = ::read(rfd, buf, sizeof buf);
+  ::close(rfd);
+  return n > 0 && std::string(buf, std::size_t(n)) == identity(st);
+}
+
+// Write the record of `so` (just renamed into place) through a temporary and a rename.
+bool record(const fs::path& so, const fs::path& id) {
+  struct stat st {};
+  const int fd = open_ours(so, st);
+  if (fd < 0) return false;
+  ::close(fd);
+  const std::string text = identity(st);
+  std::string tmp = id.string() + ".XXXXXX";
+  const int tfd = mkstemp(tmp.data());
+  if (tfd < 0) return false;
+  const bool ok = ::write(tfd, text.data(), text.size()) == ssize_t(text.size());
+  if (::close(tfd) != 0 || !ok) {
+    ::unlink(tmp.c_str());
+    return false;
+  }
+  if (::rename(tmp.c_str(), id.c_str()) != 0) {
+    ::unlink(tmp.c_str());
+    return false;
+  }
+  return true;
+}
+
+// A private directory of our own for a cache we do not trust: compiled, loaded, removed.
+struct PrivateDir {
+  fs::path path;
+  PrivateDir() {
+    const char* t = std::getenv("TMPDIR");
+    std::string tmpl = (fs::path(t && *t ? t : "/tmp") / "vibook-tape.XXXXXX").string();
+    if (mkdtemp(tmpl.data())) path = tmpl;
+  }
+  ~PrivateDir() {
+    std::error_code ec;
+    if (!path.empty()) fs::remove_all(path, ec);
+  }
+};
+
 // Run argv with stdout and stderr to /dev/null; true when it exits 0 within `seconds`.
 bool run(const std::vector<std::string>& argv, double seconds, std::string& reason) {
   std::vector<char*> args;
@@ -163,17 +268,31 @@ NativeTapes load_native(const Tape& newton, const Tape& momentum, std::string& r
   for (const auto& f : flags) key += " " + f;
   char name[17];
   std::snprintf(name, sizeof name, "%016llx", static_cast<unsigned long long>(fnv1a(key)));
-  const fs::path dir = cache_dir();
-  if (dir.empty()) {
-    reason = "no cache directory (set VIBOOK_CACHE_DIR)";
-    return n;
+  fs::path dir = cache_dir();
+  // An untrusted cache is refused with one line (once a process) and the object compiled in a
+  // private temporary directory instead, loaded from there and removed.
+  std::unique_ptr<PrivateDir> private_dir;
+  const std::string distrust =
+      dir.empty() ? std::string("no cache directory (set VIBOOK_CACHE_DIR)") : trust_directory(dir);
+  if (!distrust.empty()) {
+    static bool said = false;
+    if (!said && !dir.empty())
+      std::cerr << "vibook: the tape cache is not used: " << distrust
+                << "; compiling in a private temporary directory\n";
+    said = true;
+    private_dir = std::make_unique<PrivateDir>();
+    if (private_dir->path.empty()) {
+      reason = distrust + ", and no private temporary directory";
+      return n;
+    }
+    dir = private_dir->path;
   }
   std::error_code ec;
-  fs::create_directories(dir, ec);
   const fs::path so = dir / (std::string(name) + ".so");
-  if (!fs::is_regular_file(so, ec)) {
+  const fs::path id = dir / (std::string(name) + ".id");
+  if (!recorded(so, id)) {
     // Compile into temporaries and rename into place: a concurrent run sees either nothing or
-    // a finished object, never a half-written one.
+    // a finished object, never a half-written one. Then record what was compiled.
     const std::string cannot_write = "cannot write in the cache " + dir.string();
     std::string c_file = (dir / (std::string(name) + ".XXXXXX.c")).string();
     std::string so_tmp = so.string() + ".XXXXXX.tmp";
@@ -193,8 +312,9 @@ NativeTapes load_native(const Tape& newton, const Tape& momentum, std::string& r
       argv.insert(argv.end(), {"-o", so_tmp, c_file, "-lm"});
       ok = run(argv, 60, reason);
       if (ok) {
+        fs::permissions(so_tmp, fs::perms::owner_read | fs::perms::owner_write, ec);
         fs::rename(so_tmp, so, ec);
-        if (ec) {
+        if (ec || !record(so, id)) {
           ok = false;
           reason = cannot_write;
         }
@@ -208,6 +328,15 @@ NativeTapes load_native(const Tape& newton, const Tape& momentum, std::string& r
       return n;
     }
   }
+  // Load what was just verified; a concurrent run may have replaced it by its own compile of
+  // the same source in between (same user, same directory), which is as good.
+  struct stat before {};
+  const int verified = open_ours(so, before);
+  if (verified < 0) {
+    reason = "cannot open " + so.string();
+    return n;
+  }
+  ::close(verified);
   void* h = dlopen(so.c_str(), RTLD_NOW | RTLD_LOCAL);
   if (!h) {
     reason = "cannot load " + so.string();
