@@ -10,6 +10,7 @@
 #include <thread>
 
 #include "cli.hpp"
+#include "vibook/core/children.hpp"
 #include "vibook/core/output_file.hpp"
 
 namespace vibook::cli {
@@ -36,6 +37,7 @@ sigset_t handled_signals() {
       g_pending.store(sig);  // the step loop stops at its next step and keeps FILE.partial
       continue;
     }
+    end_child_groups();
     remove_temporaries();
     eprint(std::string("vibook: interrupted by ") + signal_name(sig) +
            "; no output was left half-written (temporary files removed)\n");

@@ -40,6 +40,7 @@
 #include "vibook/core/output_file.hpp"
 #include "vibook/modified/engine.hpp"
 #include "vibook/verify/black_box.hpp"
+#include "vibook/verify/line_protocol.hpp"
 #include "vibook/verify/expression.hpp"
 #include "vibook/verify/stepper_abi.h"
 
@@ -56,147 +57,6 @@ std::string vec_text(const double* v, int n) {
 // --- the two kinds of black box: a library (vibook/verify/black_box.hpp) and a command ------
 
 using verify::BlackBox;
-
-// A child process speaking the line protocol (file comment) on its stdin and stdout; its stderr
-// is ours, so a traceback reaches the user.
-class Command final : public BlackBox {
- public:
-  Command(const std::string& cmd, int dof, double timeout) : dof_(dof), timeout_(timeout) {
-    int in[2], out[2];
-    if (::pipe2(in, O_CLOEXEC) != 0) throw NumericalError("pipe: " + std::string(strerror(errno)));
-    if (::pipe2(out, O_CLOEXEC) != 0) {
-      ::close(in[0]);
-      ::close(in[1]);
-      throw NumericalError("pipe: " + std::string(strerror(errno)));
-    }
-    pid_ = ::fork();
-    if (pid_ < 0) throw NumericalError("fork: " + std::string(strerror(errno)));
-    if (pid_ == 0) {
-      ::dup2(in[0], 0);
-      ::dup2(out[1], 1);
-      ::signal(SIGPIPE, SIG_DFL);  // vibook ignores it; the stepper gets the usual default
-      ::execl("/bin/sh", "sh", "-c", cmd.c_str(), static_cast<char*>(nullptr));
-      ::_exit(127);
-    }
-    ::close(in[0]);
-    ::close(out[1]);
-    to_ = in[1];
-    from_ = out[0];
-  }
-  ~Command() override {
-    if (to_ >= 0) ::close(to_);  // end of input: the stepper should exit
-    if (from_ >= 0) ::close(from_);
-    if (pid_ > 0) {
-      for (int i = 0; i < 200; ++i) {  // up to 2 s, then it is killed
-        if (::waitpid(pid_, nullptr, WNOHANG) == pid_) return;
-        ::usleep(10000);
-      }
-      ::kill(pid_, SIGKILL);
-      ::waitpid(pid_, nullptr, 0);
-    }
-  }
-  Command(const Command&) = delete;
-  Command& operator=(const Command&) = delete;
-
-  void run(double h, long long n, double* q, double* p) override {
-    std::string req = fmt::format("{:.17g} {}", h, n);
-    for (int i = 0; i < dof_; ++i) req += fmt::format(" {:.17g}", q[i]);
-    for (int i = 0; i < dof_; ++i) req += fmt::format(" {:.17g}", p[i]);
-    req += '\n';
-    write_all(req);
-    const std::string answer = read_line();
-    if (answer.rfind("error", 0) == 0) {
-      std::string why = answer.substr(5);
-      why.erase(0, why.find_first_not_of(" :\t"));
-      throw NumericalError("the stepper answered 'error'" + (why.empty() ? "" : ": " + why));
-    }
-    std::vector<double> v;
-    const char* s = answer.c_str();
-    while (true) {
-      while (*s == ' ' || *s == '\t' || *s == '\r') ++s;
-      if (!*s) break;
-      char* end = nullptr;
-      errno = 0;
-      const double x = std::strtod(s, &end);
-      if (end == s || (*end && *end != ' ' && *end != '\t' && *end != '\r'))
-        throw NumericalError(protocol("is not a list of numbers", answer));
-      v.push_back(x);
-      s = end;
-    }
-    if (v.size() != static_cast<std::size_t>(2 * dof_))
-      throw NumericalError(
-          protocol(fmt::format("has {} numbers, not 2 x {} (q then p)", v.size(), dof_), answer));
-    for (int i = 0; i < dof_; ++i) {
-      q[i] = v[static_cast<std::size_t>(i)];
-      p[i] = v[static_cast<std::size_t>(dof_ + i)];
-    }
-  }
-
- private:
-  static std::string protocol(const std::string& what, const std::string& answer) {
-    const std::string shown = answer.size() > 120 ? answer.substr(0, 120) + "…" : answer;
-    return "the stepper's answer " + what + " (line protocol 1: 'q_1 … q_d p_1 … p_d'): '" + shown +
-           "'";
-  }
-  std::string exited() {
-    int status = 0;
-    for (int i = 0; i < 50; ++i) {
-      if (::waitpid(pid_, &status, WNOHANG) == pid_) {
-        pid_ = -1;
-        if (WIFEXITED(status))
-          return fmt::format("the stepper exited with status {}", WEXITSTATUS(status));
-        if (WIFSIGNALED(status))
-          return fmt::format("the stepper was killed by signal {}", WTERMSIG(status));
-      }
-      ::usleep(10000);
-    }
-    return "the stepper closed its output";
-  }
-  void write_all(const std::string& s) {
-    std::size_t done = 0;
-    while (done < s.size()) {
-      const ssize_t w = ::write(to_, s.data() + done, s.size() - done);
-      if (w < 0 && errno == EINTR) continue;
-      if (w < 0)
-        throw NumericalError(exited() + " (a request could not be written: " + strerror(errno) +
-                             ")");
-      done += static_cast<std::size_t>(w);
-    }
-  }
-  std::string read_line() {
-    const auto deadline =
-        std::chrono::steady_clock::now() + std::chrono::duration<double>(timeout_);
-    while (true) {
-      if (const auto nl = buf_.find('\n'); nl != std::string::npos) {
-        std::string line = buf_.substr(0, nl);
-        buf_.erase(0, nl + 1);
-        return line;
-      }
-      if (buf_.size() > (1u << 20)) throw NumericalError("the stepper's answer exceeds 1 MiB");
-      const double left =
-          std::chrono::duration<double>(deadline - std::chrono::steady_clock::now()).count();
-      if (left <= 0)
-        throw NumericalError(
-            fmt::format("the stepper did not answer within {:g} s "
-                        "(--stepper-timeout)",
-                        timeout_));
-      pollfd pfd{from_, POLLIN, 0};
-      const int r = ::poll(&pfd, 1, static_cast<int>(std::ceil(std::min(left, 1e6) * 1000)));
-      if (r < 0 && errno == EINTR) continue;
-      if (r <= 0) continue;
-      char chunk[4096];
-      const ssize_t got = ::read(from_, chunk, sizeof chunk);
-      if (got < 0 && errno == EINTR) continue;
-      if (got <= 0) throw NumericalError(exited() + " before answering");
-      buf_.append(chunk, static_cast<std::size_t>(got));
-    }
-  }
-  int dof_;
-  double timeout_;
-  pid_t pid_ = -1;
-  int to_ = -1, from_ = -1;
-  std::string buf_;
-};
 
 // --- the system the stepper is meant for ------------------------------------------------------
 
@@ -414,7 +274,7 @@ int run_n(const StepperOptions& o, const Plan& p) {
   if (o.lib_given)
     box = std::make_unique<verify::StepperLibrary>(o.lib, o.arg, N);
   else
-    box = std::make_unique<Command>(o.cmd, N, p.timeout);
+    box = std::make_unique<verify::LineProtocolStepper>(o.cmd, N, p.timeout);
   const std::string which = o.lib_given ? "--stepper-lib" : "--stepper-cmd";
   auto finite = [](const Eigen::VectorXd& z) { return z.allFinite(); };
   {

@@ -9,6 +9,7 @@
 #include <fmt/format.h>
 
 #include "cli.hpp"
+#include "vibook/core/children.hpp"
 #include "vibook/core/output_file.hpp"
 #include "vibook/core/progress.hpp"
 
@@ -43,6 +44,7 @@ void Watchdog::watch() {
     const auto now = Clock::now();
     const double elapsed = std::chrono::duration<double>(now - start).count();
     if (max_seconds_ > 0 && elapsed >= max_seconds_) {
+      end_child_groups();
       remove_temporaries();
       eprint(fmt::format("{}vibook: numerical failure: {} stopped by --max-seconds {:g} in: {}\n",
                          drawn_ ? "\r\033[K" : "", command_, max_seconds_, progress::stage()));

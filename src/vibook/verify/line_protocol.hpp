@@ -1,0 +1,53 @@
+/// \file line_protocol.hpp
+/// \brief A black-box stepper behind the line protocol: a child process (`sh -c CMD`) that
+/// reads requests `H N q_1 … q_d p_1 … p_d` on its standard input and answers one line
+/// `q_1 … q_d p_1 … p_d` (or `error REASON`) on its standard output (`vibook verify
+/// --stepper-cmd`, chapter "Verify your own integrator", "Any stepper as a black box").
+///
+/// The child is held at arm's length: it runs in a process group of its own, which is ended
+/// (SIGKILL to the group, so also anything it forked) on every way out, the destructor's and
+/// vibook's exits through end_child_groups() (core/children.hpp). Requests are written without
+/// blocking and answers read with bounds, all within the timeout: an answer longer than 1 MiB,
+/// a line it was not asked for, or a stepper that stops reading its input is an error, never a
+/// hang. Its standard error is captured, not passed through; its last line is added to the
+/// message of any failure.
+#pragma once
+
+#include <sys/types.h>
+
+#include <string>
+
+#include "vibook/verify/black_box.hpp"
+
+namespace vibook::verify {
+
+class LineProtocolStepper final : public BlackBox {
+ public:
+  /// Start `sh -c cmd`; `dof` degrees of freedom; `timeout` seconds for each answer.
+  LineProtocolStepper(const std::string& cmd, int dof, double timeout);
+  ~LineProtocolStepper() override;
+  LineProtocolStepper(const LineProtocolStepper&) = delete;
+  LineProtocolStepper& operator=(const LineProtocolStepper&) = delete;
+
+  void run(double h, long long n, double* q, double* p) override;
+
+  /// The largest answer line read (bytes).
+  static constexpr std::size_t kMaxLine = std::size_t(1) << 20;
+
+ private:
+  [[noreturn]] void fail(const std::string& why);
+  std::string exited();
+  void pump(int timeout_ms);  // read what is there on stdout and stderr, waiting up to timeout
+  void write_all(const std::string& s, double deadline_s);
+  std::string read_line(double deadline_s);
+  void end();
+
+  int dof_;
+  double timeout_;
+  pid_t pid_ = -1;
+  int to_ = -1, from_ = -1, err_ = -1;
+  std::string buf_, err_tail_;
+  bool reaped_ = false;
+};
+
+}  // namespace vibook::verify
