@@ -377,8 +377,22 @@ int main(int argc, char** argv) {
         continue;  // a value: "-", "-0.1"
       const std::string name(tok.substr(0, tok.find('=')));
       if (name == "-h" || name == "--help" || sub->get_option_no_throw(name) != nullptr) continue;
+      // A value that begins with '-' (an expression such as '-v^2/2 - q^2/2') after an option:
+      // say how to give it, and show at most 60 characters of it.
+      const std::string prev = i > 2 ? std::string(argv[i - 1]) : std::string();
+      const bool looks_like_value =
+          name.find_first_of(" ^*/()+") != std::string::npos && prev.rfind("--", 0) == 0 &&
+          prev.find('=') == std::string::npos && sub->get_option_no_throw(prev) != nullptr;
+      const std::string shown = name.size() > 60 ? name.substr(0, 60) + "..." : name;
+      if (looks_like_value) {
+        vibook::cli::eprint(fmt::format(
+            "vibook: error: {}: its value '{}' begins with '-' and was read as an option; write "
+            "{}='{}'\n",
+            prev, shown, prev, shown));
+        return cli::kBadArgument;
+      }
       vibook::cli::eprint(fmt::format(
-          "vibook: error: unknown option '{}' of `vibook {}` (see `vibook {} --help`)\n", name,
+          "vibook: error: unknown option '{}' of `vibook {}` (see `vibook {} --help`)\n", shown,
           word, word));
       return cli::kBadArgument;
     }

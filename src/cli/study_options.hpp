@@ -11,6 +11,7 @@ struct StudyOptions {
   std::string problem, q0, p0, t_end, h_list, expected, order_tol, h, steps, floor, json_out;
   bool json_given = false, t_end_given = false, h_list_given = false, expected_given = false,
        order_tol_given = false;
+  bool symmetric = false;  ///< --symmetric: symmetry (and reversibility) join the verdict
 };
 
 /// A catalogue route's own system instead of --problem (--method, --tableau): L = |v|²/2 − V(q)

@@ -147,6 +147,7 @@ void set_study_options(StudyOptions& s, const VerifyOptions& o, const CLI::App& 
   s.h_list_given = c.count("--h-list") > 0;
   s.expected_given = c.count("--expected-order") > 0;
   s.order_tol_given = c.count("--order-tol") > 0;
+  s.symmetric = o.symmetric;
 }
 
 int run(const VerifyOptions& o, const CLI::App& c) {
@@ -156,6 +157,21 @@ int run(const VerifyOptions& o, const CLI::App& c) {
     if (!(max_seconds > 0 && max_seconds <= 1e7))
       throw ArgumentError("--max-seconds", "must be a positive number of seconds, at most 1e7");
   }
+  // An option given with an empty value is a mistake, never a request for the default.
+  for (const auto& [opt, value] : std::initializer_list<std::pair<const char*, const std::string*>>{
+           {"--problem", &o.problem},
+           {"--q0", &o.q0},
+           {"--p0", &o.p0},
+           {"--ld", &o.ld},
+           {"--potential", &o.potential},
+           {"--lagrangian", &o.lagrangian},
+           {"--hamiltonian", &o.hamiltonian},
+           {"--coefficients", &o.coefficients},
+           {"--method", &o.method},
+           {"--tableau", &o.tableau},
+           {"--composition", &o.composition}})
+    if (c.count(opt) > 0 && value->find_first_not_of(" \t") == std::string::npos)
+      throw ArgumentError(opt, "is empty");
   // The typed expressions' derivatives are derived symbolically: the limit covers that too.
   const Watchdog watchdog("verify", max_seconds, o.progress);
   if (c.count("--symbolic") > 0 && c.count("--method") == 0 && c.count("--composition") == 0)
@@ -184,16 +200,14 @@ int run(const VerifyOptions& o, const CLI::App& c) {
     to.hamiltonian_given = c.count("--hamiltonian") > 0;
     to.dim = o.dim;
     to.file = o.tableau;
-    to.symmetric = o.symmetric;
     return run_tableau(to);
   }
   if (c.count("--method") > 0) {
     // A Galerkin variational integrator from the catalogue (verify_method.cpp), on a test
     // problem or on the --potential typed.
-    for (const char* opt :
-         {"--ld", "--modified-order", "--format", "--report", "--reference", "--symmetric",
-          "--composition", "--coefficients", "--stepper-lib", "--stepper-cmd", "--stepper-arg",
-          "--stepper-timeout", "--adaptive", "--adaptive-steps"})
+    for (const char* opt : {"--ld", "--modified-order", "--format", "--report", "--reference",
+                            "--composition", "--coefficients", "--stepper-lib", "--stepper-cmd",
+                            "--stepper-arg", "--stepper-timeout", "--adaptive", "--adaptive-steps"})
       if (c.count(opt) > 0)
         throw ArgumentError(opt, "does not apply to --method (see vibook verify --help)");
     if (c.count("--hamiltonian") > 0)
@@ -231,7 +245,6 @@ int run(const VerifyOptions& o, const CLI::App& c) {
     so.dim = o.dim;
     so.lib_given = c.count("--stepper-lib") > 0;
     so.cmd_given = c.count("--stepper-cmd") > 0;
-    so.symmetric = o.symmetric;
     so.timings = o.timings;
     return run_stepper(so);
   }
@@ -241,8 +254,8 @@ int run(const VerifyOptions& o, const CLI::App& c) {
   if (c.count("--composition") > 0) {
     // A composition method (verify_composition.cpp); with base ld, of the --ld typed
     // (verify_composition_ld.cpp), on the system of --potential or --hamiltonian.
-    for (const char* opt : {"--modified-order", "--format", "--report", "--reference",
-                            "--symmetric", "--adaptive", "--adaptive-steps"})
+    for (const char* opt : {"--modified-order", "--format", "--report", "--reference", "--adaptive",
+                            "--adaptive-steps"})
       if (c.count(opt) > 0)
         throw ArgumentError(opt, "does not apply to --composition (see vibook verify --help)");
     if (o.composition != "ld")
@@ -400,8 +413,9 @@ std::function<int()> add_verify_command(CLI::App& app) {
                 "also write an HTML report into this new directory (figures, CSV, JSON; work-"
                 "precision beside Störmer-Verlet and the implicit midpoint rule)");
   c->add_flag("--symmetric", o->symmetric,
-              "the method is meant to be symmetric (its own adjoint): its time-reversibility "
-              "becomes part of the verdict (otherwise it is reported only)");
+              "the method is meant to be symmetric (its own adjoint), on every route: its "
+              "symmetry becomes part of the verdict, and its time-reversibility too where the "
+              "intended system is reversible (otherwise both are reported only)");
   c->add_option("--max-seconds", o->max_seconds,
                 "stop with status 3, naming the part reached, if verify takes longer");
   c->add_flag("--progress", o->progress,

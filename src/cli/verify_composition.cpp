@@ -3,6 +3,8 @@
 // digits, measured order, symplecticity, reversibility, energy) printed. Every part is printed,
 // even after one fails; the verdict names the parts that failed.
 #include "verify_composition.hpp"
+
+#include <cmath>
 #include "verify_map.hpp"
 
 #include <string>
@@ -31,6 +33,9 @@ struct Plan {
   verify::SymbolicUse symbolic = verify::SymbolicUse::automatic;
 };
 
+// The largest size of a typed stage coefficient.
+constexpr double kMaxCoefficient = 1e3;
+
 // The coefficients: a catalogue entry or a typed list (parsed at 120 digits), and
 // --expected-order.
 void check_coefficients(const CompositionOptions& o, verify::CompositionSpec& spec) {
@@ -47,14 +52,25 @@ void check_coefficients(const CompositionOptions& o, verify::CompositionSpec& sp
                                                 "' (yoshida4, suzuki4, yoshida6, yoshida8, "
                                                 "mclachlan8, kahanli6, kahanli8, ruth3)");
     const MpfrDigits digits(verify::kCompositionDigits);
-    for (const auto& item : split_list("--coefficients", o.coefficients))
+    for (const auto& item : split_list("--coefficients", o.coefficients)) {
       spec.typed.push_back(comp::parse_stage<mpfr_real>("--coefficients", item));
+      // A stage of more than 1e3 steps (or one beyond double's range, 1e9223372036854775808)
+      // is a typing error, not a method: no published composition has a coefficient above 3.
+      const double c = static_cast<double>(spec.typed.back().c);
+      if (!(std::abs(c) <= kMaxCoefficient))
+        throw ArgumentError(
+            "--coefficients",
+            fmt::format("stage {} ('{}') lies beyond {:g} in size", spec.typed.size(),
+                        item.size() > 40 ? item.substr(0, 40) + "..." : item, kMaxCoefficient));
+    }
     if (spec.typed.empty() || spec.typed.size() > 64)
       throw ArgumentError("--coefficients", "needs 1 to 64 stages");
   }
   if (o.expected_given) {
     const double e = parse_number("--expected-order", o.expected);
-    if (!(e > 0 && e <= 10)) throw ArgumentError("--expected-order", "must lie in (0, 10]");
+    if (!(e > 0 && e <= verify::kMaxOrder))
+      throw ArgumentError("--expected-order",
+                          fmt::format("must lie in (0, {:g}]", verify::kMaxOrder));
     spec.expected = e;
   }
 }

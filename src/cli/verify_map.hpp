@@ -118,6 +118,7 @@ void check_study_options(const Options& o, MapStudy& s) {
       throw ArgumentError("--floor", "must be a finite number >= 0");
   }
   if (!o.h.empty()) s.h = parse_number("--h", o.h);
+  s.symmetric_claimed = o.symmetric;
   if (!o.steps.empty()) s.steps = parse_integer("--steps", o.steps);
   if (s.steps < 1024 || s.steps > 100000000)
     throw ArgumentError("--steps", "must lie in [1024, 1e8]");

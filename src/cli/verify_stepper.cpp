@@ -40,8 +40,8 @@
 #include "vibook/core/output_file.hpp"
 #include "vibook/modified/engine.hpp"
 #include "vibook/verify/black_box.hpp"
-#include "vibook/verify/line_protocol.hpp"
 #include "vibook/verify/expression.hpp"
+#include "vibook/verify/line_protocol.hpp"
 #include "vibook/verify/stepper_abi.h"
 
 namespace vibook::cli {
@@ -134,8 +134,9 @@ Plan check(const StepperOptions& o) {
                         "is required with a black-box stepper: the order it is documented to "
                         "have (the verdict tests it)");
   p.expected = parse_number("--expected-order", o.expected);
-  if (!(p.expected > 0 && p.expected <= 10))
-    throw ArgumentError("--expected-order", "must lie in (0, 10]");
+  if (!(p.expected > 0 && p.expected <= verify::kMaxOrder))
+    throw ArgumentError("--expected-order",
+                        fmt::format("must lie in (0, {:g}]", verify::kMaxOrder));
   check_study_options(o, p.study);
   if (!o.timeout.empty()) {
     p.timeout = parse_number("--stepper-timeout", o.timeout);
@@ -328,8 +329,8 @@ int run_n(const StepperOptions& o, const Plan& p) {
   // A command answers a whole run at once, but at the speed of its language: the walk of step
   // counts stops at 1e5 steps a run (a library: 1e6, as for the compositions).
   if (o.cmd_given) s.max_substeps = 1e5;
-  s.require_reversible = o.symmetric;
-  s.reversible_note = " (reported only: --symmetric makes it part of the verdict)";
+  s.symmetric_claimed = o.symmetric;
+  s.symmetric_note = " (reported only: --symmetric makes it part of the verdict)";
 
   if (o.lib_given)
     rep.line("stepper",

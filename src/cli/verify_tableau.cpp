@@ -40,8 +40,9 @@ Plan check(const TableauOptions& o) {
   }
   if (o.expected_given) {
     p.spec.expected = parse_number("--expected-order", o.expected);
-    if (!(p.spec.expected > 0 && p.spec.expected <= 10))
-      throw ArgumentError("--expected-order", "must lie in (0, 10]");
+    if (!(p.spec.expected > 0 && p.spec.expected <= verify::kMaxOrder))
+      throw ArgumentError("--expected-order",
+                          fmt::format("must lie in (0, {:g}]", verify::kMaxOrder));
     p.spec.expected_from = "--expected-order";
   } else if (!p.spec.documented_order) {
     throw ArgumentError("--expected-order",

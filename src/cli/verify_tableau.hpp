@@ -12,7 +12,6 @@ namespace vibook::cli {
 /// The options of a tableau verification, as typed; `given` flags say which the user set.
 struct TableauOptions : StudyOptions, TypedPotentialOptions {
   std::string file;
-  bool symmetric = false;
   /// --hamiltonian: any H(q, p) typed, instead of |p|²/2 + V(q) (HamiltonianPrkMethod)
   std::string hamiltonian;
   bool hamiltonian_given = false;

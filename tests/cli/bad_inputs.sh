@@ -335,5 +335,28 @@ rm -rf fdir
   bad "claims --json-out: the ledger was not printed: $(head -3 stdout) $(cat stderr)"
 rm -f cj.json
 
+# --- inputs read forever (the fourth probe): a device, a FIFO, a deep nesting ------------------
+row 2 "is not a regular file" verify --tableau /dev/zero
+row 2 "is not a regular file" verify --tableau /dev/urandom
+mkfifo fifo.json
+row 2 "is not a regular file" verify --tableau ../fifo.json
+rm -f fifo.json
+head -c 1100000 /dev/zero | tr '\0' ' ' > big.json
+row 2 "is larger than 1048576 bytes" verify --tableau ../big.json
+rm -f big.json
+deep=x
+for _ in $(seq 100); do deep="sin($deep)"; done
+row 2 "nests deeper than 64 levels" verify --ld "h*((q1-q0)^2/(2*h^2) - (V(q0)+V(q1))/2)" --potential "$deep"
+# --- statuses as promised: an inconsistent method never passes (a verdict, 5) -------------------
+row 5 "consistency" verify --composition sv --coefficients 1,1 --problem pendulum --steps 2048
+row 5 "consistency" verify --ld '(q1-q0)^2/2 - V(q1)' --potential='-cos(x)' --q0 1 --p0 0.5 --steps 2048
+# --- an argument's fault is 2, never 3 --------------------------------------------------------
+row 2 "--coefficients" verify --composition sv --coefficients 1e9223372036854775808
+row 2 "--problem: is empty" verify --problem '' --composition sv --coefficients yoshida4
+row 2 "--q0: is empty" verify --ld "$SIMPSON" --potential "$HH" --q0 ''
+row 2 "--lagrangian='-v^2/2 - q^2/2'" verify --method gauss:2 --lagrangian '-v^2/2 - q^2/2'
+row 2 "expected ')'" verify --ld "$SIMPSON" --potential '((((x'
+row 2 "--stepper-cmd: is empty" verify --stepper-cmd ' ' --expected-order 2
+
 echo "bad inputs: $pass passed, $fail failed"
 [ "$fail" = 0 ]

@@ -39,10 +39,16 @@ case_ swapped 5 "order conditions,order,variational order,energy" 'order 2 by th
   -- --composition se --coefficients '3/8,7/24*,-25/24,3/8*,0,1*' --expected-order 3
 case_ first-order-base 5 "order conditions,order,energy" 'order 1 by the conditions' \
   'expected 4' -- --composition se --coefficients yoshida4 --expected-order 4
-case_ doubled 5 "order conditions,order,variational order" 'weight 1 fails' \
+case_ doubled 5 "order conditions,order,variational order,consistency" 'weight 1 fails' \
   '^variational order +(-0\.[01]|0\.[01])[0-9] \(measured.*expected 2: differs' \
   '^  derived +0 by the engine: .*expected 2: NO' \
+  '^consistency +not consistent: its exact conditions give order 0 \(below 1\): NO' \
   -- --composition sv --coefficients 1,1 --expected-order 2
+# The same without a claimed order: the conditions give 0, which it also measures; an
+# inconsistent method never passes, whatever order it defaults to (the fourth probe: PASS).
+case_ doubled-default 5 "consistency" \
+  '^consistency +not consistent: its exact conditions give order 0 \(below 1\): NO' \
+  -- --composition sv --coefficients 1,1 --problem pendulum --steps 2048
 
 # The variational order derived by the engine (coefficients exact rationals: typed lists, ruth3):
 # Ruth's method is of variational order 3 on Kepler and on Hénon-Heiles (whose 1/3 must stay
@@ -50,7 +56,7 @@ case_ doubled 5 "order conditions,order,variational order" 'weight 1 fails' \
 # steps are one step of h/2 taken twice: the h^3 coefficient of L_d - L_d^E is exactly a quarter
 # of one whole step's (an independent check on the elimination of the interior point).
 case_ engine-ruth3 0 "" '^  derived +3 by the engine: .*expected 3: yes' \
-  '^verdict +PASS \(order conditions, order, variational order, symplectic, energy\)' \
+  '^verdict +PASS \(order conditions, order, variational order, consistency, symplectic, energy\)' \
   -- --composition se --coefficients ruth3
 case_ engine-hh 0 "" '^  derived +2 by the engine: .*expected 2: yes' \
   -- --composition sv --coefficients 1/2,1/2 --problem henon-heiles
@@ -136,7 +142,7 @@ MID='h*((1+((q0+q1)/2)^2)*((q1-q0)/h)^2/2 - ((q0+q1)/2)^4/4)'
 case_ ld-lagrangian 0 "" '\(--lagrangian\)' 'order 4 by the conditions' '^verdict +PASS' \
   -- --composition ld --ld "$MID" --lagrangian "$MASS" --q0 0.5 --p0 0.3 --steps 4096 \
   --coefficients yoshida4
-case_ ld-lagrangian-wrong-system 5 "order,energy" 'expected 4 .*: NO' \
+case_ ld-lagrangian-wrong-system 5 "order,consistency,energy" 'expected 4 .*: NO' \
   -- --composition ld --ld "$MID" --lagrangian 'v^2/2 - q^4/4' --q0 0.5 --p0 0.3 --steps 4096 \
   --coefficients yoshida4
 # The engine derives the variational order of a composition of the typed L_d too (its stages
@@ -156,7 +162,7 @@ import json, sys
 a, b = (json.load(open(f))["variational_order"]["engine"] for f in sys.argv[1:])
 assert a["order"] == b["order"] == 3 and a["defect"] == b["defect"] and a["defect"][3], (a, b)
 PY
-case_ ld-engine-wrong-system 5 "order,variational order,energy" \
+case_ ld-engine-wrong-system 5 "order,variational order,consistency,energy" \
   '^  derived +0 by the engine: L_d - L_d\^E = h\^1 \(1/2\*v1\^2\*x1\^2\)' \
   -- --composition ld --ld "$MID" --lagrangian 'v^2/2 - q^4/4' --q0 0.5 --p0 0.3 --steps 4096 \
   --coefficients 1/2,1/2

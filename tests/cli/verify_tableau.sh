@@ -25,8 +25,33 @@ case_ sv 0 "" 'order +(1\.9|2\.0)[0-9]* over .*: yes' -- --tableau "$T/stormer-v
 # measured symplecticity fails, and there is no discrete Lagrangian to measure
 case_ iiia-only 5 "symplectic" 'symplectic \(b = bhat .*: NO' \
   'variational order +not defined' -- --tableau "$T/wrong-lobatto3-iiia-only.json"
+# The frontier (the fourth probe): Lobatto IIIA with four stages is of order 6, symmetric and not
+# symplectic. Its defect at h = 0.05 lies below any tolerance double allows (6e-14), but it is
+# resolved at 8h and grows like h^7: the measured symplecticity fails as the exact conditions do
+# (it used to PASS against a fixed 1e-8).
+case_ lobatto4-iiia-only 5 "symplectic" 'symplectic \(b = bhat .*: NO' \
+  '^symplectic +defect .*: NO$' 'grows at least like h\^[4-9]\.[0-9]+' \
+  'order +(5\.[89]|6\.[01])[0-9]* over .*: yes' \
+  -- --tableau "$T/wrong-lobatto4-iiia-only.json" --problem pendulum --steps 4096
+# The edge: Gauss with 4, 5 and 6 stages (orders 8, 10, 12). In double the window [1e-12, 1e-6]
+# lies in their pre-asymptotic range (7.5 for order 8 on Kepler); from order 6 on the order
+# study runs in double-double with its window down to 1e-24, where the slopes have settled.
+case_ gauss4-kepler 0 "" 'order +(7\.[89]|8\.[01])[0-9]* over .*: yes' 'runs in double-double' \
+  '^symplectic +defect .*: yes$' -- --tableau "$T/gauss4.json" --problem kepler --steps 4096
+case_ gauss4-pendulum 0 "" 'order +(7\.[89]|8\.[01])[0-9]* over .*: yes' \
+  -- --tableau "$T/gauss4.json" --problem pendulum --steps 4096
+case_ gauss5-kepler 0 "" 'order +(9\.[89]|10\.[01])[0-9]* over .*: yes' \
+  -- --tableau "$T/gauss5.json" --problem kepler --steps 4096
+case_ gauss6-kepler 0 "" 'order +(11\.[89]|12\.[01])[0-9]* over .*: yes' \
+  -- --tableau "$T/gauss6.json" --problem kepler --steps 4096
+case_ gauss6-pendulum 0 "" 'order +(11\.[89]|12\.[01])[0-9]* over .*: yes' \
+  -- --tableau "$T/gauss6.json" --problem pendulum --steps 4096
+# The wrong input at that edge: a_34 off in its eleventh digit. In double the error term of
+# 1e-11 hides under the pre-asymptotic order-12 range; in double-double it shows as order 1.
+case_ gauss6-typo 5 "order,symplectic,energy" 'order +(0\.9|1\.0)[0-9]* over .*: NO' \
+  -- --tableau "$T/wrong-gauss6-typo.json" --problem pendulum --steps 4096
 # one entry mistyped: the order drops, the map is no longer symplectic nor reversible
-case_ typo 5 "order,symplectic,time-reversible,energy" 'symplectic \(b = bhat .*: NO' \
+case_ typo 5 "order,symplectic,symmetric,time-reversible,energy" 'symplectic \(b = bhat .*: NO' \
   -- --tableau "$T/wrong-lobatto3-typo.json"
 # the right tableau claimed as order 6 fails the order
 case_ lobatto3-as-6 5 "order,energy" 'expected 6 .*: NO' \
@@ -40,7 +65,7 @@ HH='x^2/2+y^2/2+x^2*y-y^3/3'
 case_ typed-lobatto3 0 "" 'order +(3\.9|4\.0)[0-9]* over .*: yes' 'V = x\^2/2.* \(--potential\)' \
   'symplectic \(b = bhat .*: yes' -- --tableau "$T/lobatto3-iiia-iiib.json" --potential "$HH" \
   --q0 0.1,0.2 --p0 0.3,0.1
-case_ typed-typo 5 "order,symplectic,time-reversible,energy" 'symplectic \(b = bhat .*: NO' \
+case_ typed-typo 5 "order,symplectic,symmetric,time-reversible,energy" 'symplectic \(b = bhat .*: NO' \
   -- --tableau "$T/wrong-lobatto3-typo.json" --potential='-cos(x)' --q0 1 --p0 0.5
 "$V" verify --tableau "$T/gauss2.json" --potential "$HH" --q0 0.1,0.2 --p0 0.3,0.1 --steps 4096 \
   --json-out "$tmp/typed.json" >/dev/null 2>&1
@@ -66,7 +91,7 @@ case_ ham-gauss2 0 "" 'order +(3\.9|4\.0)[0-9]* over .*: yes' '\(--hamiltonian\)
 case_ ham-lobatto3 0 "" 'order +(3\.9|4\.0)[0-9]* over .*: yes' \
   '^variational order +(3\.[89]|4\.[01])[0-9] \(measured.*agrees' \
   -- --tableau "$T/lobatto3-iiia-iiib.json" --hamiltonian "$MASS" --q0 0.5 --p0 0.3 --steps 4096
-case_ ham-typo 5 "order,symplectic,time-reversible,energy" 'symplectic \(b = bhat .*: NO' \
+case_ ham-typo 5 "order,symplectic,symmetric,time-reversible,energy" 'symplectic \(b = bhat .*: NO' \
   -- --tableau "$T/wrong-lobatto3-typo.json" --hamiltonian "$MASS" --q0 0.5 --p0 0.3 --steps 4096
 case_ ham-iiia 5 "symplectic" 'symplectic +defect .*: NO' \
   -- --tableau "$T/wrong-lobatto3-iiia-only.json" --hamiltonian "$MASS" --q0 0.5 --p0 0.3 \

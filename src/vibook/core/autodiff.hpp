@@ -41,11 +41,11 @@ using Dual = Eigen::AutoDiffScalar<Vec<T, N>>;
 template <int N, class T = double>
 using Dual2 = Eigen::AutoDiffScalar<Eigen::Matrix<Dual<N, T>, N, 1>>;
 
-/// Seed x as the N independent variables of a Dual<N> vector.
-template <int N>
-Vec<Dual<N>, N> variables(const Vec<double, N>& x) {
-  Vec<Dual<N>, N> v;
-  for (int i = 0; i < N; ++i) v(i) = Dual<N>(x(i), N, i);
+/// Seed x as the N independent variables of a Dual<N, T> vector.
+template <int N, class T = double>
+Vec<Dual<N, T>, N> variables(const Vec<T, N>& x) {
+  Vec<Dual<N, T>, N> v;
+  for (int i = 0; i < N; ++i) v(i) = Dual<N, T>(x(i), N, i);
   return v;
 }
 
@@ -67,11 +67,12 @@ Vec<double, N> gradient(F&& f, const Vec<double, N>& x) {
   return f(variables<N>(x)).derivatives();
 }
 
-/// Jacobian of a vector function f(Vec<S,N>) -> Vec<S,N> at x (row i = d f_i / d x).
-template <int N, class F>
-Mat<double, N> jacobian(F&& f, const Vec<double, N>& x) {
-  const Vec<Dual<N>, N> y = f(variables<N>(x));
-  Mat<double, N> J;
+/// Jacobian of a vector function f(Vec<S,N>) -> Vec<S,N> at x (row i = d f_i / d x), in the
+/// arithmetic T of x (double, or double-double for an order study in extended precision).
+template <int N, class F, class T = double>
+Mat<T, N> jacobian(F&& f, const Vec<T, N>& x) {
+  const Vec<Dual<N, T>, N> y = f(variables<N, T>(x));
+  Mat<T, N> J;
   for (int i = 0; i < N; ++i) J.row(i) = y(i).derivatives().transpose();
   return J;
 }

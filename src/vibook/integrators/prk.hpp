@@ -37,17 +37,21 @@
 #include "vibook/core/autodiff.hpp"
 #include "vibook/core/errors.hpp"
 #include "vibook/core/newton.hpp"
+#include "vibook/core/scalar.hpp"
 #include "vibook/core/types.hpp"
 
 namespace vibook {
 
-/// A partitioned Runge–Kutta tableau in double: the q-part (a, b) and the p-part (â, b̂), s
-/// stages each.
-struct PrkTableau {
-  std::vector<std::vector<double>> a, ahat;
-  std::vector<double> b, bhat;
+/// A partitioned Runge–Kutta tableau with entries in T: the q-part (a, b) and the p-part
+/// (â, b̂), s stages each. PrkTableau is the double one; a double-double one carries the
+/// entries to 32 digits for the order study in extended precision.
+template <class T>
+struct PrkTableauT {
+  std::vector<std::vector<T>> a, ahat;
+  std::vector<T> b, bhat;
   int stages() const { return static_cast<int>(b.size()); }
 };
+using PrkTableau = PrkTableauT<double>;
 
 /// The method of prk.hpp with S stages on a mechanical problem (`Problem::N`,
 /// `Problem::gradient`, a templated `Problem::potential`). `step` has the interface of the
@@ -55,7 +59,9 @@ struct PrkTableau {
 /// SolveError (leaving q and p as they were) when Newton does not converge or the result is
 /// not finite. S may be Eigen::Dynamic: the number of stages is then the tableau's, and the
 /// stage system is sized at run time (one instance serves every tableau).
-template <int S, class Problem>
+/// T is the arithmetic of the whole step (double, or double-double for the order study of
+/// high-order methods, whose asymptotic range lies below double's round-off).
+template <int S, class Problem, class T = double>
 class PartitionedRkMethod {
   static constexpr bool fixed = S != Eigen::Dynamic;
   // per-stage vectors: on the stack when S is fixed
@@ -66,21 +72,21 @@ class PartitionedRkMethod {
   static constexpr int N = Problem::N;
   static constexpr int U = fixed ? S * N : Eigen::Dynamic;
 
-  PartitionedRkMethod(Problem P, const PrkTableau& t, NewtonOptions options = {})
+  PartitionedRkMethod(Problem P, const PrkTableauT<T>& t, NewtonOptions options = {})
       : P_(std::move(P)), t_(t), options_(options), s_(t_.stages()) {
     const auto n = static_cast<std::size_t>(s_);
     if ((fixed && s_ != S) || s_ < 1 || t_.bhat.size() != n || t_.a.size() != n ||
         t_.ahat.size() != n)
       throw std::invalid_argument("PartitionedRkMethod: the tableau must have S stages");
-    M_.assign(n, std::vector<double>(n));
-    c_.assign(n, 0.0);
+    M_.assign(n, std::vector<T>(n));
+    c_.assign(n, T(0));
     for (std::size_t i = 0; i < n; ++i) {
       if (t_.a[i].size() != n || t_.ahat[i].size() != n)
         throw std::invalid_argument("PartitionedRkMethod: a and ahat must be S x S");
-      double ci = 0;
+      T ci(0);
       for (std::size_t j = 0; j < n; ++j) {
         ci += t_.a[i][j];
-        double m = 0;
+        T m(0);
         for (std::size_t k = 0; k < n; ++k) m += t_.a[i][k] * t_.ahat[k][j];
         M_[i][j] = m;
       }
@@ -88,54 +94,57 @@ class PartitionedRkMethod {
     }
   }
 
-  SolveReport step(Vec<double, N>& q, Vec<double, N>& p, double h) {
+  SolveReport step(Vec<T, N>& q, Vec<T, N>& p, const T& h) {
     const int ns = s_;
-    const Vec<double, N> q0 = q, p0 = p;
+    const Vec<T, N> q0 = q, p0 = p;
     // W_i = (Q_i − q0)/h, started from the straight line W_i = c̃_i p0
-    Vec<double, U> w = Vec<double, U>::Zero(ns * N);
+    Vec<T, U> w = Vec<T, U>::Zero(ns * N);
     for (int i = 0; i < ns; ++i) w.template segment<N>(i * N) = c_[i] * p0;
-    auto fj = [&](const Vec<double, U>& x, Vec<double, U>& F, Mat<double, U>& J,
-                  bool with_jacobian) {
-      PerStage<Vec<double, N>> g = per_stage<Vec<double, N>>();
-      PerStage<Mat<double, N>> Hs = per_stage<Mat<double, N>>();
+    auto fj = [&](const Vec<T, U>& x, Vec<T, U>& F, Mat<T, U>& J, bool with_jacobian) {
+      PerStage<Vec<T, N>> g = per_stage<Vec<T, N>>();
+      PerStage<Mat<T, N>> Hs = per_stage<Mat<T, N>>();
       for (int k = 0; k < ns; ++k) {
-        const Vec<double, N> Qk = q0 + h * x.template segment<N>(k * N);
+        const Vec<T, N> Qk = q0 + h * x.template segment<N>(k * N);
         g[k] = P_.gradient(Qk);
         if (with_jacobian)
           Hs[k] = ad::jacobian<N>([&](const auto& y) { return P_.gradient(y); }, Qk);
       }
       for (int i = 0; i < ns; ++i) {
-        Vec<double, N> Fi = x.template segment<N>(i * N) - c_[i] * p0;
+        Vec<T, N> Fi = x.template segment<N>(i * N) - c_[i] * p0;
         for (int k = 0; k < ns; ++k) Fi += h * M_[i][k] * g[k];
         F.template segment<N>(i * N) = Fi;
         if (with_jacobian)
           for (int k = 0; k < ns; ++k) {
-            Mat<double, N> block = (h * h * M_[i][k]) * Hs[k];
-            if (i == k) block += Mat<double, N>::Identity();
+            Mat<T, N> block = (h * h * M_[i][k]) * Hs[k];
+            if (i == k) block += Mat<T, N>::Identity();
             J.template block<N, N>(i * N, k * N) = block;
           }
       }
     };
     NewtonOptions opt = options_;
-    opt.step_abs = std::max(opt.step_abs, 4 * std::numeric_limits<double>::epsilon() *
-                                              std::max(1.0, p0.template lpNorm<Eigen::Infinity>()));
-    const SolveReport rep = newton_solve<U, decltype(fj)&, double, SmallSystemSolve>(
+    if constexpr (!std::is_same_v<T, double>)  // the stopping rule at T's round-off
+      opt.step_rel = std::min(opt.step_rel, 4 * to_double(unit_roundoff<T>()));
+    opt.step_abs = std::max(opt.step_abs,
+                            4 * to_double(unit_roundoff<T>()) *
+                                std::max(1.0, to_double(T(p0.template lpNorm<Eigen::Infinity>()))));
+    const SolveReport rep = newton_solve<U, decltype(fj)&, T, SmallSystemSolve>(
         w, fj, opt, "partitioned Runge-Kutta stages");
-    PerStage<Vec<double, N>> g = per_stage<Vec<double, N>>(), Pst = per_stage<Vec<double, N>>();
-    double action = 0;
+    PerStage<Vec<T, N>> g = per_stage<Vec<T, N>>(), Pst = per_stage<Vec<T, N>>();
+    T action(0);
     for (int k = 0; k < ns; ++k)
-      g[k] = P_.gradient(Vec<double, N>(q0 + h * w.template segment<N>(k * N)));
-    Vec<double, N> dq = Vec<double, N>::Zero(), dp = Vec<double, N>::Zero();
+      g[k] = P_.gradient(Vec<T, N>(q0 + h * w.template segment<N>(k * N)));
+    Vec<T, N> dq = Vec<T, N>::Zero(), dp = Vec<T, N>::Zero();
     for (int i = 0; i < ns; ++i) {
       Pst[i] = p0;
       for (int j = 0; j < ns; ++j) Pst[i] -= h * t_.ahat[i][j] * g[j];
       dq += t_.b[i] * Pst[i];
       dp -= t_.bhat[i] * g[i];
-      const Vec<double, N> Qi = q0 + h * w.template segment<N>(i * N);
-      action += t_.b[i] * (0.5 * Pst[i].squaredNorm() - P_.potential(Qi));
+      const Vec<T, N> Qi = q0 + h * w.template segment<N>(i * N);
+      action += t_.b[i] * (T(0.5) * Pst[i].squaredNorm() - P_.template potential<T>(Qi));
     }
-    const Vec<double, N> q1 = q0 + h * dq, p1 = p0 + h * dp;
-    if (!q1.allFinite() || !p1.allFinite())
+    const Vec<T, N> q1 = q0 + h * dq, p1 = p0 + h * dp;
+    if (!std::isfinite(to_double(T(q1.template lpNorm<Eigen::Infinity>()))) ||
+        !std::isfinite(to_double(T(p1.template lpNorm<Eigen::Infinity>()))))
       throw SolveError("partitioned Runge-Kutta step: non-finite state", rep);
     q = q1;
     p = p1;
@@ -145,7 +154,7 @@ class PartitionedRkMethod {
 
   /// h Σ b_i (½|P_i|² − U(Q_i)) of the last step: its discrete Lagrangian L_d(q0, q1, h) when
   /// the tableau satisfies the symplecticity conditions (file comment).
-  double action() const { return action_; }
+  T action() const { return action_; }
 
  private:
   template <class X>
@@ -157,12 +166,12 @@ class PartitionedRkMethod {
   }
 
   Problem P_;
-  PrkTableau t_;
+  PrkTableauT<T> t_;
   NewtonOptions options_;
-  int s_;                               ///< the number of stages (S when S is fixed)
-  std::vector<std::vector<double>> M_;  ///< M_ij = Σ_k a_ik â_kj
-  std::vector<double> c_;               ///< c̃_i = Σ_j a_ij
-  double action_ = 0;
+  int s_;                          ///< the number of stages (S when S is fixed)
+  std::vector<std::vector<T>> M_;  ///< M_ij = Σ_k a_ik â_kj
+  std::vector<T> c_;               ///< c̃_i = Σ_j a_ij
+  T action_ = T(0);
 };
 
 /// The method of the same tableau on any Hamiltonian H(q, p) (Hairer, Lubich and Wanner, §II.2.2,

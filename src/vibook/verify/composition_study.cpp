@@ -135,6 +135,7 @@ struct Composed {
   std::vector<bool> adj;
   bool symmetric = false;
   double expected = 0;
+  double conditions_order = 0;  ///< the order the conditions give (below 1: not consistent)
 };
 
 // The stages and their order conditions at 120 digits, printed and written to rep; the same
@@ -255,7 +256,7 @@ Composed conditions(const CompositionSpec& p, MapMeasurement& rep) {
                             {"expected", expected},
                             {"expected_from", expected_from},
                             {"passed", conditions_ok}};
-  return {c, adj, symmetric, expected};
+  return {c, adj, symmetric, expected, double(oc.order)};
 }
 
 template <class P>
@@ -309,8 +310,9 @@ void measure(const CompositionSpec& p, const std::vector<double>& q0, const std:
   set_problem(study, problem, q0, p0);
   study.expected = k.expected;
   study.substeps = double(c.size());
-  study.require_reversible = symmetric;
-  study.reversible_note = " (reported only: the composition is not symmetric)";
+  study.symmetric_claimed = study.symmetric_claimed || symmetric;
+  study.conditions_order = k.conditions_order;
+  study.symmetric_note = " (reported only: the composition is not symmetric)";
   study.generating = generating_composition(p.base->name, prob, c, adj);
   study.generating_from = fmt::format(
       "the sum of the {} stages' discrete Lagrangians ({}) at the positions the stages pass "
@@ -337,8 +339,9 @@ void measure_composition(const CompositionSpec& spec, const CompositionStage& ba
                                int(study.z0.size() / 2));
   study.expected = k.expected;
   study.substeps = double(k.c.size());
-  study.require_reversible = k.symmetric;
-  study.reversible_note = " (reported only: the composition is not symmetric)";
+  study.symmetric_claimed = study.symmetric_claimed || k.symmetric;
+  study.conditions_order = k.conditions_order;
+  study.symmetric_note = " (reported only: the composition is not symmetric)";
   study.generating = composed;
   study.generating_from = fmt::format(
       "the sum of the {} stages' discrete Lagrangians ({}) at the positions the stages pass "

@@ -142,7 +142,24 @@ class TypedDiscreteLagrangian::Parser {
     return o_.add_node(n);
   }
 
+  // Nesting is bounded: a text of 4096 characters can nest about 800 calls (sin(sin(…))),
+  // whose nested derivatives then take minutes to form. Each parenthesis, function argument,
+  // bracket and leading sign is a level; 64 is far beyond what a Lagrangian needs.
+  static constexpr int kMaxDepth = 64;
+  struct Deeper {
+    Parser& p;
+    explicit Deeper(Parser& parser) : p(parser) {
+      if (++p.depth_ > kMaxDepth)
+        p.fail("nests deeper than " + std::to_string(kMaxDepth) +
+               " levels of parentheses, functions or signs");
+    }
+    ~Deeper() { --p.depth_; }
+    Deeper(const Deeper&) = delete;
+    Deeper& operator=(const Deeper&) = delete;
+  };
+
   int expr() {
+    const Deeper deeper(*this);
     int left = term();
     for (;;) {
       const std::size_t at = pos_;
@@ -188,10 +205,14 @@ class TypedDiscreteLagrangian::Parser {
 
   int unary() {
     if (eat('-')) {
+      const Deeper deeper(*this);
       const int a = unary();
       return make(Op::neg, a, -1, node(a).vector);
     }
-    if (eat('+')) return unary();
+    if (eat('+')) {
+      const Deeper deeper(*this);
+      return unary();
+    }
     return power();
   }
 
@@ -491,6 +512,7 @@ class TypedDiscreteLagrangian::Parser {
   Kind kind_;
   bool have_potential_;
   std::size_t pos_ = 0;
+  int depth_ = 0;  ///< the levels of nesting open (Deeper)
   int needs_ = 0;
   std::vector<int> literals_;
   std::array<bool, kVars> slots_used_{};

@@ -131,7 +131,7 @@ AuditEntry odeint_row(const std::string& id, const std::string& stepper, const s
   AuditEntry a;
   a.stepper = stepper;
   a.expected = order;
-  a.require_reversible = symmetric;
+  a.symmetric_claimed = symmetric;
   a.info = {
       id, "A",
       "Boost.Odeint " + std::to_string(BOOST_VERSION / 100000) + "." +
@@ -237,8 +237,8 @@ Measured measure_row(const AuditEntry& a, const std::string& problem_name) {
     };
     set_problem(study, *problem, problem->q0, problem->p0);
     study.expected = expected;
-    study.require_reversible = a.require_reversible;
-    study.reversible_note = " (reported only: not documented as symmetric)";
+    study.symmetric_claimed = a.symmetric_claimed;
+    study.symmetric_note = " (reported only: not documented as symmetric)";
     measure_map(study, rep);  // a failed step is a NumericalError, reported as a part
     return read(m, rep);
   }
@@ -453,7 +453,7 @@ claims::ClaimResult judge_audit_entry(const AuditEntry& a) {
             ? fmt::format(
                   "--stepper-lib vibook_odeint_steppers.so --stepper-arg {}/PROBLEM "
                   "--expected-order {:g}{}",
-                  a.stepper, ms[0].expected, a.require_reversible ? " --symmetric" : "")
+                  a.stepper, ms[0].expected, a.symmetric_claimed ? " --symmetric" : "")
         : a.method.empty()
             ? fmt::format("--composition {} --coefficients {}", a.base, a.coefficients)
             : "--method " + a.method;
@@ -582,7 +582,7 @@ const std::vector<AuditEntry>& audit_entries() {
           std::tuple{"A-ODEINT-M4-BRIEF", "mclachlan4_m4", "symplectic_rkn_sb3a_m4_mclachlan"}}) {
       AuditEntry a;
       a.stepper = stepper;
-      a.require_reversible = true;
+      a.symmetric_claimed = true;
       a.brief_header = std::string("boost/numeric/odeint/stepper/") + cls + ".hpp";
       a.brief_class = cls;
       a.info = {id, "A",

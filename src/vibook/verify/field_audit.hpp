@@ -27,7 +27,7 @@ struct AuditEntry {
   /// A Boost.Odeint stepper of examples/black_box/odeint_steppers.cpp, reached through the C
   /// ABI (its METHOD; the module gets METHOD/PROBLEM), or empty.
   std::string stepper;
-  bool require_reversible = false;  ///< for a stepper: its documentation says symmetric
+  bool symmetric_claimed = false;  ///< for a stepper: its documentation says symmetric
   /// For a stepper row whose claimed order is what a header's Doxygen brief says: the header
   /// (under the Boost include directory) and the class; the order is read from the brief's
   /// ordinal ("of sixth order") when the check runs.

@@ -14,6 +14,7 @@
 #include "vibook/integrators/kernels.hpp"
 #include "vibook/kepler/kepler.hpp"
 #include "vibook/problems/problems.hpp"
+#include "vibook/verify/phases.hpp"
 
 namespace vibook::verify {
 
@@ -145,6 +146,11 @@ namespace {
 // round-off plateau applies in both cases.
 constexpr double kWindowLow = 1e-12;
 constexpr double kWindow = 1e-6;
+// In double-double (MapStudy::step_dd, for expected orders of at least kExtendedOrder) the
+// window reaches down to 1e-25·scale, above the reference's own error (two GBS results that
+// agree to 1e-26) and far above the runs' round-off (about 1e-30), so that a method of order 8
+// to 12 is fitted where its local slopes have settled.
+constexpr double kWindowLowExtended = 1e-25;
 
 }  // namespace
 
@@ -182,12 +188,14 @@ void measure_map(const MapStudy& s, MapMeasurement& rep) {
   const Eigen::VectorXd& z0 = s.z0;
   // --- the reference: Hamilton's equations in double-double by GBS extrapolation -----------
   Eigen::VectorXd zref;
+  std::vector<dd_real> zref_dd;
   double ref_error = NAN;
   try {
     using T = dd_real;
     std::vector<T> y0(static_cast<std::size_t>(z0.size()));
     for (Eigen::Index i = 0; i < z0.size(); ++i) y0[static_cast<std::size_t>(i)] = T(z0(i));
     const auto r = exact_solution(s, y0, s.t_end, false);
+    zref_dd.assign(r.y.begin(), r.y.begin() + z0.size());
     zref.resize(z0.size());
     for (Eigen::Index i = 0; i < z0.size(); ++i)
       zref(i) = to_double(r.y[static_cast<std::size_t>(i)]);
@@ -208,9 +216,26 @@ void measure_map(const MapStudy& s, MapMeasurement& rep) {
   if (zref.size() == z0.size()) {
     try {
       const double scale = std::max(1.0, zref.lpNorm<Eigen::Infinity>());
-      const double floor =
-          s.floor ? *s.floor
-                  : std::max(10 * ref_error, 16 * std::numeric_limits<double>::epsilon() * scale);
+      // Extended precision where double would hide the asymptotic range (kExtendedOrder).
+      const bool extended = s.step_dd && s.expected >= kExtendedOrder && s.hs.empty();
+      const double window_low = extended ? kWindowLowExtended : kWindowLow;
+      const double unit =
+          extended ? to_double(unit_roundoff<dd_real>()) : std::numeric_limits<double>::epsilon();
+      const double floor = s.floor ? *s.floor : std::max(10 * ref_error, 16 * unit * scale);
+      // The error at T of a run with steps of h (the last shortened to end at T).
+      auto error_at = [&](double h) {
+        if (!extended) return (run_map(s, z0, h, s.t_end) - zref).lpNorm<Eigen::Infinity>();
+        const long long n = static_cast<long long>(std::ceil(s.t_end / h - 1e-9));
+        VecXdd z(z0.size());
+        for (Eigen::Index i = 0; i < z0.size(); ++i) z(i) = dd_real(z0(i));
+        const dd_real hh(h), last = dd_real(s.t_end) - hh * dd_real(double(n - 1));
+        for (long long k = 0; k + 1 < n; ++k) s.step_dd(z, hh);
+        if (n >= 1) s.step_dd(z, last);
+        double e = 0;
+        for (Eigen::Index i = 0; i < z0.size(); ++i)
+          e = std::max(e, std::abs(to_double(z(i) - zref_dd[static_cast<std::size_t>(i)])));
+        return e;
+      };
       std::vector<double> hs, err, windowed;
       bool fallback = false;
       // The walk stops at round-off: inside the window, an octave of h (4 step sizes) without
@@ -220,8 +245,7 @@ void measure_map(const MapStudy& s, MapMeasurement& rep) {
       double roundoff_h = 0;
       if (!s.hs.empty()) {
         hs = s.hs;
-        for (double h : hs)
-          err.push_back((run_map(s, z0, h, s.t_end) - zref).lpNorm<Eigen::Infinity>());
+        for (double h : hs) err.push_back(error_at(h));
         windowed = err;
       } else {
         double best = std::numeric_limits<double>::infinity();
@@ -231,18 +255,21 @@ void measure_map(const MapStudy& s, MapMeasurement& rep) {
           const double n = std::ceil(s.t_end * std::exp2(0.25 * k));
           if (!hs.empty() && std::abs(s.t_end / n - hs.back()) == 0) continue;
           const double h = s.t_end / n;
-          if (s.substeps * n > s.max_substeps) break;
+          // In double-double a step costs about twenty of double's: a tenth of the budget (a
+          // method of order 6 or more reaches 1e-25 within a few thousand steps; one that does
+          // not is already far from its claimed order).
+          if (s.substeps * n > (extended ? s.max_substeps / 10 : s.max_substeps)) break;
           double e = std::numeric_limits<double>::quiet_NaN();
           try {
-            e = (run_map(s, z0, h, s.t_end) - zref).lpNorm<Eigen::Infinity>();
+            e = error_at(h);
           } catch (const NumericalError&) {
             // a step too large for the base method's solve: no point here
           }
           hs.push_back(h);
           err.push_back(e);
-          const bool in = e <= kWindow * scale && e >= kWindowLow * scale;
+          const bool in = e <= kWindow * scale && e >= window_low * scale;
           windowed.push_back(in ? e : std::numeric_limits<double>::quiet_NaN());
-          if (e < kWindowLow * scale) break;
+          if (e < window_low * scale) break;
           if (e < best) {
             best = e;
             best_at = hs.size() - 1;
@@ -260,6 +287,31 @@ void measure_map(const MapStudy& s, MapMeasurement& rep) {
           windowed = err;
           for (std::size_t i = 0; i + 6 < windowed.size(); ++i)
             windowed[i] = std::numeric_limits<double>::quiet_NaN();
+        }
+      }
+      // In double-double the window holds enough points to fit only where the local slopes
+      // have settled: from the smallest step, the run of points whose local slope over an
+      // octave of h stays within order_tol/2 of the slope at the smallest step (at least two
+      // octaves of it; otherwise the whole window, and the report says so).
+      double settled_from = 0;
+      if (extended && !fallback) {
+        std::vector<std::size_t> pts;
+        for (std::size_t i = 0; i < windowed.size(); ++i)
+          if (std::isfinite(windowed[i]) && windowed[i] > floor) pts.push_back(i);
+        auto local = [&](std::size_t k) {  // over the octave ending at pts[k]
+          const std::size_t a = pts[k - 4], b = pts[k];
+          return std::log(err[a] / err[b]) / std::log(hs[a] / hs[b]);
+        };
+        if (pts.size() >= 9) {
+          const double at_small = local(pts.size() - 1);
+          std::size_t first = pts.size() - 1;
+          while (first >= 5 && std::abs(local(first - 1) - at_small) <= s.order_tol / 2) --first;
+          const std::size_t start = first - 4;  // the octave behind the first settled slope
+          if (pts.size() - start >= 9) {
+            for (std::size_t k = 0; k < start; ++k)
+              windowed[pts[k]] = std::numeric_limits<double>::quiet_NaN();
+            settled_from = hs[pts[start]];
+          }
         }
       }
       const PlateauFit fit = fit_order_plateau(hs, windowed, floor);
@@ -282,9 +334,17 @@ void measure_map(const MapStudy& s, MapMeasurement& rep) {
                     hmax, hmin, emax, emin, fit.points, hs.size(),
                     !s.hs.empty() ? std::string("--h-list, above the floor and the plateau")
                     : fallback
-                        ? std::string("the window [1e-12, 1e-6]·scale was not reached: the 6 "
-                                      "smallest step sizes")
-                        : std::string("errors in the window [1e-12, 1e-6]·scale") +
+                        ? fmt::format("the window [{:g}, 1e-6]·scale was not reached: the 6 "
+                                      "smallest step sizes",
+                                      window_low)
+                        : fmt::format("errors in the window [{:g}, 1e-6]·scale", window_low) +
+                              (extended ? std::string(", runs in double-double") : std::string()) +
+                              (settled_from > 0
+                                   ? fmt::format(", local slopes settled below h = {:.3g}",
+                                                 settled_from)
+                                   : std::string(extended ? ", local slopes not settled over two "
+                                                            "octaves: the whole window"
+                                                          : "")) +
                               (roundoff_h > 0
                                    ? fmt::format("; round-off below h = {:.3g}: no smaller "
                                                  "error over the next octave of h",
@@ -310,13 +370,17 @@ void measure_map(const MapStudy& s, MapMeasurement& rep) {
           {"fitted", std::isfinite(fit.slope) ? json(fit.slope) : json(nullptr)},
           {"floor", fit.floor},
           {"window",
-           s.hs.empty() && !fallback ? json({kWindowLow * scale, kWindow * scale}) : json(nullptr)},
+           s.hs.empty() && !fallback ? json({window_low * scale, kWindow * scale}) : json(nullptr)},
           {"fitted_on", !s.hs.empty() ? "--h-list"
                         : fallback    ? "the 6 smallest step sizes"
                                       : "the window"},
           {"expected", s.expected},
           {"tolerance", s.order_tol},
           {"passed", ok}};
+      if (extended) {
+        rep.js["order"]["precision"] = "double-double";
+        rep.js["order"]["settled_below_h"] = settled_from > 0 ? json(settled_from) : json(nullptr);
+      }
       if (roundoff_h > 0) rep.js["order"]["roundoff_below_h"] = roundoff_h;
     } catch (const NumericalError& e) {
       rep.numerical("order", e);
@@ -329,76 +393,102 @@ void measure_map(const MapStudy& s, MapMeasurement& rep) {
   if (s.generating) measure_variational_order(s, rep);
   if (s.derive_variational_order) s.derive_variational_order(s, rep);
 
-  // --- symplecticity and reversibility -------------------------------------------------------
+  // --- consistency: order below 1 by the conditions, or measured below 1/2, never passes ------
+  {
+    const double measured = rep.js.contains("order") && rep.js["order"]["fitted"].is_number()
+                                ? rep.js["order"]["fitted"].get<double>()
+                                : std::numeric_limits<double>::quiet_NaN();
+    const ConsistencyJudgement c = judge_consistency(s.conditions_order, measured);
+    rep.required.push_back("consistency");
+    if (!c.passed) {
+      rep.line("consistency", c.why + ": NO");
+      rep.failed.push_back("consistency");
+    }
+    rep.js["consistency"] = {{"passed", c.passed}, {"why", c.why}};
+  }
+
+  // --- symplecticity, symmetry and reversibility, judged by scaling (phases.hpp) -------------
   std::vector<Eigen::VectorXd> states{z0};
   if (zref.size() == z0.size()) states.push_back(zref);
-  // Symplecticity at the step sizes h, 2h and 4h. A symplectic map leaves only the difference
-  // quotient's error at every size; a non-symplectic method of order p leaves O(h^(p+1)), which
-  // at one small step can hide below any tolerance that round-off allows (an eighth-order
-  // Runge-Kutta method: 4e-11 at h = 0.05 on Kepler), but grows by 2^(p+1) with each doubling.
-  // The defect is relative to max(1, |J|^2), the size of J^T W J's entries, so that a map with
-  // a large Jacobian is not failed for its difference quotients' round-off.
+  // At h, 2h, 4h and 8h, at the initial state and the reference's final state: a defect fails
+  // when it is resolved and grows with h at least like h^(1/2) (every consistent method that is
+  // not symplectic or symmetric leaves C h^(p+1); a system without the reversing symmetry
+  // leaves C h in the reversibility test). An exact NO of the method's own
+  // conditions fails symplecticity whatever the measurement says.
   rep.required.push_back("symplectic");
   try {
-    constexpr double kSymplecticTol = 1e-8;
-    double worst = 0, worst_h = s.h;
-    std::vector<std::string> shown;
-    json per = json::array();
-    for (int k = 0; k < 3; ++k) {
-      const double hk = s.h * std::exp2(k);
-      double dk = 0;
-      try {
-        for (const auto& z : states) {
-          const Eigen::Index n = z.size() / 2;
-          Eigen::MatrixXd W = Eigen::MatrixXd::Zero(2 * n, 2 * n);
-          W.topRightCorner(n, n) = Eigen::MatrixXd::Identity(n, n);
-          W.bottomLeftCorner(n, n) = -Eigen::MatrixXd::Identity(n, n);
-          const Eigen::MatrixXd J = step_jacobian(step, z, hk);
-          if (!J.allFinite()) throw NumericalError("the Jacobian of the map is not finite");
-          const double size = std::max(1.0, J.lpNorm<Eigen::Infinity>());
-          dk = std::max(dk, (J.transpose() * W * J - W).lpNorm<Eigen::Infinity>() / (size * size));
-        }
-      } catch (const NumericalError& e) {
-        if (k == 0) throw;
-        // a step too large for the method: the sizes below it decide
-        shown.push_back(fmt::format("h = {:g}: no step", hk));
-        per.push_back({{"h", hk}, {"defect", nullptr}, {"error", e.what()}});
-        continue;
-      }
-      shown.push_back(fmt::format("h = {:g}: {:.1e}", hk, dk));
-      per.push_back({{"h", hk}, {"defect", dk}});
-      if (dk >= worst) {
-        worst = dk;
-        worst_h = hk;
-      }
-    }
-    const bool ok = worst <= kSymplecticTol;
-    rep.line("symplectic",
-             fmt::format("defect |J^T W J - W| / max(1, |J|^2): {} (each <= {:.0e}): {}",
-                         fmt::join(shown, ", "), kSymplecticTol, ok ? "yes" : "NO"));
+    const ScalingJudgement sym = symplecticity_by_scaling(step, states, s.h);
+    const bool exact_no = s.exact_symplectic && !*s.exact_symplectic;
+    const bool ok = sym.passed && !exact_no;
+    rep.line("symplectic", fmt::format("defect |J^T W J - W| / max(1, |J|^2): {}: {}", sym.shown(),
+                                       ok ? "yes" : "NO"));
+    rep.line("", sym.why + (s.exact_symplectic ? fmt::format("; exactly: {} ({})",
+                                                             *s.exact_symplectic ? "yes" : "NO",
+                                                             s.exact_symplectic_from)
+                                               : std::string()));
     if (!ok) rep.failed.push_back("symplectic");
-    rep.js["symplecticity"] = {{"defect", worst},
-                               {"at_h", worst_h},
-                               {"by_step_size", per},
-                               {"relative_to", "max(1, |J|_max^2)"},
-                               {"tolerance", kSymplecticTol},
-                               {"passed", ok}};
+    json js = sym.to_json();
+    js["relative_to"] = "max(1, |J|_max^2)";
+    js["measured_passed"] = sym.passed;
+    if (s.exact_symplectic) {
+      js["exact"] = *s.exact_symplectic;
+      js["exact_from"] = s.exact_symplectic_from;
+    }
+    js["passed"] = ok;
+    rep.js["symplecticity"] = js;
   } catch (const NumericalError& e) {
     rep.numerical("symplectic", e);
   }
-  if (s.require_reversible) rep.required.push_back("time-reversible");
+  // Symmetry, a property of the method alone: required when the method is said to be
+  // symmetric. A step refused at -h (a black box) leaves it unmeasured, and reversibility
+  // decides in its place where the system allows it.
+  bool symmetry_measured = false;
+  if (s.symmetric_claimed) rep.required.push_back("symmetric");
   try {
-    const auto rev = reversibility_defect(step, states, s.h, 1e-12);
+    const ScalingJudgement sy = symmetry_by_scaling(step, states, s.h);
+    symmetry_measured = true;
+    rep.line("symmetric",
+             fmt::format("defect |Phi_-h(Phi_h(z)) - z| / max(1, |z|): {}: {}{}", sy.shown(),
+                         sy.passed ? "yes" : "NO", s.symmetric_claimed ? "" : s.symmetric_note));
+    rep.line("", sy.why);
+    if (s.symmetric_claimed && !sy.passed) rep.failed.push_back("symmetric");
+    json js = sy.to_json();
+    js["required"] = s.symmetric_claimed;
+    rep.js["symmetry"] = js;
+  } catch (const NumericalError& e) {
+    rep.line("symmetric", std::string("not measured: a step of -h failed (") + e.what() + ")" +
+                              (s.symmetric_claimed ? "; reversibility decides in its place" : ""));
+    rep.js["symmetry"] = {{"measured", false}, {"error", e.what()}};
+    if (s.symmetric_claimed)
+      rep.required.erase(std::find(rep.required.begin(), rep.required.end(), "symmetric"));
+  }
+  const ReversingSymmetry rho = momentum_reversal(s.H, states);
+  const bool reversibility_required = s.symmetric_claimed && rho.holds;
+  if (reversibility_required) rep.required.push_back("time-reversible");
+  try {
+    const ScalingJudgement rev = reversibility_by_scaling(step, states, s.h);
+    const std::string note =
+        !rho.holds ? " (not judged: the intended system is not reversible under (q, p) -> (q, "
+                     "-p): " +
+                         rho.why + ")"
+        : reversibility_required ? std::string()
+                                 : s.symmetric_note;
     rep.line("time-reversible",
-             fmt::format("defect = {:.2e} (<= {:.0e}): {}{}", rev.defect, rev.tolerance,
-                         rev.passed ? "yes" : "NO", s.require_reversible ? "" : s.reversible_note));
-    if (s.require_reversible && !rev.passed) rep.failed.push_back("time-reversible");
-    rep.js["reversibility"] = {{"defect", rev.defect},
-                               {"tolerance", rev.tolerance},
-                               {"required", s.require_reversible},
-                               {"passed", rev.passed}};
+             fmt::format("defect |rho Phi_h rho Phi_h(z) - z| / max(1, |z|): {}: {}{}", rev.shown(),
+                         rev.passed ? "yes" : "NO", note));
+    rep.line("", rev.why);
+    if (reversibility_required && !rev.passed) rep.failed.push_back("time-reversible");
+    json js = rev.to_json();
+    js["required"] = reversibility_required;
+    js["system_reversible"] = rho.holds;
+    js["system"] = rho.why;
+    rep.js["reversibility"] = js;
   } catch (const NumericalError& e) {
     rep.numerical("time-reversible", e);
+  }
+  if (!symmetry_measured && s.symmetric_claimed && !rho.holds) {
+    rep.line("", "symmetry was said but can be measured neither at -h nor by reversibility: NO");
+    rep.failed.push_back("symmetric");
   }
 
   // --- energy -------------------------------------------------------------------------------

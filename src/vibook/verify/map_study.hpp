@@ -14,6 +14,7 @@
 
 #include <cmath>
 #include <functional>
+#include <limits>
 #include <optional>
 #include <sstream>
 #include <string>
@@ -27,6 +28,11 @@
 #include "vibook/verify/verify.hpp"
 
 namespace vibook::verify {
+
+/// The largest order a route accepts (--expected-order, a tableau file's 'order'). No cap below
+/// what the measurement can use: the order study fits slopes, not a table of orders, and
+/// Gauss's method with six stages is of order 12.
+constexpr double kMaxOrder = 20;
 
 /// The nonlinear test problems of the composition, Galerkin and black-box routes: the name,
 /// the Hamiltonian as printed, and the initial state (the Kepler orbit has eccentricity 0.5).
@@ -70,9 +76,22 @@ struct MapMeasurement {
 /// composed L_d); for a Galerkin method the quadrature action at the solved polynomial.
 using GeneratingStep = std::function<double(Eigen::VectorXd& z, double h)>;
 
+/// A state in double-double, and one step of a map in that arithmetic.
+using VecXdd = Eigen::Matrix<dd_real, Eigen::Dynamic, 1>;
+using StepDD = std::function<void(VecXdd& z, const dd_real& h)>;
+
+/// The expected order from which the order study runs in double-double when the method has a
+/// step in it (MapStudy::step_dd): from order 6 on, double's window [1e-12, 1e-6] lies in the
+/// pre-asymptotic range of the test problems (Gauss's method with 4 stages measures 7.5 there).
+constexpr double kExtendedOrder = 6;
+
 /// What is measured, and how.
 struct MapStudy {
   verify::Step step;  ///< one step of the map under test
+  /// Optional: the same map in double-double. With it, and an expected order of at least
+  /// kExtendedOrder, the order study runs in double-double with its window down to 1e-25 (and a
+  /// tenth of the walk's budget of substeps).
+  StepDD step_dd;
   /// Optional: n steps of size h at once (a line-protocol stepper answers one request for a
   /// whole run); by default `step` n times.
   std::function<void(Eigen::VectorXd& z, double h, long long n)> propagate;
@@ -93,8 +112,18 @@ struct MapStudy {
   std::optional<double> floor;
   double substeps = 1;  ///< evaluations of the base method in one step (the walk's cost)
   double max_substeps = 1e6;
-  bool require_reversible = false;
-  std::string reversible_note;  ///< appended to the line when reversibility is not required
+  /// The method is said to be symmetric (--symmetric, its source, or its structure): symmetry
+  /// joins the verdict, and reversibility too where the intended system has the reversing
+  /// symmetry ρ(q, p) = (q, −p) (phases.hpp).
+  bool symmetric_claimed = false;
+  std::string symmetric_note;  ///< appended to the line when symmetry is not required
+  /// The method's exact answer on symplecticity, where its conditions settle it (a tableau's at
+  /// 120 digits): an exact NO fails the verdict whatever the measurement says; both are shown.
+  std::optional<bool> exact_symplectic;
+  std::string exact_symplectic_from;
+  /// The order the method's exact conditions give (a composition's), NaN where it has none:
+  /// below 1 the method is not consistent and never passes (judge_consistency).
+  double conditions_order = std::numeric_limits<double>::quiet_NaN();
   /// Optional: the method's step with its discrete Lagrangian. When given, the variational
   /// order is measured and reported beside the order (measure_variational_order).
   GeneratingStep generating;

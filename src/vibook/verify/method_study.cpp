@@ -39,7 +39,7 @@ void measure(const MethodSpec& p, int N, const StudySystem& system, MapStudy s, 
   // counts stops at 2e5 stage evaluations a run (compositions: 1e6).
   s.substeps = S;
   s.max_substeps = 2e5;
-  s.require_reversible = true;  // Gauss and Lobatto IIIA-IIIB are symmetric
+  s.symmetric_claimed = true;  // Gauss and Lobatto IIIA-IIIB are symmetric
 
   const bool gauss = p.rule.name == "gauss";
   auto list = [](const std::vector<double>& v) {

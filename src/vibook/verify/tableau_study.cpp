@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <filesystem>
 #include <fstream>
 #include <memory>
 #include <sstream>
@@ -79,6 +80,19 @@ std::vector<std::vector<mpfr_real>> matrix(const std::string& path, const json& 
   return m;
 }
 
+// The entry rounded to double-double: its double, then the double nearest the rest.
+dd_real to_dd(const mpfr_real& x) {
+  const double hi = static_cast<double>(x);
+  const double lo = static_cast<double>(mpfr_real(x - hi));
+  return dd_real(hi, lo);
+}
+
+std::vector<dd_real> to_dds(const std::vector<mpfr_real>& v) {
+  std::vector<dd_real> r;
+  for (const auto& x : v) r.push_back(to_dd(x));
+  return r;
+}
+
 std::vector<double> to_doubles(const std::vector<mpfr_real>& v) {
   std::vector<double> d;
   for (const auto& x : v) d.push_back(static_cast<double>(x));
@@ -88,10 +102,21 @@ std::vector<double> to_doubles(const std::vector<mpfr_real>& v) {
 }  // namespace
 
 TableauSpec read_tableau(const std::string& path) {
-  std::ifstream in(path);
+  // Only a regular file, and at most kMaxTableauBytes: /dev/zero, /dev/urandom or a FIFO would
+  // be read forever. The size is checked on the open file, and the read stops past the bound.
+  std::error_code ec;
+  const auto status = std::filesystem::status(path, ec);
+  if (ec || !std::filesystem::exists(status)) bad(path, "cannot be read");
+  if (!std::filesystem::is_regular_file(status))
+    bad(path, "is not a regular file (a device, FIFO or directory is refused)");
+  std::ifstream in(path, std::ios::binary);
   if (!in) bad(path, "cannot be read");
-  std::stringstream text;
-  text << in.rdbuf();
+  std::string content(kMaxTableauBytes + 1, '\0');
+  in.read(content.data(), std::streamsize(content.size()));
+  content.resize(static_cast<std::size_t>(in.gcount()));
+  if (content.size() > kMaxTableauBytes)
+    bad(path, fmt::format("is larger than {} bytes", kMaxTableauBytes));
+  std::stringstream text(content);
   json j;
   try {
     j = json::parse(text.str());
@@ -116,8 +141,9 @@ TableauSpec read_tableau(const std::string& path) {
   t.source = j.contains("source") && j["source"].is_string() ? j["source"].get<std::string>()
                                                              : "not given";
   if (j.contains("order")) {
-    if (!j["order"].is_number() || !(j["order"].get<double>() > 0) || j["order"].get<double>() > 10)
-      bad(path, "'order' must be a number in (0, 10]");
+    if (!j["order"].is_number() || !(j["order"].get<double>() > 0) ||
+        j["order"].get<double>() > kMaxOrder)
+      bad(path, fmt::format("'order' must be a number in (0, {:g}]", kMaxOrder));
     t.documented_order = j["order"].get<double>();
   }
   if (j.contains("symmetric")) {
@@ -161,6 +187,12 @@ TableauSpec read_tableau(const std::string& path) {
     t.tableau.a.push_back(to_doubles(a[i]));
     t.tableau.ahat.push_back(to_doubles(ahat[i]));
   }
+  t.tableau_dd.b = to_dds(b);
+  t.tableau_dd.bhat = to_dds(bhat);
+  for (std::size_t i = 0; i < s; ++i) {
+    t.tableau_dd.a.push_back(to_dds(a[i]));
+    t.tableau_dd.ahat.push_back(to_dds(ahat[i]));
+  }
   if (t.documented_order) {
     t.expected = *t.documented_order;
     t.expected_from = "the file's 'order'";
@@ -181,7 +213,7 @@ std::string list(const std::vector<double>& v) {
 namespace tableau_detail {
 
 void measure(const TableauSpec& spec, int N, const StudySystem& system, const MapStudy& study,
-             bool require_reversible, MapMeasurement& rep, std::pair<Step, GeneratingStep> steps,
+             bool symmetric_claimed, MapMeasurement& rep, std::pair<Step, GeneratingStep> steps,
              bool general_h) {
   MapStudy s = study;
   s.step = std::move(steps.first);
@@ -189,8 +221,11 @@ void measure(const TableauSpec& spec, int N, const StudySystem& system, const Ma
   s.expected = spec.expected;
   s.substeps = spec.tableau.stages();
   s.max_substeps = 1e6;
-  s.require_reversible = require_reversible || spec.symmetric_documented;
-  s.reversible_note = " (reported only: not said to be symmetric)";
+  s.symmetric_claimed = symmetric_claimed || spec.symmetric_documented;
+  s.symmetric_note = " (reported only: not said to be symmetric)";
+  s.exact_symplectic = spec.symplectic_conditions;
+  s.exact_symplectic_from =
+      fmt::format("b_i ahat_ij + bhat_j a_ji = b_i bhat_j and b = bhat at {} digits", kDigits);
 
   const int S = spec.tableau.stages();
   rep.line("tableau", fmt::format("{} ({} stages), from {}", spec.name, S, spec.file));
@@ -262,17 +297,23 @@ void measure(const TableauSpec& spec, int N, const StudySystem& system, const Ma
 
 void measure_tableau(const TableauSpec& spec, const TestProblem& problem,
                      const std::vector<double>& q0, const std::vector<double>& p0,
-                     const MapStudy& study, bool require_reversible, MapMeasurement& rep) {
+                     const MapStudy& study, bool symmetric_claimed, MapMeasurement& rep) {
+  using tableau_detail::step_dd_for;
   using tableau_detail::steps_for;
   std::pair<Step, GeneratingStep> steps;
-  if (problem.name == "pendulum")
+  MapStudy s = study;
+  if (problem.name == "pendulum") {
     steps = steps_for(Pendulum{}, spec.tableau);
-  else if (problem.name == "henon-heiles")
+    s.step_dd = step_dd_for(Pendulum{}, spec.tableau_dd);
+  } else if (problem.name == "henon-heiles") {
     steps = steps_for(HenonHeiles{}, spec.tableau);
-  else
+    s.step_dd = step_dd_for(HenonHeiles{}, spec.tableau_dd);
+  } else {
     steps = steps_for(Kepler{}, spec.tableau);
+    s.step_dd = step_dd_for(Kepler{}, spec.tableau_dd);
+  }
   tableau_detail::measure(spec, static_cast<int>(q0.size()), test_problem_system(problem, q0, p0),
-                          study, require_reversible, rep, std::move(steps));
+                          s, symmetric_claimed, rep, std::move(steps));
 }
 
 }  // namespace vibook::verify

@@ -23,6 +23,7 @@
 /// Chapter: \ref chapter-verify (section "A method from its tableau").
 #pragma once
 
+#include <cstddef>
 #include <optional>
 #include <string>
 #include <vector>
@@ -32,13 +33,18 @@
 
 namespace vibook::verify {
 
+/// The largest tableau file read (1 MiB): room for about 8000 entries written to 120 digits (a
+/// partitioned tableau of 60 stages); a larger file is refused, never read to its end.
+constexpr std::size_t kMaxTableauBytes = std::size_t(1) << 20;
+
 /// The largest number of stages a tableau may have.
 constexpr int kMaxTableauStages = 6;
 
 /// A tableau as read, with its conditions evaluated at 120 digits.
 struct TableauSpec {
   std::string file, name, source;
-  PrkTableau tableau;  ///< the entries rounded to double
+  PrkTableau tableau;               ///< the entries rounded to double
+  PrkTableauT<dd_real> tableau_dd;  ///< the entries rounded to double-double (the order study)
   std::optional<double> documented_order;
   bool symmetric_documented = false;
   // Residuals at 120 digits (the largest over the entries of each condition):
@@ -58,10 +64,10 @@ TableauSpec read_tableau(const std::string& path);
 
 /// Measure the method on `problem` from (q0, p0) with the settings of `study` (its step,
 /// state, field, energy and expected order are set here; reversibility is required when
-/// `require_reversible` is set or the file says the method is symmetric); appended to `rep`.
+/// `symmetric_claimed` is set or the file says the method is symmetric); appended to `rep`.
 void measure_tableau(const TableauSpec& spec, const TestProblem& problem,
                      const std::vector<double>& q0, const std::vector<double>& p0,
-                     const MapStudy& study, bool require_reversible, MapMeasurement& rep);
+                     const MapStudy& study, bool symmetric_claimed, MapMeasurement& rep);
 
 class TypedDiscreteLagrangian;  // verify/expression.hpp
 
@@ -75,6 +81,6 @@ class TypedDiscreteLagrangian;  // verify/expression.hpp
 void measure_tableau_typed(const TableauSpec& spec, const TypedDiscreteLagrangian& sys,
                            const std::vector<double>& q0, const std::vector<double>& p0,
                            const MapStudy& study, const std::string& system_line,
-                           bool require_reversible, bool general_h, MapMeasurement& rep);
+                           bool symmetric_claimed, bool general_h, MapMeasurement& rep);
 
 }  // namespace vibook::verify

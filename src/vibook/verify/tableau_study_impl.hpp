@@ -37,6 +37,20 @@ std::pair<Step, GeneratingStep> steps_for(const P& prob, const PrkTableau& t) {
   return method_steps<PartitionedRkMethod<Eigen::Dynamic, P>>(prob, t);
 }
 
+// The same method in double-double, for the order study of a high-order tableau
+// (MapStudy::step_dd), on a mechanical problem type.
+template <class P>
+StepDD step_dd_for(const P& prob, const PrkTableauT<dd_real>& t) {
+  constexpr int N = P::N;
+  auto method = std::make_shared<PartitionedRkMethod<Eigen::Dynamic, P, dd_real>>(prob, t);
+  return [method](VecXdd& z, const dd_real& h) {
+    Vec<dd_real, N> q = z.template head<N>(), p = z.template tail<N>();
+    method->step(q, p, h);
+    z.template head<N>() = q;
+    z.template tail<N>() = p;
+  };
+}
+
 // For a problem type with `hamiltonian` and `gradient` (∇H in (q, p)): the method of the
 // tableau on any H (HamiltonianPrkMethod).
 template <class P>
@@ -48,7 +62,7 @@ std::pair<Step, GeneratingStep> hamiltonian_steps_for(const P& prob, const PrkTa
 // `general_h`: the steps are HamiltonianPrkMethod's (the report says how it is solved and what
 // its discrete Lagrangian is).
 void measure(const TableauSpec& spec, int N, const StudySystem& system, const MapStudy& study,
-             bool require_reversible, MapMeasurement& rep, std::pair<Step, GeneratingStep> steps,
+             bool symmetric_claimed, MapMeasurement& rep, std::pair<Step, GeneratingStep> steps,
              bool general_h = false);
 
 }  // namespace vibook::verify::tableau_detail

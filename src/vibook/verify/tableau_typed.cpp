@@ -17,16 +17,16 @@ namespace vibook::verify {
 void measure_tableau_typed(const TableauSpec& spec, const TypedDiscreteLagrangian& sys,
                            const std::vector<double>& q0, const std::vector<double>& p0,
                            const MapStudy& study, const std::string& system_line,
-                           bool require_reversible, bool general_h, MapMeasurement& rep) {
+                           bool symmetric_claimed, bool general_h, MapMeasurement& rep) {
   using tableau_detail::measure_typed_dim;
   const StudySystem system = typed_study_system(system_line, q0, p0);
   switch (sys.dim()) {
     case 1:
-      return measure_typed_dim<1>(spec, sys, system, study, require_reversible, general_h, rep);
+      return measure_typed_dim<1>(spec, sys, system, study, symmetric_claimed, general_h, rep);
     case 2:
-      return measure_typed_dim<2>(spec, sys, system, study, require_reversible, general_h, rep);
+      return measure_typed_dim<2>(spec, sys, system, study, symmetric_claimed, general_h, rep);
     case 3:
-      return measure_typed_dim<3>(spec, sys, system, study, require_reversible, general_h, rep);
+      return measure_typed_dim<3>(spec, sys, system, study, symmetric_claimed, general_h, rep);
     default:
       throw std::invalid_argument("measure_tableau_typed: 1 to 3 degrees of freedom");
   }

@@ -11,13 +11,13 @@ namespace vibook::verify::tableau_detail {
 
 template <int N>
 void measure_typed_dim(const TableauSpec& spec, const TypedDiscreteLagrangian& sys,
-                       const StudySystem& system, const MapStudy& study, bool require_reversible,
+                       const StudySystem& system, const MapStudy& study, bool symmetric_claimed,
                        bool general_h, MapMeasurement& rep) {
   if (general_h)
-    measure(spec, N, system, study, require_reversible, rep,
+    measure(spec, N, system, study, symmetric_claimed, rep,
             hamiltonian_steps_for(TypedHamiltonian<N>{&sys}, spec.tableau), true);
   else
-    measure(spec, N, system, study, require_reversible, rep,
+    measure(spec, N, system, study, symmetric_claimed, rep,
             steps_for(TypedPotential<N>{&sys}, spec.tableau));
 }
 
