@@ -52,7 +52,17 @@ import sys
 sys.stdin.readline()
 raise RuntimeError("the stepper broke down here")
 PY
-chmod +x "$tmp/hang.sh" "$tmp/fork.sh"
+# A flood of lines nobody asked for, and one endless line: each process named after this
+# test's directory (exec -a), so that a survivor would be found.
+cat >"$tmp/flood.sh" <<SH
+#!/bin/bash
+exec -a "$tmp/yes" yes '0.1 0.1'
+SH
+cat >"$tmp/endless.sh" <<SH
+#!/bin/bash
+(exec -a "$tmp/yes" yes) | (exec -a "$tmp/tr" tr -d '\\n')
+SH
+chmod +x "$tmp/hang.sh" "$tmp/fork.sh" "$tmp/flood.sh" "$tmp/endless.sh"
 
 t0=$(date +%s)
 "$V" verify --stepper-cmd "$tmp/hang.sh" "${P[@]}" --stepper-timeout 0.5 >"$tmp/o1" 2>"$tmp/e1"
@@ -82,13 +92,13 @@ s=$?
 # A flood: an endless stream of lines, read without a request; vibook must stop within its
 # timeout, not hang writing requests nobody reads.
 start=$(date +%s)
-timeout 60 "$V" verify --stepper-cmd "yes '0.1 0.1' # $tmp/" "${P[@]}" --stepper-timeout 2 \
+timeout 60 "$V" verify --stepper-cmd "$tmp/flood.sh" "${P[@]}" --stepper-timeout 2 \
   >"$tmp/o5" 2>"$tmp/e5"
 s=$?
 [ $s != 124 ] && [ $s != 0 ] && [ "$(wc -l <"$tmp/e5")" = 1 ] && [ $(($(date +%s) - start)) -le 20 ] &&
   ! survivors && ok || bad "flood: status $s, $(cat "$tmp/e5")"
 # One endless line.
-timeout 60 "$V" verify --stepper-cmd "yes | tr -d '\\n' # $tmp/" "${P[@]}" --stepper-timeout 2 \
+timeout 60 "$V" verify --stepper-cmd "$tmp/endless.sh" "${P[@]}" --stepper-timeout 2 \
   >"$tmp/o6" 2>"$tmp/e6"
 s=$?
 [ $s != 124 ] && [ $s != 0 ] && [ "$(wc -l <"$tmp/e6")" = 1 ] && ! survivors && ok ||
