@@ -410,8 +410,9 @@ std::function<int()> add_verify_command(CLI::App& app) {
   c->add_option("--format", o->format, "modified equation as text (default) or latex");
   c->add_option("--json-out", o->json_out, "also write every measurement as JSON to this file");
   c->add_option("--report", o->report,
-                "also write an HTML report into this new directory (figures, CSV, JSON; work-"
-                "precision beside Störmer-Verlet and the implicit midpoint rule)");
+                "with --ld only (the other routes have --json-out): also write an HTML report "
+                "into this new directory (figures, CSV, JSON; work-precision beside "
+                "Störmer-Verlet and the implicit midpoint rule)");
   c->add_flag("--symmetric", o->symmetric,
               "the method is meant to be symmetric (its own adjoint), on every route: its "
               "symmetry becomes part of the verdict, and its time-reversibility too where the "
