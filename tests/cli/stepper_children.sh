@@ -7,15 +7,9 @@
 # Usage: stepper_children.sh VIBOOK
 set -u
 V=$1
-tmp=$(mktemp -d)
+# shellcheck source=verify_case.sh
+source "$(dirname "$0")/verify_case.sh"  # tmp, pass/fail, ok, bad
 trap 'pkill -KILL -f "$tmp/" 2>/dev/null; rm -rf "$tmp"' EXIT
-pass=0
-fail=0
-ok() { pass=$((pass + 1)); }
-bad() {
-  fail=$((fail + 1))
-  echo "FAIL: $*" >&2
-}
 # No process whose command line names this test's directory may outlive vibook.
 survivors() { sleep 0.3; pgrep -f "$tmp/" >/dev/null; }
 P=(--problem pendulum --expected-order 2 --steps 2048 --h-list 0.1,0.05,0.025)

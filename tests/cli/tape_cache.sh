@@ -6,15 +6,8 @@
 # Usage: tape_cache.sh VIBOOK
 set -u
 V=$1
-tmp=$(mktemp -d)
-trap 'chmod -R u+w "$tmp" 2>/dev/null; rm -rf "$tmp"' EXIT
-pass=0
-fail=0
-ok() { pass=$((pass + 1)); }
-bad() {
-  fail=$((fail + 1))
-  echo "FAIL: $*" >&2
-}
+# shellcheck source=verify_case.sh
+source "$(dirname "$0")/verify_case.sh"  # tmp, pass/fail, ok, bad
 ld=(--ld 'h*((q1-q0)^2/(2*h^2) - (V(q0)+V(q1))/2)' --potential='-cos(x)' --q0 1 --p0 0.5
   --h-list 0.2,0.1,0.05,0.025 --steps 2048)
 native() { grep -q "^evaluation  *compiled tape, run as native code" "$1"; }
