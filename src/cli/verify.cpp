@@ -7,6 +7,7 @@
 #include <unistd.h>
 
 #include <filesystem>
+#include <iostream>
 #include <memory>
 #include <mutex>
 #include <string>
@@ -26,6 +27,7 @@
 #include "vibook/core/progress.hpp"
 #include "vibook/modified/engine.hpp"
 #include "vibook/verify/expression.hpp"
+#include "vibook/verify/ld_study.hpp"
 #include "watchdog.hpp"
 
 namespace vibook::cli {
@@ -62,8 +64,8 @@ void check_report_dir(const std::string& dir) {
 }
 
 // Every argument checked before any work (exit 2 naming it).
-Plan check(const VerifyOptions& o, const verify::TypedDiscreteLagrangian& dl) {
-  Plan p;
+verify::LdSettings check(const VerifyOptions& o, const verify::TypedDiscreteLagrangian& dl) {
+  verify::LdSettings p;
   p.dim = dl.dim();
   auto vector_or = [&](const std::string& arg, const std::string& text, double fill) {
     std::vector<double> v = text.empty() ? std::vector<double>(p.dim, fill) : parse_list(arg, text);
@@ -126,7 +128,35 @@ Plan check(const VerifyOptions& o, const verify::TypedDiscreteLagrangian& dl) {
                                             "' is the --report directory or in it; "
                                             "the report holds verify.json already");
   }
+  p.symmetric = o.symmetric;
+  p.work_precision = o.report_given;
+  p.reference_evaluation = o.reference;
+  p.timings = o.timings;
+  p.ld_text = o.ld;
+  p.potential_text = o.potential;
+  p.lagrangian_text = o.lagrangian;
+  p.hamiltonian_text = o.hamiltonian;
   return p;
+}
+
+// `vibook verify --ld`: the library's study (vibook/verify/ld_study.hpp), printed: the text
+// report, one line on stderr when it did not pass, the JSON, the report page.
+int run_typed(const VerifyOptions& o, const verify::TypedDiscreteLagrangian& dl,
+              const verify::LdSettings& s) {
+  const verify::LdStudy st = verify::run_ld_study(dl, s);
+  std::cout << st.text;
+  std::cout.flush();
+  if (!st.error_line.empty()) eprint(st.error_line);
+  if (o.json_given) write_output_file(o.json_out, st.js.dump(2) + "\n", "--json-out");
+  if (!o.report_given) return st.status;
+  const std::filesystem::path final_dir = report_path(o.report);
+  const std::string render_error = verify::write_ld_report(st, s, command_line(), final_dir);
+  std::cout << "report: " << (final_dir / "index.html").string() << '\n';
+  if (!render_error.empty() && st.status == kOk) {
+    eprint(fmt::format("vibook: --report: figure not drawn: {}\n", render_error));
+    return kFailure;
+  }
+  return st.status;
 }
 
 // The options every one-step-map route shares, as typed, with the flags of those given.
@@ -299,21 +329,7 @@ int run(const VerifyOptions& o, const CLI::App& c) {
     dl = std::make_unique<verify::TypedDiscreteLagrangian>(
         verify::TypedTexts{o.ld, o.potential, o.lagrangian, o.hamiltonian, dim});
   }
-  const Plan p = check(o, *dl);
-  switch (p.dim) {
-    case 1:
-      return run_verify<1>(o, *dl, p);
-    case 2:
-      return run_verify<2>(o, *dl, p);
-    case 3:
-      return run_verify<3>(o, *dl, p);
-    case 4:
-      return run_verify<4>(o, *dl, p);
-    case 5:
-      return run_verify<5>(o, *dl, p);
-    default:
-      return run_verify<6>(o, *dl, p);
-  }
+  return run_typed(o, *dl, check(o, *dl));
 }
 
 }  // namespace

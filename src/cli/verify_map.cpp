@@ -284,10 +284,4 @@ int MapReport::finish(bool json_given, const std::string& json_out) {
   return rc;
 }
 
-double largest_symmetric_eigenvalue(const Eigen::MatrixXd& H) {
-  return Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd>(H, Eigen::EigenvaluesOnly)
-      .eigenvalues()
-      .maxCoeff();
-}
-
 }  // namespace vibook::cli

@@ -22,6 +22,7 @@
 #include "vibook/verify/expression.hpp"
 #include "vibook/verify/map_study.hpp"
 #include "vibook/verify/reference.hpp"
+#include "vibook/verify/typed_system.hpp"
 #include "vibook/verify/verify.hpp"
 
 namespace vibook::cli {
@@ -34,56 +35,11 @@ using verify::test_problems;
 using verify::TestProblem;
 using verify::vec_text;
 
-/// The typed Lagrangian of `sys` (`--lagrangian`, in q and v) at w = (q, v): its value, gradient
-/// and Hessian in the 2N variables, by nested forward AutoDiff in T on the expression tree.
-template <int N, class T>
-void lagrangian_derivatives(const verify::TypedDiscreteLagrangian& sys, const Vec<T, 2 * N>& w,
-                            T& value, Vec<T, 2 * N>& g, Mat<T, 2 * N>& H) {
-  verify::value_gradient_hessian<2 * N, T>(
-      [&](const auto& x) {
-        using S = scalar_t<decltype(x)>;
-        const Vec<S, N> qs = x.template head<N>(), vs = x.template tail<N>();
-        return sys.lagrangian<N, S>(qs, vs);
-      },
-      w, value, g, H);
-}
-
-/// The acceleration the Euler–Lagrange equations give at (q, v), from L's gradient g and Hessian
-/// H there (lagrangian_derivatives): M a = ∂L/∂q − B v, with M = ∂²L/∂v² and B = ∂²L/∂v∂q.
-template <int N, class T>
-Vec<T, N> euler_lagrange_acceleration(const Vec<T, 2 * N>& g, const Mat<T, 2 * N>& H,
-                                      const Vec<T, N>& v) {
-  const Mat<T, N> M = H.template bottomRightCorner<N, N>();
-  const Mat<T, N> B = H.template bottomLeftCorner<N, N>();
-  const Vec<T, N> rhs = g.template head<N>() - B * v;
-  return M.partialPivLu().solve(rhs);
-}
-
-/// Hamilton's equations of the Hamiltonian of `sys` in double-double, (q, p) stacked: the field
-/// every reference of a typed system solves. `sys` must outlive it. N = 1..verify::kMaxDim,
-/// instantiated once (typed_system.cpp).
-template <int N>
-verify::Field<dd_real> typed_hamilton_field(const verify::TypedDiscreteLagrangian& sys);
-
-/// The system part of a study from a typed system with a Hamiltonian (`vibook verify
-/// --hamiltonian`, or p^2/2 + V(q) from --potential): z0, the reference's field (Hamilton's
-/// equations in double-double) and the energy. `sys` must outlive the study. N =
-/// 1..verify::kMaxDim, instantiated once (typed_system.cpp).
-template <int N>
-void set_typed_system(MapStudy& s, const verify::TypedDiscreteLagrangian& sys,
-                      const Eigen::VectorXd& z0);
-
-// X(1) … X(kMaxDim): explicit instantiations (here extern, in typed_system.cpp the definitions)
-// for every dimension, from one list.
-#define VIBOOK_FOR_EACH_DIM(X) X(1) X(2) X(3) X(4) X(5) X(6)
-static_assert(verify::kMaxDim == 6, "VIBOOK_FOR_EACH_DIM lists the dimensions 1..kMaxDim");
-#define VIBOOK_TYPED_SYSTEM(N)                                                                \
-  extern template verify::Field<dd_real> typed_hamilton_field<N>(                             \
-      const verify::TypedDiscreteLagrangian&);                                                \
-  extern template void set_typed_system<N>(MapStudy&, const verify::TypedDiscreteLagrangian&, \
-                                           const Eigen::VectorXd&);
-VIBOOK_FOR_EACH_DIM(VIBOOK_TYPED_SYSTEM)
-#undef VIBOOK_TYPED_SYSTEM
+using verify::euler_lagrange_acceleration;
+using verify::lagrangian_derivatives;
+using verify::largest_symmetric_eigenvalue;
+using verify::set_typed_system;
+using verify::typed_hamilton_field;
 
 /// The test problem named by --problem (empty: kepler); ArgumentError naming --problem
 /// otherwise.
@@ -223,9 +179,5 @@ std::string set_typed_lagrangian(MapStudy& s, const verify::TypedDiscreteLagrang
 std::string set_typed_potential(MapStudy& s, const verify::TypedDiscreteLagrangian& sys,
                                 const std::string& potential, const std::vector<double>& q0,
                                 const std::vector<double>& p0);
-
-// The largest eigenvalue of the symmetric matrix H (the stability hint's ω² from V's Hessian):
-// one instance for every dimension, compiled once.
-double largest_symmetric_eigenvalue(const Eigen::MatrixXd& H);
 
 }  // namespace vibook::cli

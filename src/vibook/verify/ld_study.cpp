@@ -1,22 +1,14 @@
-// The verification of a typed discrete Lagrangian (`vibook verify --ld`): consistency of its
-// leading term, order against an independent reference (the continuous equations by GBS
-// extrapolation in double-double), symplecticity, reversibility, the energy of the intended
-// system judged by magnitude and trend, and the modified equation, Lagrangian and Hamiltonian
-// from the engine. Included only by the generated verify_typed_N.cpp, one per dimension.
-#pragma once
-
-#include <unistd.h>
+// The study of a typed discrete Lagrangian (ld_study.hpp), compiled once for every dimension:
+// each phase below states what it measures and how it is judged; the criteria of the scaling
+// phases are those of every route (phases.hpp, book chapter "Verify your own integrator",
+// section "The criteria of every route").
+#include "vibook/verify/ld_study.hpp"
 
 #include <algorithm>
 #include <array>
 #include <chrono>
 #include <cmath>
-#include <cstdio>
-#include <filesystem>
-#include <fstream>
-#include <iostream>
-#include <memory>
-#include <optional>
+#include <mutex>
 #include <random>
 #include <sstream>
 #include <string>
@@ -25,74 +17,20 @@
 #include <fmt/format.h>
 #include <fmt/ranges.h>
 
-#include <nlohmann/json.hpp>
-
-#include "args.hpp"
-#include "cli.hpp"
-#include "verify_composition.hpp"
-#include "verify_map.hpp"
-#include "verify_method.hpp"
-#include "verify_stepper.hpp"
-#include "verify_typed.hpp"
-#include "vibook/core/output_file.hpp"
-#include "vibook/core/precision.hpp"
 #include "vibook/core/progress.hpp"
-#include "vibook/mechanics/del_solver.hpp"
-#include "vibook/mechanics/discrete_lagrangian.hpp"
-#include "vibook/modified/canonical.hpp"
-#include "vibook/modified/engine.hpp"
 #include "vibook/modified/series.hpp"
-#include "vibook/plot/gnuplot.hpp"
-#include "vibook/verify/adaptive.hpp"
-#include "vibook/verify/expression.hpp"
+#include "vibook/verify/map_study.hpp"
 #include "vibook/verify/phases.hpp"
-#include "vibook/verify/reference.hpp"
-#include "vibook/verify/tape.hpp"
-#include "vibook/verify/verify.hpp"
-#include "vibook_book_stylesheet.hpp"
-#include "watchdog.hpp"
 
-namespace vibook::cli {
+namespace vibook::verify {
 
 using nlohmann::json;
 
-inline std::string html_escape(const std::string& s) {
-  std::string out;
-  for (char c : s) {
-    switch (c) {
-      case '&':
-        out += "&amp;";
-        break;
-      case '<':
-        out += "&lt;";
-        break;
-      case '>':
-        out += "&gt;";
-        break;
-      case '"':
-        out += "&quot;";
-        break;
-      default:
-        out += c;
-    }
-  }
-  return out;
-}
+namespace {
 
-inline std::string vec_text(const Eigen::VectorXd& v) {
-  std::vector<std::string> s;
-  for (Eigen::Index i = 0; i < v.size(); ++i) s.push_back(fmt::format("{:.6g}", v(i)));
-  return "(" + fmt::format("{}", fmt::join(s, ", ")) + ")";
+std::string vtext(const Eigen::VectorXd& v) {
+  return vec_text(std::vector<double>(v.data(), v.data() + v.size()));
 }
-
-// One part of the verification: its status and, when it failed, why.
-struct Phase {
-  std::string name;
-  std::string status = "not run";  // "ok", "failed", "skipped", "not run"
-  std::string reason;
-  int exit = kOk;  // the exit status its failure asks for
-  double seconds = 0;
-};
 
 // Where the integrator is, for the message of a step that fails.
 struct Where {
@@ -108,65 +46,50 @@ struct Where {
   }
 };
 
-template <int N>
-int run_verify(const VerifyOptions& o, const verify::TypedDiscreteLagrangian& dl, const Plan& p) {
+}  // namespace
+
+std::unique_ptr<LdKernel> make_ld_kernel(const TypedDiscreteLagrangian& dl,
+                                         bool reference_evaluation) {
+  switch (dl.dim()) {
+    case 1:
+      return detail::make_ld_kernel_n<1>(dl, reference_evaluation);
+    case 2:
+      return detail::make_ld_kernel_n<2>(dl, reference_evaluation);
+    case 3:
+      return detail::make_ld_kernel_n<3>(dl, reference_evaluation);
+    case 4:
+      return detail::make_ld_kernel_n<4>(dl, reference_evaluation);
+    case 5:
+      return detail::make_ld_kernel_n<5>(dl, reference_evaluation);
+    case 6:
+      return detail::make_ld_kernel_n<6>(dl, reference_evaluation);
+    default:
+      throw ArgumentError("dimension", fmt::format("{} is not in 1..{}", dl.dim(), kMaxDim));
+  }
+}
+
+LdStudy run_ld_study(const TypedDiscreteLagrangian& dl, const LdSettings& p) {
   using Clock = std::chrono::steady_clock;
-  const auto Ld = dl.bind<N>();
-  // The method is stepped through the compiled tape (verify/tape.hpp: D1 L_d, D2 L_d and
-  // D2 D1 L_d as straight-line code), or with --reference through nested AutoDiff on the
-  // expression tree, the path the tape is checked against.
-  DelIntegrator<N, decltype(Ld)> vi_tree(Ld);
-  std::optional<DelIntegrator<N, verify::CompiledDiscreteLagrangian<N>>> vi_tape;
-  if (!o.reference) {
-    std::lock_guard<std::mutex> lock(modified::ginac_mutex());
-    vi_tape.emplace(verify::CompiledDiscreteLagrangian<N>(dl));
-  }
-  struct {
-    decltype(vi_tree)& tree;
-    decltype(vi_tape)& tape;
-    SolveReport step(Vec<double, N>& q, Vec<double, N>& p, double h) {
-      return tape ? tape->step(q, p, h) : tree.step(q, p, h);
-    }
-    void reset() {
-      tree.reset();
-      if (tape) tape->reset();
-    }
-  } vi{vi_tree, vi_tape};
-  std::string evaluation = "nested forward AutoDiff on the expression tree (--reference)";
-  if (vi_tape) {
-    const auto& c = vi_tape->lagrangian();
-    const auto st = c.stats();
-    evaluation = fmt::format(
-        "compiled tape, {}: {} instructions per Newton iteration and {} once a step{}, {} for "
-        "the momentum{} (--reference: nested AutoDiff)",
-        c.native() ? std::string("run as native code")
-                   : "interpreted (no native code: " + c.native_reason() + ")",
-        st.newton_instructions - st.newton_prefix, st.newton_prefix,
-        st.carried > 0 ? fmt::format(" ({} with the {} values the last momentum carries over)",
-                                     st.newton_prefix_carried, st.carried)
-                       : std::string(),
-        st.momentum_instructions,
-        c.jacobian_constant() ? "; D2 D1 L_d is free of q1, so Newton factors its matrix once"
-                              : "");
-  }
-  Eigen::VectorXd z0(2 * N);
-  for (int i = 0; i < N; ++i) {
+  LdStudy study;
+  const int n = dl.dim();
+  const std::unique_ptr<LdKernel> kernel = make_ld_kernel(dl, p.reference_evaluation);
+  LdKernel& K = *kernel;
+  Eigen::VectorXd z0(2 * n);
+  for (int i = 0; i < n; ++i) {
     z0(i) = p.q0[i];
-    z0(N + i) = p.p0[i];
+    z0(n + i) = p.p0[i];
   }
-  std::vector<Phase> phases;
+  std::vector<LdPhase>& phases = study.phases;
   json js;
-  js["input"] = {{"ld", o.ld},
-                 {"potential", o.potential},
-                 {"lagrangian", o.lagrangian},
-                 {"hamiltonian", o.hamiltonian},
+  js["input"] = {{"ld", p.ld_text},
+                 {"potential", p.potential_text},
+                 {"lagrangian", p.lagrangian_text},
+                 {"hamiltonian", p.hamiltonian_text},
                  {"intended", dl.has_hamiltonian()  ? "hamiltonian"
                               : dl.default_system() ? "L = |v|^2/2 - V(q)"
                                                     : "lagrangian"},
-                 {"dim", N},
-                 {"evaluation", !vi_tape                         ? "autodiff"
-                                : vi_tape->lagrangian().native() ? "native"
-                                                                 : "tape"},
+                 {"dim", n},
+                 {"evaluation", K.evaluation_kind()},
                  {"q0", p.q0},
                  {"p0", p.p0}};
   std::ostringstream out;  // the text report, printed at the end whatever happened
@@ -175,7 +98,7 @@ int run_verify(const VerifyOptions& o, const verify::TypedDiscreteLagrangian& dl
   };
   // Run one part: a failure is recorded with its reason and exit status, never thrown on.
   auto run = [&](const std::string& name, auto&& body) {
-    Phase ph;
+    LdPhase ph;
     ph.name = name;
     progress::set_stage(name);
     const auto t0 = Clock::now();
@@ -185,57 +108,40 @@ int run_verify(const VerifyOptions& o, const verify::TypedDiscreteLagrangian& dl
     } catch (const NumericalError& e) {
       ph.status = "failed";
       ph.reason = e.what();
-      ph.exit = kNumerical;
+      ph.exit = kLdNumerical;
     } catch (const ArgumentError& e) {
       ph.status = "failed";
       ph.reason = e.what();
-      ph.exit = kBadArgument;
+      ph.exit = kLdBadArgument;
     } catch (const std::exception& e) {
       ph.status = "failed";
       ph.reason = e.what();
-      ph.exit = kFailure;
+      ph.exit = kLdFailure;
     }
     ph.seconds = std::chrono::duration<double>(Clock::now() - t0).count();
     phases.push_back(ph);
     return ph.status == "ok";
   };
   auto failed_line = [&](const std::string& label) {
-    const Phase& ph = phases.back();
-    line(label, "FAILED (" + std::string(ph.exit == kNumerical ? "numerical" : "error") +
+    const LdPhase& ph = phases.back();
+    line(label, "FAILED (" + std::string(ph.exit == kLdNumerical ? "numerical" : "error") +
                     "): " + ph.reason);
   };
 
-  out << fmt::format("{:<21}{}\n", "discrete Lagrangian", o.ld);
+  out << fmt::format("{:<21}{}\n", "discrete Lagrangian", p.ld_text);
   if (dl.has_hamiltonian())
-    line("intended system", "H = " + o.hamiltonian);
+    line("intended system", "H = " + p.hamiltonian_text);
   else if (!dl.default_system())
-    line("intended system", "L = " + o.lagrangian);
+    line("intended system", "L = " + p.lagrangian_text);
   else
     line("intended system",
          "L = v^2/2 - V(q) (the default; --lagrangian or --hamiltonian to change)");
-  line("potential", (o.potential.empty() ? std::string("(none)") : o.potential) +
-                        fmt::format("   ({}-dimensional)", N));
-  line("evaluation", evaluation);
+  line("potential", (p.potential_text.empty() ? std::string("(none)") : p.potential_text) +
+                        fmt::format("   ({}-dimensional)", n));
+  line("evaluation", K.evaluation());
 
   // --- the stability hint: the largest frequency of V at q0 (unit mass) ---------------------
-  double omega = 0;
-  if (dl.has_potential()) {
-    try {
-      Vec<double, N> q;
-      for (int i = 0; i < N; ++i) q(i) = p.q0[i];
-      double value = 0;
-      Vec<double, N> g;
-      Mat<double, N> H;
-      verify::value_gradient_hessian<N, double>([&](const auto& x) { return dl.potential<N>(x); },
-                                                q, value, g, H);
-      // (1 x 1 directly: GCC 12 warns, falsely, of bounds in the copy of a 1 x 1 matrix)
-      double lmax = H(0, 0);
-      if constexpr (N > 1) lmax = largest_symmetric_eigenvalue(H);
-      omega = lmax > 0 ? std::sqrt(lmax) : 0;
-    } catch (const std::exception&) {
-      omega = 0;
-    }
-  }
+  const double omega = K.largest_frequency(p.q0);
   auto hint = [&](double h) -> std::string {
     if (omega * h > 2)
       return fmt::format(
@@ -263,12 +169,11 @@ int run_verify(const VerifyOptions& o, const verify::TypedDiscreteLagrangian& dl
     int max_iterations = 0;
     double max_residual = 0;
   } newton;
-  auto stepper = [&](bool warm, bool count) -> verify::Step {
+  auto stepper = [&](bool warm, bool count) -> Step {
     return [&, warm, count](Eigen::VectorXd& z, double h) {
-      if (!warm) vi.reset();
-      Vec<double, N> q = z.head<N>(), pk = z.tail<N>();
+      if (!warm) K.reset();
       try {
-        const SolveReport rep = vi.step(q, pk, h);
+        const SolveReport rep = K.step(z, h);
         if (count) {
           ++newton.steps;
           newton.iterations += rep.iterations;
@@ -277,36 +182,33 @@ int run_verify(const VerifyOptions& o, const verify::TypedDiscreteLagrangian& dl
         }
       } catch (const NumericalError& e) {
         Eigen::VectorXd zz = z;
-        throw NumericalError(
-            fmt::format("{}: step {} at t = {:.6g} from q = {}, p = {}, h = {:g}: {}.{}",
-                        where.phase, where.step + 1, where.t, vec_text(zz.head(N)),
-                        vec_text(zz.tail(N)), h, e.what(), hint(h)));
+        throw NumericalError(fmt::format(
+            "{}: step {} at t = {:.6g} from q = {}, p = {}, h = {:g}: {}.{}", where.phase,
+            where.step + 1, where.t, vtext(zz.head(n)), vtext(zz.tail(n)), h, e.what(), hint(h)));
       }
-      z.head<N>() = q;
-      z.tail<N>() = pk;
       ++where.step;
       where.t += h;
     };
   };
-  const verify::Step step = stepper(false, false);
+  const Step step = stepper(false, false);
 
   // --- 0. regularity: D1 D2 L_d invertible at the first step, or the discrete Euler–Lagrange
   // equations cannot be solved for q1 (every numerical part below then fails; exit 3).
   json jreg;
   if (!run("regularity", [&] {
-        Vec<double, N> qa, qb;
-        for (int i = 0; i < N; ++i) {
+        Eigen::VectorXd qa(n), qb(n);
+        for (int i = 0; i < n; ++i) {
           qa(i) = p.q0[i];
           qb(i) = p.q0[i] + p.h * p.p0[i];
         }
-        const auto d = ad::two_point<N>(Ld, qa, qb, p.h);
-        const double det = d.D12.determinant();
-        const double scale = std::pow(d.D12.cwiseAbs().maxCoeff(), N);
+        const auto d = K.two_point(qa, qb, p.h);
+        const double det = d.det;
+        const double scale = std::pow(d.D12.cwiseAbs().maxCoeff(), n);
         jreg = {{"det_D1D2", std::isfinite(det) ? json(det) : json(nullptr)}, {"h", p.h}};
         // Not finite is not degenerate: say which value failed, and where.
         const auto where = [&] {
-          return fmt::format("q0 = q(0) = {}, q1 = q(0) + h p(0) = {}, h = {:g}", vec_text(qa),
-                             vec_text(qb), p.h);
+          return fmt::format("q0 = q(0) = {}, q1 = q(0) + h p(0) = {}, h = {:g}", vtext(qa),
+                             vtext(qb), p.h);
         };
         if (!std::isfinite(d.value))
           throw NumericalError(fmt::format(
@@ -334,16 +236,16 @@ int run_verify(const VerifyOptions& o, const verify::TypedDiscreteLagrangian& dl
   run("consistency", [&] {
     std::lock_guard<std::mutex> lock(modified::ginac_mutex());
     std::vector<GiNaC::symbol> x, v;
-    Vec<modified::ex, N> X, Xh, Vv;
+    std::vector<modified::ex> X(n), Xh(n), Vv(n);
     const GiNaC::symbol h("h");
-    for (int i = 0; i < N; ++i) {
-      x.emplace_back(N == 1 ? "x" : "x" + std::to_string(i + 1));
-      v.emplace_back(N == 1 ? "v" : "v" + std::to_string(i + 1));
-      X(i) = x.back();
-      Vv(i) = v.back();
-      Xh(i) = x.back() + h * v.back();
+    for (int i = 0; i < n; ++i) {
+      x.emplace_back(n == 1 ? "x" : "x" + std::to_string(i + 1));
+      v.emplace_back(n == 1 ? "v" : "v" + std::to_string(i + 1));
+      X[i] = x.back();
+      Vv[i] = v.back();
+      Xh[i] = x.back() + h * v.back();
     }
-    const modified::ex ld = dl.evaluate<N, modified::ex>(X, Xh, modified::ex(h)) / h;
+    const modified::ex ld = K.ld_symbolic(X, Xh, modified::ex(h)) / h;
     modified::ex L0;
     try {
       const modified::ex ser = GiNaC::expand(GiNaC::series_to_poly(ld.series(h == 0, 1)));
@@ -374,7 +276,7 @@ int run_verify(const VerifyOptions& o, const verify::TypedDiscreteLagrangian& dl
     jcons["leading_term"] = txt(L0);
     std::string verdict;
     if (!dl.has_hamiltonian()) {
-      const modified::ex L = dl.lagrangian<N, modified::ex>(X, Vv);
+      const modified::ex L = K.lagrangian_symbolic(X, Vv);
       jcons["intended"] = txt(L);
       const modified::ex diff = GiNaC::expand(L0 - L);
       consistent = modified::vanishes(diff);
@@ -412,40 +314,32 @@ int run_verify(const VerifyOptions& o, const verify::TypedDiscreteLagrangian& dl
       double worst = 0;
       std::string at;
       for (int s = 0; s < 8; ++s) {
-        Vec<double, 2 * N> y;
-        for (int i = 0; i < N; ++i) {
+        Eigen::VectorXd y(2 * n);
+        for (int i = 0; i < n; ++i) {
           y(i) = p.q0[i] + (s ? U(rng) : 0.0);
-          y(N + i) = p.p0[i] + (s ? U(rng) : 0.0);
+          y(n + i) = p.p0[i] + (s ? U(rng) : 0.0);
         }
-        double Hv = 0;
-        Vec<double, 2 * N> g;
-        Mat<double, 2 * N> Hm;
-        verify::value_gradient_hessian<2 * N, double>(
-            [&](const auto& w) {
-              using S = scalar_t<decltype(w)>;
-              Vec<S, N> q = w.template head<N>(), pp = w.template tail<N>();
-              return dl.hamiltonian<N, S>(q, pp);
-            },
-            y, Hv, g, Hm);
+        Eigen::VectorXd g;
+        const double Hv = K.hamiltonian_gradient(y, g);
         GiNaC::exmap m;
         double pv = 0;
-        for (int i = 0; i < N; ++i) {
+        for (int i = 0; i < n; ++i) {
           m[x[i]] = y(i);
-          m[v[i]] = g(N + i);
-          pv += y(N + i) * g(N + i);
+          m[v[i]] = g(n + i);
+          pv += y(n + i) * g(n + i);
         }
         auto num = [&](const modified::ex& e) {
           return GiNaC::ex_to<GiNaC::numeric>(GiNaC::evalf(e.subs(m))).to_double();
         };
         const double lhs = num(L0), rhs = pv - Hv;
         double dev = std::abs(lhs - rhs) / std::max(1.0, std::abs(rhs));
-        for (int i = 0; i < N; ++i)
+        for (int i = 0; i < n; ++i)
           dev = std::max(
-              dev, std::abs(num(L0.diff(v[i])) - y(N + i)) / std::max(1.0, std::abs(y(N + i))));
+              dev, std::abs(num(L0.diff(v[i])) - y(n + i)) / std::max(1.0, std::abs(y(n + i))));
         if (dev > worst) {
           worst = dev;
           at = fmt::format("at q = {}, p = {}: L0(q, dH/dp) = {:.6g}, p·v − H = {:.6g}",
-                           vec_text(y.head(N)), vec_text(y.tail(N)), lhs, rhs);
+                           vtext(y.head(n)), vtext(y.tail(n)), lhs, rhs);
         }
       }
       jcons["max_relative_deviation"] = worst;
@@ -466,112 +360,14 @@ int run_verify(const VerifyOptions& o, const verify::TypedDiscreteLagrangian& dl
   double ref_error = NAN;
   json jref;
   // --adaptive epavi: the positions at h and h/2, the start-up steps of the adaptive runs
-  std::array<Vec<double, N>, 2> q_start;
+  std::array<Eigen::VectorXd, 2> q_start;
   const bool have_ref = run("reference", [&] {
-    using T = dd_real;
-    verify::Field<T> f;
-    std::vector<T> y0(2 * N);
-    auto starts = [&] {
-      if (!p.adaptive_epavi) return;
-      for (int j = 0; j < 2; ++j) {
-        const auto r = verify::reference_solution<T>(f, y0, j == 0 ? p.h : p.h / 2);
-        for (int i = 0; i < N; ++i) q_start[j](i) = to_double(r.y[static_cast<std::size_t>(i)]);
-      }
-    };
-    if (dl.has_hamiltonian()) {
-      f = typed_hamilton_field<N>(dl);
-      for (int i = 0; i < N; ++i) {
-        y0[static_cast<std::size_t>(i)] = T(p.q0[i]);
-        y0[static_cast<std::size_t>(N + i)] = T(p.p0[i]);
-      }
-    } else {
-      auto derivatives = [&](const Vec<T, N>& q, const Vec<T, N>& v, Vec<T, 2 * N>& g,
-                             Mat<T, 2 * N>& H) {
-        Vec<T, 2 * N> w;
-        w << q, v;
-        T value;
-        lagrangian_derivatives<N, T>(dl, w, value, g, H);
-      };
-      f = [&](const std::vector<T>& y) {
-        Vec<T, N> q, v;
-        for (int i = 0; i < N; ++i) {
-          q(i) = y[static_cast<std::size_t>(i)];
-          v(i) = y[static_cast<std::size_t>(N + i)];
-        }
-        Vec<T, 2 * N> g;
-        Mat<T, 2 * N> H;
-        derivatives(q, v, g, H);
-        const Vec<T, N> a = euler_lagrange_acceleration<N, T>(g, H, v);
-        std::vector<T> r(2 * N);
-        for (int i = 0; i < N; ++i) {
-          r[static_cast<std::size_t>(i)] = v(i);
-          r[static_cast<std::size_t>(N + i)] = a(i);
-        }
-        return r;
-      };
-      // the initial velocity: dL/dv(q0, v) = p0, by Newton from v = p0
-      Vec<T, N> q, v;
-      for (int i = 0; i < N; ++i) {
-        q(i) = T(p.q0[i]);
-        v(i) = T(p.p0[i]);
-      }
-      bool done = false;
-      for (int it = 0; it < 60 && !done; ++it) {
-        Vec<T, 2 * N> g;
-        Mat<T, 2 * N> H;
-        derivatives(q, v, g, H);
-        Vec<T, N> F;
-        for (int i = 0; i < N; ++i) F(i) = g(N + i) - T(p.p0[i]);
-        const Mat<T, N> M = H.template bottomRightCorner<N, N>();
-        const Vec<T, N> dv = M.partialPivLu().solve(F);
-        v -= dv;
-        double nd = 0, nv = 1;
-        for (int i = 0; i < N; ++i) {
-          nd = std::max(nd, std::abs(to_double(dv(i))));
-          nv = std::max(nv, std::abs(to_double(v(i))));
-        }
-        if (!std::isfinite(nd)) break;
-        done = nd <= 1e-28 * nv;
-      }
-      if (!done)
-        throw NumericalError(fmt::format(
-            "the Legendre map dL/dv(q0, v) = p0 has no solution near v = p0 (q0 = {}, p0 = {}): "
-            "the intended Lagrangian is not regular there",
-            fmt::join(p.q0, ", "), fmt::join(p.p0, ", ")));
-      for (int i = 0; i < N; ++i) {
-        y0[static_cast<std::size_t>(i)] = q(i);
-        y0[static_cast<std::size_t>(N + i)] = v(i);
-      }
-      // the state at T in (q, p): p = dL/dv at the end
-      const auto r = verify::reference_solution<T>(f, y0, p.t_end);
-      Vec<T, N> qe, ve;
-      for (int i = 0; i < N; ++i) {
-        qe(i) = r.y[static_cast<std::size_t>(i)];
-        ve(i) = r.y[static_cast<std::size_t>(N + i)];
-      }
-      Vec<T, 2 * N> g;
-      Mat<T, 2 * N> H;
-      derivatives(qe, ve, g, H);
-      zref.resize(2 * N);
-      for (int i = 0; i < N; ++i) {
-        zref(i) = to_double(qe(i));
-        zref(N + i) = to_double(g(N + i));
-      }
-      ref_error = r.error;
-      jref["macro_steps"] = r.macro_steps;
-      jref["evaluations"] = r.evaluations;
-      starts();
-      f = nullptr;
-    }
-    if (dl.has_hamiltonian()) {
-      const auto r = verify::reference_solution<T>(f, y0, p.t_end);
-      zref.resize(2 * N);
-      for (int i = 0; i < 2 * N; ++i) zref(i) = to_double(r.y[static_cast<std::size_t>(i)]);
-      ref_error = r.error;
-      jref["macro_steps"] = r.macro_steps;
-      jref["evaluations"] = r.evaluations;
-      starts();
-    }
+    const LdReference r = K.reference(p);
+    zref = r.z;
+    ref_error = r.error;
+    q_start = r.q_start;
+    jref["macro_steps"] = r.macro_steps;
+    jref["evaluations"] = r.evaluations;
     jref["method"] = "Gragg-Bulirsch-Stoer extrapolation, 8 columns (order 16), double-double";
     jref["equations"] = dl.has_hamiltonian() ? "Hamilton's equations of H"
                                              : "Euler-Lagrange equations of the intended L";
@@ -590,16 +386,16 @@ int run_verify(const VerifyOptions& o, const verify::TypedDiscreteLagrangian& dl
 
   // --- 3. order against the reference -------------------------------------------------------
   std::vector<double> order_err;
-  verify::PlateauFit fit;
+  PlateauFit fit;
   bool order_passed = false;
   json jorder;
   if (!have_ref) {
-    phases.push_back({"order", "skipped", "no reference solution", kOk, 0});
+    phases.push_back({"order", "skipped", "no reference solution", kLdOk, 0});
     line("order", "not measured: no reference solution");
   } else if (run("order", [&] {
                for (double h : p.hs) {
                  where.start(fmt::format("order study at h = {:g}", h), h);
-                 const Eigen::VectorXd z = verify::integrate(step, z0, h, p.t_end);
+                 const Eigen::VectorXd z = integrate(step, z0, h, p.t_end);
                  order_err.push_back((z - zref).lpNorm<Eigen::Infinity>());
                }
                const double scale = std::max(1.0, zref.lpNorm<Eigen::Infinity>());
@@ -607,7 +403,7 @@ int run_verify(const VerifyOptions& o, const verify::TypedDiscreteLagrangian& dl
                    p.floor ? *p.floor
                            : std::max(10 * ref_error,
                                       16 * std::numeric_limits<double>::epsilon() * scale);
-               fit = verify::fit_order_plateau(p.hs, order_err, floor);
+               fit = fit_order_plateau(p.hs, order_err, floor);
                order_passed =
                    std::isfinite(fit.slope) && std::abs(fit.slope - p.expected) < p.order_tol;
                std::vector<bool> used = fit.used;
@@ -653,16 +449,16 @@ int run_verify(const VerifyOptions& o, const verify::TypedDiscreteLagrangian& dl
   json jvar;
   const bool var_judged = p.expected == std::floor(p.expected) && p.expected <= modified::max_order;
   const int var_k = static_cast<int>(std::min<double>(std::ceil(p.expected), modified::max_order));
-  if (N > 3) {
+  if (n > 3) {
     phases.push_back({"variational order", "skipped",
-                      "the symbolic engine is run for at most 3 dimensions", kOk, 0});
+                      "the symbolic engine is run for at most 3 dimensions", kLdOk, 0});
     line("variational order", "not derived: the symbolic engine is run for at most 3 dimensions");
   } else if (unscaled) {
     // Not an error of the run: the verdict on consistency (above) says why, status 5.
     const std::string why =
         "L_d is not of the size h·L (see consistency), so L_d - L_d^E has "
         "no expansion in powers of h";
-    phases.push_back({"variational order", "skipped", why, kOk, 0});
+    phases.push_back({"variational order", "skipped", why, kLdOk, 0});
     line("variational order", "not derived: " + why);
     jvar = {{"derived", false}, {"reason", why}};
   } else if (run("variational order", [&] {
@@ -680,9 +476,8 @@ int run_verify(const VerifyOptions& o, const verify::TypedDiscreteLagrangian& dl
                  first_term = "the h^1 term, see consistency";
                } else {
                  std::lock_guard<std::mutex> lock(modified::ginac_mutex());
-                 auto jets = std::make_shared<modified::JetSpace>(N);
-                 modified::Engine engine(
-                     modified::symbolic_dl<N>(Ld, jets, "typed discrete Lagrangian"), var_k);
+                 auto jets = std::make_shared<modified::JetSpace>(n);
+                 modified::Engine engine(K.symbolic(jets), var_k);
                  modified::ex L;
                  if (dl.has_hamiltonian()) {
                    // The Lagrangian of H: the leading term of L_d/h, which the consistency part
@@ -690,12 +485,12 @@ int run_verify(const VerifyOptions& o, const verify::TypedDiscreteLagrangian& dl
                    L = engine.l_disc().at(0);
                    jvar["lagrangian_from"] = "the leading term of h^-1 L_d, checked against H";
                  } else {
-                   Vec<modified::ex, N> X, V;
-                   for (int i = 0; i < N; ++i) {
-                     X(i) = jets->x(0, i);
-                     V(i) = jets->x(1, i);
+                   std::vector<modified::ex> X(n), V(n);
+                   for (int i = 0; i < n; ++i) {
+                     X[i] = jets->x(0, i);
+                     V[i] = jets->x(1, i);
                    }
-                   L = dl.lagrangian<N, modified::ex>(X, V);
+                   L = K.lagrangian_symbolic(X, V);
                    jvar["lagrangian_from"] = "the intended L";
                  }
                  const auto vo = engine.variational_order(L);
@@ -750,7 +545,7 @@ int run_verify(const VerifyOptions& o, const verify::TypedDiscreteLagrangian& dl
   json jsym, jsymm, jrev;
   if (run("symplecticity", [&] {
         where.start("symplecticity test", p.h);
-        const auto sym = verify::symplecticity_by_scaling(step, states, p.h);
+        const auto sym = symplecticity_by_scaling(step, states, p.h);
         jsym = sym.to_json();
         jsym["relative_to"] = "max(1, |J|_max^2)";
         line("symplectic", fmt::format("defect |J^T W J - W| / max(1, |J|^2): {}: {}", sym.shown(),
@@ -763,13 +558,13 @@ int run_verify(const VerifyOptions& o, const verify::TypedDiscreteLagrangian& dl
   js["symplecticity"] = jsym;
   if (run("symmetry", [&] {
         where.start("symmetry test", p.h);
-        const auto sy = verify::symmetry_by_scaling(step, states, p.h);
+        const auto sy = symmetry_by_scaling(step, states, p.h);
         jsymm = sy.to_json();
-        jsymm["required"] = o.symmetric;
+        jsymm["required"] = p.symmetric;
         line("symmetric",
              fmt::format("defect |Phi_-h(Phi_h(z)) - z| / max(1, |z|): {}: {}{}", sy.shown(),
                          sy.passed ? "yes" : "NO",
-                         o.symmetric ? ""
+                         p.symmetric ? ""
                                      : " (reported only; --symmetric makes it part of the "
                                        "verdict)"));
         line("", sy.why);
@@ -784,15 +579,15 @@ int run_verify(const VerifyOptions& o, const verify::TypedDiscreteLagrangian& dl
     std::mt19937_64 rng(7);
     std::uniform_real_distribution<double> U(-0.5, 0.5);
     for (int s = 0; s < 4 && system_reversible; ++s) {
-      Vec<double, N> q, w;
-      for (int i = 0; i < N; ++i) q(i) = p.q0[i] + U(rng), w(i) = p.p0[i] + U(rng);
+      Eigen::VectorXd q(n), w(n);
+      for (int i = 0; i < n; ++i) q(i) = p.q0[i] + U(rng), w(i) = p.p0[i] + U(rng);
       double a, b;
       if (dl.has_hamiltonian()) {
-        a = dl.hamiltonian<N, double>(q, w);
-        b = dl.hamiltonian<N, double>(q, Vec<double, N>(-w));
+        a = K.hamiltonian(q, w);
+        b = K.hamiltonian(q, -w);
       } else {
-        a = dl.lagrangian<N, double>(q, w);
-        b = dl.lagrangian<N, double>(q, Vec<double, N>(-w));
+        a = K.lagrangian(q, w);
+        b = K.lagrangian(q, -w);
       }
       system_reversible = std::abs(a - b) <= 1e-12 * std::max(1.0, std::abs(a));
     }
@@ -801,17 +596,17 @@ int run_verify(const VerifyOptions& o, const verify::TypedDiscreteLagrangian& dl
   }
   if (run("reversibility", [&] {
         where.start("reversibility test", p.h);
-        const auto rev = verify::reversibility_by_scaling(step, states, p.h);
+        const auto rev = reversibility_by_scaling(step, states, p.h);
         jrev = rev.to_json();
         jrev["system_reversible"] = system_reversible;
-        jrev["required"] = o.symmetric && system_reversible;
+        jrev["required"] = p.symmetric && system_reversible;
         line("time-reversible",
              fmt::format("defect |rho Phi_h rho Phi_h(z) - z| / max(1, |z|): {}: {}{}", rev.shown(),
                          rev.passed ? "yes" : "NO",
                          !system_reversible
                              ? " (the intended system is not reversible under (q, p) -> (q, -p): "
                                "not judged)"
-                         : o.symmetric ? ""
+                         : p.symmetric ? ""
                                        : " (reported only; --symmetric makes it part of the "
                                          "verdict)"));
         line("", rev.why);
@@ -824,71 +619,40 @@ int run_verify(const VerifyOptions& o, const verify::TypedDiscreteLagrangian& dl
   // --- 5. energy of the intended system -------------------------------------------------------
   // H(q, p): typed, ½|p|² + V for the default system, else the Legendre transform of L (v
   // from dL/dv = p by Newton in double).
-  std::function<double(const Eigen::VectorXd&)> energy;
-  std::string energy_name;
-  if (dl.has_hamiltonian()) {
-    energy_name = "H as typed";
-    energy = [&](const Eigen::VectorXd& z) {
-      return dl.hamiltonian<N, double>(Vec<double, N>(z.head<N>()), Vec<double, N>(z.tail<N>()));
-    };
-  } else if (dl.default_system()) {
-    energy_name = "H = |p|^2/2 + V(q)";
-    energy = [&](const Eigen::VectorXd& z) {
-      return 0.5 * z.tail<N>().squaredNorm() + dl.potential<N, double>(Vec<double, N>(z.head<N>()));
-    };
-  } else {
-    energy_name = "H = p.v - L(q, v), the Legendre transform of L";
-    energy = [&](const Eigen::VectorXd& z) {
-      const Vec<double, N> q = z.head<N>(), pk = z.tail<N>();
-      Vec<double, N> v = pk;
-      for (int it = 0; it < 50; ++it) {
-        double value;
-        Vec<double, N> g;
-        Mat<double, N> H;
-        verify::value_gradient_hessian<N, double>(
-            [&](const auto& w) {
-              using S = scalar_t<decltype(w)>;
-              return dl.lagrangian<N, S>(q.template cast<S>(), w);
-            },
-            v, value, g, H);
-        const Vec<double, N> dv = H.partialPivLu().solve(Vec<double, N>(g - pk));
-        v -= dv;
-        if (dv.template lpNorm<Eigen::Infinity>() <=
-            1e-15 * std::max(1.0, v.template lpNorm<Eigen::Infinity>()))
-          return pk.dot(v) - dl.lagrangian<N, double>(q, v);
-        if (!dv.allFinite()) break;
-      }
-      throw NumericalError("energy: the Legendre map dL/dv(q, v) = p has no solution at q = " +
-                           vec_text(q) + ", p = " + vec_text(pk));
-    };
-  }
-  verify::EnergyBehaviour en;
-  verify::EnergyVerdict ev;
+  const std::string energy_name = dl.has_hamiltonian()  ? "H as typed"
+                                  : dl.default_system() ? "H = |p|^2/2 + V(q)"
+                                                        : "H = p.v - L(q, v), the Legendre "
+                                                          "transform of L";
+  const std::function<double(const Eigen::VectorXd&)> energy = [&](const Eigen::VectorXd& z) {
+    return K.energy(z);
+  };
+  EnergyBehaviour en;
+  EnergyVerdict ev;
   json jen;
   // The energy scale the errors are relative to: |H0|, or the kinetic energy where H0 ≈ 0.
   auto energy_scale = [&] {
-    return std::max({std::abs(energy(z0)), 0.5 * z0.tail(N).squaredNorm(), 1e-300});
+    return std::max({std::abs(energy(z0)), 0.5 * z0.tail(n).squaredNorm(), 1e-300});
   };
   if (run("energy", [&] {
         const double H0 = energy(z0);
         const double scale = energy_scale();
         where.start(fmt::format("energy run, h = {:g}", p.h), p.h);
-        vi.reset();
-        en = verify::energy_behaviour(stepper(true, true), energy, z0, p.h, p.steps);
+        K.reset();
+        en = energy_behaviour(stepper(true, true), energy, z0, p.h, p.steps);
         // the same span, shorter, at h and h/2: how the error scales with h
         const long long k1 = std::min<long long>(p.steps, 4096);
         where.start(fmt::format("energy scaling run, h = {:g}", p.h), p.h);
-        vi.reset();
-        const auto e1 = verify::energy_behaviour(stepper(true, false), energy, z0, p.h, k1);
+        K.reset();
+        const auto e1 = energy_behaviour(stepper(true, false), energy, z0, p.h, k1);
         where.start(fmt::format("energy scaling run, h = {:g}", p.h / 2), p.h / 2);
-        vi.reset();
-        const auto e2 = verify::energy_behaviour(stepper(true, false), energy, z0, p.h / 2, 2 * k1);
+        K.reset();
+        const auto e2 = energy_behaviour(stepper(true, false), energy, z0, p.h / 2, 2 * k1);
         // the error's scaling with h from the short pair, applied to the long run's maximum
         const double h_exp = e1.max_error > 0 && e2.max_error > 0
                                  ? std::log2(e1.max_error / e2.max_error)
                                  : std::numeric_limits<double>::quiet_NaN();
-        ev = verify::judge_energy(en, scale, p.expected,
-                                  std::isfinite(h_exp) ? en.max_error / std::exp2(h_exp) : -1);
+        ev = judge_energy(en, scale, p.expected,
+                          std::isfinite(h_exp) ? en.max_error / std::exp2(h_exp) : -1);
         jen = {{"energy", energy_name},
                {"steps", en.steps},
                {"h", en.h},
@@ -928,22 +692,22 @@ int run_verify(const VerifyOptions& o, const verify::TypedDiscreteLagrangian& dl
   // as the fixed-step run; a state where (16) has no admissible root ends the run, and the
   // scan there says whether it is a fold (a property of the method) or a missed root.
   json jada;
-  verify::AdaptiveStudy ada;
-  verify::EnergyVerdict ada_ev;
+  AdaptiveStudy ada;
+  EnergyVerdict ada_ev;
   if (p.adaptive_epavi && !have_ref) {
     phases.push_back(
-        {"adaptive", "skipped", "no reference solution to take the first step from", kOk, 0});
+        {"adaptive", "skipped", "no reference solution to take the first step from", kLdOk, 0});
     line("adaptive (EpAVI)", "not run: no reference solution to take the first step from");
   } else if (p.adaptive_epavi && !run("adaptive", [&] {
                const double scale = energy_scale();
-               ada = verify::epavi_study<N>(Ld, energy, z0, q_start[0], p.h, p.adaptive_steps);
+               ada = K.epavi(z0, q_start[0], p.h, p.adaptive_steps);
                // how the error scales with the first step: h and h/2, over about the same span
                const long long k1 = std::min<long long>(p.adaptive_steps, 1024);
-               const auto a1 = verify::epavi_study<N>(Ld, energy, z0, q_start[0], p.h, k1);
-               const auto a2 = verify::epavi_study<N>(Ld, energy, z0, q_start[1], p.h / 2, 2 * k1);
+               const auto a1 = K.epavi(z0, q_start[0], p.h, k1);
+               const auto a2 = K.epavi(z0, q_start[1], p.h / 2, 2 * k1);
                const double half =
                    a1.failure.happened || a2.failure.happened ? -1 : a2.energy.max_error;
-               ada_ev = verify::judge_energy(
+               ada_ev = judge_energy(
                    ada.energy, scale, p.expected,
                    half > 0 ? ada.energy.max_error * half / std::max(a1.energy.max_error, 1e-300)
                             : -1);
@@ -1017,30 +781,14 @@ int run_verify(const VerifyOptions& o, const verify::TypedDiscreteLagrangian& dl
   if (p.adaptive_epavi) js["adaptive"] = jada;
 
   // --- 6. work-precision beside two classical methods (report only) ---------------------------
-  verify::WorkPrecision wp;
+  WorkPrecision wp;
   bool have_wp = false;
-  if (o.report_given && have_ref && !dl.has_hamiltonian()) {
+  if (p.work_precision && have_ref && !dl.has_hamiltonian()) {
     have_wp = run("work-precision", [&] {
-      auto L = [&](const auto& q, const auto& v) -> scalar_t<decltype(q)> {
-        using S = scalar_t<decltype(q)>;
-        return dl.lagrangian<N, S>(Vec<S, N>(q), Vec<S, N>(v));
-      };
-      auto sv_dl = stormer_verlet_dl(L);
-      auto mid_dl = midpoint_dl(L);
-      DelIntegrator<N, decltype(sv_dl)> sv(sv_dl);
-      DelIntegrator<N, decltype(mid_dl)> mid(mid_dl);
-      const verify::Step sv_step = [&](Eigen::VectorXd& z, double h) {
-        sv.reset();
-        verify::step_qp<N>(sv, z, h);
-      };
-      const verify::Step mid_step = [&](Eigen::VectorXd& z, double h) {
-        mid.reset();
-        verify::step_qp<N>(mid, z, h);
-      };
+      std::vector<NamedStep> methods{{"typed", step}};
+      for (auto& m : K.classical_steppers()) methods.push_back(std::move(m));
       where.start("work-precision runs", p.hs[0]);
-      wp = verify::work_precision(
-          {{"typed", step}, {"stormer_verlet", sv_step}, {"midpoint", mid_step}}, z0, p.t_end, zref,
-          p.hs);
+      wp = work_precision(methods, z0, p.t_end, zref, p.hs);
     });
     if (!have_wp) failed_line("work-precision");
   }
@@ -1049,24 +797,22 @@ int run_verify(const VerifyOptions& o, const verify::TypedDiscreteLagrangian& dl
   std::vector<std::vector<std::string>> terms;
   std::vector<std::string> lagrangian, hamiltonian;
   std::string lagrangian_error, hamiltonian_error;
-  if (N > 3) {
+  if (n > 3) {
     phases.push_back(
-        {"modified", "skipped", "the symbolic engine is run for at most 3 dimensions", kOk, 0});
+        {"modified", "skipped", "the symbolic engine is run for at most 3 dimensions", kLdOk, 0});
     line("modified equation", "not derived: the symbolic engine is run for at most 3 dimensions");
   } else if (unscaled) {
     const std::string why = "L_d is not of the size h·L (see consistency): no modified equation";
-    phases.push_back({"modified", "skipped", why, kOk, 0});
+    phases.push_back({"modified", "skipped", why, kLdOk, 0});
     line("modified equation", "not derived: " + why);
   } else if (run("modified", [&] {
                std::lock_guard<std::mutex> lock(modified::ginac_mutex());
-               auto jets = std::make_shared<modified::JetSpace>(N);
-               modified::Engine engine(
-                   modified::symbolic_dl<N>(Ld, jets, "typed discrete Lagrangian"),
-                   p.modified_order);
+               auto jets = std::make_shared<modified::JetSpace>(n);
+               modified::Engine engine(K.symbolic(jets), p.modified_order);
                const auto& f = engine.modified_equation();
                for (std::size_t k = 0; k < f.size(); ++k) {
                  terms.emplace_back();
-                 for (int i = 0; i < N; ++i)
+                 for (int i = 0; i < n; ++i)
                    terms.back().push_back(modified::canonical_string(f[k][i], p.format));
                }
                try {
@@ -1088,7 +834,7 @@ int run_verify(const VerifyOptions& o, const verify::TypedDiscreteLagrangian& dl
              })) {
     out << "modified equation    x'' = sum_k h^k f_k:\n";
     for (std::size_t k = 0; k < terms.size(); ++k)
-      for (int i = 0; i < N; ++i) out << fmt::format("  f_{}[{}] = {}\n", k, i + 1, terms[k][i]);
+      for (int i = 0; i < n; ++i) out << fmt::format("  f_{}[{}] = {}\n", k, i + 1, terms[k][i]);
     out << "modified Lagrangian  L_mod = sum_k h^k L_k:\n";
     if (!lagrangian_error.empty()) out << "  not derived: " << lagrangian_error << '\n';
     for (std::size_t k = 0; k < lagrangian.size(); ++k)
@@ -1111,9 +857,13 @@ int run_verify(const VerifyOptions& o, const verify::TypedDiscreteLagrangian& dl
   // The exit status: a bad argument found late (2), an output not written (4), a numerical
   // failure (3), then the verdicts (5, below), then any other failure (1).
   auto rank = [](int e) {
-    return e == kBadArgument ? 5 : e == kIo ? 4 : e == kNumerical ? 3 : e == kFailure ? 1 : 0;
+    return e == kLdBadArgument ? 5
+           : e == kLdIo        ? 4
+           : e == kLdNumerical ? 3
+           : e == kLdFailure   ? 1
+                               : 0;
   };
-  int rc = kOk;
+  int rc = kLdOk;
   for (const auto& ph : phases) {
     json e = {{"phase", ph.name}, {"status", ph.status}};
     if (!ph.reason.empty()) e["reason"] = ph.reason;
@@ -1126,8 +876,8 @@ int run_verify(const VerifyOptions& o, const verify::TypedDiscreteLagrangian& dl
   // the method is declared symmetric and the intended system is reversible).
   std::vector<std::pair<std::string, const json*>> required = {
       {"consistency", &jcons}, {"order", &jorder}, {"symplecticity", &jsym}, {"energy", &jen}};
-  if (o.symmetric) required.emplace_back("symmetry", &jsymm);
-  if (o.symmetric && system_reversible) required.emplace_back("reversibility", &jrev);
+  if (p.symmetric) required.emplace_back("symmetry", &jsymm);
+  if (p.symmetric && system_reversible) required.emplace_back("reversibility", &jrev);
   // The variational order, when the engine derived it and the expected order is an integer.
   if (jvar.contains("passed")) required.emplace_back("variational order", &jvar);
   if (p.adaptive_epavi) required.emplace_back("adaptive", &jada);
@@ -1143,252 +893,50 @@ int run_verify(const VerifyOptions& o, const verify::TypedDiscreteLagrangian& dl
                    fmt::join(failed_checks.empty() ? required_names : failed_checks, ", ")));
   // A failed verdict outranks a symbolic part that failed (status 1); a numerical failure (3)
   // outranks both, since a verdict after it was not measured.
-  if ((rc == kOk || rc == kFailure) && !failed_checks.empty()) rc = kVerdict;
-  if (o.timings) {
+  if ((rc == kLdOk || rc == kLdFailure) && !failed_checks.empty()) rc = kLdVerdict;
+  if (p.timings) {
     out << "timings             ";
     for (const auto& ph : phases) out << fmt::format(" {} {:.2f} s;", ph.name, ph.seconds);
     out << '\n';
   }
-  std::cout << out.str();
-  std::cout.flush();
-  // One line on stderr when it did not pass: the first part that failed, or the verdicts.
+  // One line for stderr when it did not pass: the first part that failed, or the verdicts.
   for (const auto& ph : phases)
     if (ph.status == "failed" && ph.exit == rc) {
       std::string reason = ph.reason;
       std::replace(reason.begin(), reason.end(), '\n', ' ');
-      eprint(fmt::format("vibook: error: verify: {}: {}\n", ph.name, reason));
+      study.error_line = fmt::format("vibook: error: verify: {}: {}\n", ph.name, reason);
       break;
     }
-  if (rc == kVerdict)
-    eprint(fmt::format("vibook: verify: FAIL ({}); the report above says why\n",
-                       fmt::join(failed_checks, ", ")));
-  if (o.json_given) write_output_file(o.json_out, js.dump(2) + "\n", "--json-out");
-  if (!o.report_given) return rc;
-
-  // The report: a directory filled beside its final name and renamed onto it at the end.
-  namespace fs = std::filesystem;
-  const fs::path final_dir = report_path(o.report);
-  const fs::path tmp = temporary_directory_for(final_dir);
-  bool rendered = false;
-  std::string render_error;
-  try {
-    write_output_file((tmp / "verify.json").string(), js.dump(2) + "\n", "--report");
-    std::ostringstream conv;
-    if (have_wp) {
-      conv << "h,steps,typed,stormer_verlet,midpoint\n";
-      for (std::size_t i = 0; i < p.hs.size(); ++i)
-        conv << fmt::format("{:.17g},{:.0f},{:.17g},{:.17g},{:.17g}\n", wp.h[i], wp.steps[i],
-                            wp.error[0][i], wp.error[1][i], wp.error[2][i]);
-    } else {
-      conv << "h,steps,typed\n";
-      for (std::size_t i = 0; i < order_err.size(); ++i)
-        conv << fmt::format("{:.17g},{:.0f},{:.17g}\n", p.hs[i],
-                            std::ceil(p.t_end / p.hs[i] - 1e-9), order_err[i]);
-    }
-    write_output_file((tmp / "convergence.csv").string(), conv.str(), "--report");
-    std::ostringstream env;
-    env << "steps,envelope\n";
-    for (std::size_t i = 0; i < en.envelope.size(); ++i)
-      env << fmt::format("{:.17g},{:.17g}\n", en.envelope_steps[i], en.envelope[i]);
-    write_output_file((tmp / "energy.csv").string(), env.str(), "--report");
-    if (!order_err.empty() && !en.envelope.empty()) {
-      try {
-        plot::render("verify-report", tmp);
-        rendered = true;
-        fs::remove(tmp / "gnuplot.log");
-      } catch (const plot::PlotError& e) {
-        render_error = e.what();
-      }
-    } else {
-      render_error = "the order study or the energy run did not complete";
-    }
-    std::ostringstream html;
-    const auto row = [&](const char* what, const std::string& measured,
-                         const std::string& criterion, const std::string& holds, bool passed) {
-      html << "<tr class=\"status-" << (passed ? "reproduced" : "not-reproduced") << "\"><td>"
-           << what << "</td><td>" << html_escape(measured) << "</td><td>" << html_escape(criterion)
-           << "</td><td class=\"holds\">" << html_escape(holds) << "</td></tr>\n";
-    };
-    auto phase_of = [&](const std::string& name) -> const Phase* {
-      for (const auto& ph : phases)
-        if (ph.name == name) return &ph;
-      return nullptr;
-    };
-    // The book's own stylesheet (book/vibook.css, compiled in), so that the report's table
-    // reads like the reproduction report: same borders, same status colours.
-    write_output_file((tmp / "vibook.css").string(), std::string(kBookStylesheet), "--report");
-    html << "<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\">"
-            "<meta name=\"viewport\" content=\"width=device-width, initial-scale=1\">"
-            "<title>vibook verify</title>\n<link rel=\"stylesheet\" href=\"vibook.css\">\n"
-            "<script type=\"text/x-mathjax-config\">MathJax.Hub.Config({tex2jax: {inlineMath: "
-            "[['\\\\(','\\\\)']]}});</script>\n"
-            "<script src=\"file:///usr/share/javascript/mathjax/MathJax.js?config=TeX-AMS_SVG\">"
-            "</script>\n"
-            "<style>\nbody{font-family:Roboto,'DejaVu Sans',sans-serif;max-width:1100px;"
-            "margin:2em auto;padding:0 1em;color:#222;line-height:1.45}\n"
-            "code,pre{font-family:'DejaVu Sans Mono',monospace;background:#fbfcfd}\n"
-            "pre{padding:.6em;overflow-x:auto;border:1px solid #c4cfe5}\n"
-            "h1,h2{color:#354c7b}\n</style></head><body>\n"
-         << "<h1>vibook verify</h1>\n<p>vibook " << VIBOOK_VERSION << ". Command line:</p>\n<pre>"
-         << html_escape(command_line()) << "</pre>\n<p>Discrete Lagrangian <code>"
-         << html_escape(o.ld) << "</code>; intended system <code>"
-         << html_escape(dl.has_hamiltonian()  ? "H = " + o.hamiltonian
-                        : dl.default_system() ? std::string("L = |v|^2/2 - V(q)")
-                                              : "L = " + o.lagrangian)
-         << "</code>; potential <code>" << html_escape(o.potential.empty() ? "(none)" : o.potential)
-         << "</code>; " << N << "-dimensional; initial state q0 = ("
-         << html_escape(fmt::format("{}", fmt::join(p.q0, ", "))) << "), p0 = ("
-         << html_escape(fmt::format("{}", fmt::join(p.p0, ", "))) << ").</p>\n"
-         << "<table class=\"vibook-claims\"><tr><th>property</th><th>measured</th>"
-            "<th>criterion</th><th>verdict</th></tr>\n";
-    auto failed_row = [&](const char* what, const std::string& name) {
-      const Phase* ph = phase_of(name);
-      if (ph && ph->status != "ok")
-        row(what, ph->status + (ph->reason.empty() ? "" : ": " + ph->reason), "—", ph->status,
-            false);
-      return ph && ph->status == "ok";
-    };
-    if (failed_row("consistency", "consistency"))
-      row("consistency", "h⁻¹L_d → " + jcons.value("leading_term", std::string()) + " as h → 0",
-          "the intended system", consistent ? "yes" : "no: " + jcons.value("reason", std::string()),
-          consistent);
-    if (failed_row("reference", "reference"))
-      row("reference",
-          fmt::format("{} macro-steps, estimated error {:.1e}",
-                      static_cast<long>(jref["macro_steps"]), ref_error),
-          "independent of the method", "—", true);
-    if (phase_of("order") && phase_of("order")->status == "skipped")
-      row("order", "not measured", "—", "skipped: no reference", false);
-    else if (failed_row("order", "order")) {
-      std::vector<std::string> used;
-      for (std::size_t i = 0; i < fit.used.size(); ++i)
-        if (fit.used[i]) used.push_back(fmt::format("{:g}", p.hs[i]));
-      row("order",
-          fmt::format("{:.3f} over h = {} at T = {:g} (floor {:.1e}, {} plateau points left out)",
-                      fit.slope, fmt::join(used, ", "), p.t_end, fit.floor, fit.plateau),
-          fmt::format("|p − {:g}| < {:g}", p.expected, p.order_tol), order_passed ? "yes" : "no",
-          order_passed);
-    }
-    if (phase_of("variational order") && phase_of("variational order")->status == "skipped")
-      row("variational order", "not derived", "—",
-          "skipped: " + phase_of("variational order")->reason, false);
-    else if (failed_row("variational order", "variational order")) {
-      const bool judged = jvar.contains("passed");
-      row("variational order",
-          jvar["order"].is_null()
-              ? "more than " + std::to_string(var_k) + " (L_d − L_d^E vanishes through " +
-                    jvar.value("checked_to", std::string()) + ")"
-              : fmt::format("{}: L_d − L_d^E = O(h^{})", int(jvar["order"]),
-                            int(jvar["order"]) + 1),
-          judged ? fmt::format("r = {:g}, from the engine", p.expected) : "not judged",
-          judged ? (jvar["passed"] ? "yes" : "no") : "—", !judged || bool(jvar["passed"]));
-    }
-    const std::string by_scaling =
-        "NO when resolved (> 10 × resolution) and growing at least like h^(1/2)";
-    if (failed_row("symplecticity", "symplecticity"))
-      row("symplecticity",
-          fmt::format("|JᵀΩJ − Ω| at h, 2h, 4h, 8h (h = {:g}): {}", p.h,
-                      jsym.value("why", std::string())),
-          by_scaling, jsym["passed"] ? "yes" : "no", bool(jsym["passed"]));
-    if (failed_row("symmetry", "symmetry"))
-      row("symmetry",
-          fmt::format("|Φ₋ₕΦₕ(z) − z| at h, 2h, 4h, 8h: {}", jsymm.value("why", std::string())),
-          by_scaling,
-          std::string(jsymm["passed"] ? "yes" : "no") + (o.symmetric ? "" : " (reported)"),
-          !o.symmetric || bool(jsymm["passed"]));
-    if (failed_row("time reversibility", "reversibility"))
-      row("time reversibility",
-          fmt::format("|ρΦρΦ(z) − z| at h, 2h, 4h, 8h: {}", jrev.value("why", std::string())),
-          by_scaling,
-          std::string(jrev["passed"] ? "yes" : "no") +
-              (system_reversible ? "" : " (the system is not ρ-reversible)"),
-          bool(jrev["passed"]));
-    if (failed_row("energy", "energy")) {
-      row("energy", fmt::format("{} steps of h = {:g}: {}", en.steps, en.h, ev.why),
-          fmt::format("round-off: r ≤ {:.1e}; trend: exponent < 0.25; shrinking like h^(p−1/2)",
-                      ev.roundoff_bound),
-          ev.verdict, ev.passed);
-      row("Newton",
-          fmt::format("mean {:.2f}, max {} iterations per step, largest residual {:.1e}",
-                      newton.steps ? double(newton.iterations) / double(newton.steps) : 0.0,
-                      newton.max_iterations, newton.max_residual),
-          "—", "—", true);
-    }
-    if (p.adaptive_epavi && failed_row("adaptive (EpAVI)", "adaptive"))
-      row("adaptive (EpAVI)",
-          fmt::format("{} of {} steps from h0 = {:g}, t reached {:.6g}, steps in [{:.3g}, "
-                      "{:.3g}]; {}{}",
-                      ada.steps_taken, p.adaptive_steps, p.h, ada.t_reached, ada.dt_min, ada.dt_max,
-                      ada.failure.happened
-                          ? fmt::format("no admissible step at t = {:.6g} (a fold: no sign "
-                                        "change of (16) over dt in [{:.3g}, {:.3g}]); ",
-                                        ada.failure.t, ada.failure.scan_lo, ada.failure.scan_hi)
-                          : std::string(),
-                      ada_ev.why),
-          "every step exists; the intended energy as in the energy row",
-          ada.failure.happened ? std::string("no admissible step") : ada_ev.verdict,
-          bool(jada.value("passed", false)));
-    html << "</table>\n";
-    if (o.timings) {
-      html << "<p>Timings (this machine; with --timings only, so that reports compare equal "
-              "otherwise):";
-      for (const auto& ph : phases) html << fmt::format(" {} {:.2f} s;", ph.name, ph.seconds);
-      html << "</p>\n";
-    }
-    if (rendered)
-      html << "<p><a href=\"verify-report.png\"><img src=\"verify-report.svg\" alt=\"error at T "
-              "against steps; energy error envelope\"></a></p>\n<p>Left: error at T = "
-           << fmt::format("{:g}", p.t_end)
-           << " against the number of steps, every method against the independent reference "
-              "(data: <a href=\"convergence.csv\">convergence.csv</a>). Right: the envelope "
-              "max<sub>k≤K</sub>|H<sub>k</sub> − H<sub>0</sub>| (data: <a "
-              "href=\"energy.csv\">energy.csv</a>).</p>\n";
-    else
-      html << "<p>No figure: " << html_escape(render_error)
-           << " (data: <a href=\"convergence.csv\">convergence.csv</a>, <a "
-              "href=\"energy.csv\">energy.csv</a>).</p>\n";
-    // Formulas as LaTeX (MathJax, from the Debian package, when installed; else the source).
-    auto formulas = [&](const char* title, const std::vector<std::string>& xs,
-                        const std::string& error, auto label) {
-      html << "<h2>" << title << "</h2>\n";
-      if (!error.empty()) html << "<p>Not derived: " << html_escape(error) << "</p>\n";
-      html << "<ul>\n";
-      for (std::size_t k = 0; k < xs.size(); ++k)
-        html << "<li>" << html_escape(label(k)) << ": "
-             << (p.format == modified::Format::latex ? "\\(" + html_escape(xs[k]) + "\\)"
-                                                     : "<code>" + html_escape(xs[k]) + "</code>")
-             << "</li>\n";
-      html << "</ul>\n";
-    };
-    std::vector<std::string> flat;
-    std::vector<std::string> flat_labels;
-    for (std::size_t k = 0; k < terms.size(); ++k)
-      for (int i = 0; i < N; ++i) {
-        flat.push_back(terms[k][static_cast<std::size_t>(i)]);
-        flat_labels.push_back(fmt::format("h^{} term of x{}''", k, i + 1));
-      }
-    formulas("Modified equation", flat,
-             phase_of("modified") && phase_of("modified")->status != "ok"
-                 ? phase_of("modified")->reason
-                 : std::string(),
-             [&](std::size_t k) { return flat_labels[k]; });
-    formulas("Modified Lagrangian", lagrangian, lagrangian_error,
-             [](std::size_t k) { return fmt::format("h^{} term", k); });
-    formulas("Modified Hamiltonian", hamiltonian, hamiltonian_error,
-             [](std::size_t k) { return fmt::format("h^{} term", k); });
-    html << "<p>Every number: <a href=\"verify.json\">verify.json</a>.</p>\n</body></html>\n";
-    write_output_file((tmp / "index.html").string(), html.str(), "--report");
-    commit_directory(tmp, final_dir);
-  } catch (...) {
-    discard_temporary_directory(tmp);
-    throw;
-  }
-  std::cout << "report: " << (final_dir / "index.html").string() << '\n';
-  if (!rendered && rc == kOk) {
-    eprint(fmt::format("vibook: --report: figure not drawn: {}\n", render_error));
-    return kFailure;
-  }
-  return rc;
+  if (rc == kLdVerdict)
+    study.error_line = fmt::format("vibook: verify: FAIL ({}); the report above says why\n",
+                                   fmt::join(failed_checks, ", "));
+  study.text = out.str();
+  study.status = rc;
+  study.failed_checks = failed_checks;
+  study.js = std::move(js);
+  study.order_error = order_err;
+  study.fit = fit;
+  study.order_passed = order_passed;
+  study.ref_error = ref_error;
+  study.consistent = consistent;
+  study.system_reversible = system_reversible;
+  study.var_k = var_k;
+  study.energy = en;
+  study.energy_verdict = ev;
+  study.adaptive = ada;
+  study.adaptive_verdict = ada_ev;
+  study.newton_steps = newton.steps;
+  study.newton_iterations = newton.iterations;
+  study.newton_max_iterations = newton.max_iterations;
+  study.newton_max_residual = newton.max_residual;
+  study.have_work_precision = have_wp;
+  study.wp = wp;
+  study.modified_terms = terms;
+  study.modified_lagrangian = lagrangian;
+  study.modified_hamiltonian = hamiltonian;
+  study.lagrangian_error = lagrangian_error;
+  study.hamiltonian_error = hamiltonian_error;
+  return study;
 }
 
-}  // namespace vibook::cli
+}  // namespace vibook::verify
