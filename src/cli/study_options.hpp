@@ -8,9 +8,10 @@
 namespace vibook::cli {
 
 struct StudyOptions {
-  std::string problem, q0, p0, t_end, h_list, expected, order_tol, h, steps, floor, json_out;
-  bool json_given = false, t_end_given = false, h_list_given = false, expected_given = false,
-       order_tol_given = false;
+  std::string problem, q0, p0, t_end, h_list, expected, order_tol, h, steps, floor, json_out,
+      report;
+  bool json_given = false, report_given = false, t_end_given = false, h_list_given = false,
+       expected_given = false, order_tol_given = false;
   bool symmetric = false;  ///< --symmetric: symmetry (and reversibility) join the verdict
 };
 

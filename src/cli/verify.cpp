@@ -63,6 +63,23 @@ void check_report_dir(const std::string& dir) {
                                         "' is not a writable directory");
 }
 
+// --report DIR on every route, before any work: a new directory (or an earlier report) in a
+// writable one, and not the place of --json-out.
+void check_report(const VerifyOptions& o) {
+  if (o.report_given) check_report_dir(o.report);
+  if (o.json_given && o.report_given) {
+    // The JSON file may not be the report directory, nor lie inside it (the report replaces
+    // its own entries).
+    const auto j = std::filesystem::absolute(o.json_out).lexically_normal();
+    const auto r = std::filesystem::absolute(report_path(o.report)).lexically_normal();
+    const auto rel = j.lexically_relative(r);
+    if (j == r || (!rel.empty() && *rel.begin() != ".."))
+      throw ArgumentError("--json-out", "'" + o.json_out +
+                                            "' is the --report directory or in it; "
+                                            "the report holds verify.json already");
+  }
+}
+
 // Every argument checked before any work (exit 2 naming it).
 verify::LdSettings check(const VerifyOptions& o, const verify::TypedDiscreteLagrangian& dl) {
   verify::LdSettings p;
@@ -116,18 +133,7 @@ verify::LdSettings check(const VerifyOptions& o, const verify::TypedDiscreteLagr
   if (p.format == modified::Format::python)
     throw ArgumentError("--format", "verify prints text or latex");
   if (o.json_given) check_output_path(o.json_out, "--json-out", true);
-  if (o.report_given) check_report_dir(o.report);
-  if (o.json_given && o.report_given) {
-    // The JSON file may not be the report directory, nor lie inside it (the report replaces
-    // its own entries).
-    const auto j = std::filesystem::absolute(o.json_out).lexically_normal();
-    const auto r = std::filesystem::absolute(report_path(o.report)).lexically_normal();
-    const auto rel = j.lexically_relative(r);
-    if (j == r || (!rel.empty() && *rel.begin() != ".."))
-      throw ArgumentError("--json-out", "'" + o.json_out +
-                                            "' is the --report directory or in it; "
-                                            "the report holds verify.json already");
-  }
+  check_report(o);
   p.symmetric = o.symmetric;
   p.work_precision = o.report_given;
   p.reference_evaluation = o.reference;
@@ -173,6 +179,9 @@ void set_study_options(StudyOptions& s, const VerifyOptions& o, const CLI::App& 
   s.floor = o.floor;
   s.json_out = o.json_out;
   s.json_given = o.json_given;
+  s.report = o.report;
+  s.report_given = o.report_given;
+  check_report(o);
   s.t_end_given = c.count("--t-end") > 0;
   s.h_list_given = c.count("--h-list") > 0;
   s.expected_given = c.count("--expected-order") > 0;
@@ -212,9 +221,9 @@ int run(const VerifyOptions& o, const CLI::App& c) {
     throw ArgumentError("--tableau", "does not apply to --method: give one method");
   if (c.count("--tableau") > 0) {
     // A partitioned Runge-Kutta method from its tableau (verify_tableau.cpp).
-    for (const char* opt : {"--ld", "--modified-order", "--format", "--report", "--reference",
-                            "--composition", "--coefficients", "--stepper-lib", "--stepper-cmd",
-                            "--stepper-arg", "--stepper-timeout", "--adaptive", "--adaptive-steps"})
+    for (const char* opt : {"--ld", "--modified-order", "--format", "--reference", "--composition",
+                            "--coefficients", "--stepper-lib", "--stepper-cmd", "--stepper-arg",
+                            "--stepper-timeout", "--adaptive", "--adaptive-steps"})
       if (c.count(opt) > 0)
         throw ArgumentError(opt, "does not apply to --tableau (see vibook verify --help)");
     if (c.count("--lagrangian") > 0)
@@ -235,9 +244,9 @@ int run(const VerifyOptions& o, const CLI::App& c) {
   if (c.count("--method") > 0) {
     // A Galerkin variational integrator from the catalogue (verify_method.cpp), on a test
     // problem or on the --potential typed.
-    for (const char* opt : {"--ld", "--modified-order", "--format", "--report", "--reference",
-                            "--composition", "--coefficients", "--stepper-lib", "--stepper-cmd",
-                            "--stepper-arg", "--stepper-timeout", "--adaptive", "--adaptive-steps"})
+    for (const char* opt : {"--ld", "--modified-order", "--format", "--reference", "--composition",
+                            "--coefficients", "--stepper-lib", "--stepper-cmd", "--stepper-arg",
+                            "--stepper-timeout", "--adaptive", "--adaptive-steps"})
       if (c.count(opt) > 0)
         throw ArgumentError(opt, "does not apply to --method (see vibook verify --help)");
     if (c.count("--hamiltonian") > 0)
@@ -260,7 +269,7 @@ int run(const VerifyOptions& o, const CLI::App& c) {
     // Another program's stepper as a black box (verify_stepper.cpp).
     for (const char* opt :
          {"--ld", "--lagrangian", "--composition", "--coefficients", "--modified-order", "--format",
-          "--report", "--reference", "--tableau", "--adaptive", "--adaptive-steps"})
+          "--reference", "--tableau", "--adaptive", "--adaptive-steps"})
       if (c.count(opt) > 0)
         throw ArgumentError(opt,
                             "does not apply to a black-box stepper (see vibook verify --help)");
@@ -284,8 +293,8 @@ int run(const VerifyOptions& o, const CLI::App& c) {
   if (c.count("--composition") > 0) {
     // A composition method (verify_composition.cpp); with base ld, of the --ld typed
     // (verify_composition_ld.cpp), on the system of --potential or --hamiltonian.
-    for (const char* opt : {"--modified-order", "--format", "--report", "--reference", "--adaptive",
-                            "--adaptive-steps"})
+    for (const char* opt :
+         {"--modified-order", "--format", "--reference", "--adaptive", "--adaptive-steps"})
       if (c.count(opt) > 0)
         throw ArgumentError(opt, "does not apply to --composition (see vibook verify --help)");
     if (o.composition != "ld")
@@ -426,9 +435,9 @@ std::function<int()> add_verify_command(CLI::App& app) {
   c->add_option("--format", o->format, "modified equation as text (default) or latex");
   c->add_option("--json-out", o->json_out, "also write every measurement as JSON to this file");
   c->add_option("--report", o->report,
-                "with --ld only (the other routes have --json-out): also write an HTML report "
-                "into this new directory (figures, CSV, JSON; work-precision beside "
-                "Störmer-Verlet and the implicit midpoint rule)");
+                "also write an HTML report into this new directory, on every route: the "
+                "verdicts' table, the report, CSV and JSON (with --ld also figures and "
+                "work-precision beside Störmer-Verlet and the implicit midpoint rule)");
   c->add_flag("--symmetric", o->symmetric,
               "the method is meant to be symmetric (its own adjoint), on every route: its "
               "symmetry becomes part of the verdict, and its time-reversibility too where the "

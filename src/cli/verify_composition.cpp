@@ -117,7 +117,7 @@ int run_composition(const CompositionOptions& o) {
   verify::derive_composition_variational_order(p.spec, p.problem->name, p.symbolic, p.study);
   MapReport rep;
   verify::measure_composition(p.spec, *p.problem, p.q0, p.p0, p.study, rep);
-  return rep.finish(o.json_given, o.json_out);
+  return rep.finish(o);
 }
 
 }  // namespace vibook::cli

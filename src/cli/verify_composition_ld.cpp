@@ -168,7 +168,7 @@ int run_n(const CompositionOptions& o, const verify::TypedDiscreteLagrangian& dl
                       {"symmetry", sym.how},
                       {"q0", q0},
                       {"p0", p0}};
-  return rep.finish(o.json_given, o.json_out);
+  return rep.finish(o);
 }
 
 }  // namespace

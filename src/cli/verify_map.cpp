@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <filesystem>
 #include <iostream>
 #include <mutex>
 #include <optional>
@@ -11,8 +12,10 @@
 #include <fmt/format.h>
 #include <fmt/ranges.h>
 
+#include "verify_typed.hpp"
 #include "vibook/core/output_file.hpp"
 #include "vibook/modified/engine.hpp"
+#include "vibook/verify/report_page.hpp"
 
 namespace vibook::cli {
 
@@ -269,7 +272,7 @@ void MapReport::variational_order_not_derived(const std::string& reason) {
   js["variational_order"] = {{"derived", false}, {"reason", reason}};
 }
 
-int MapReport::finish(bool json_given, const std::string& json_out) {
+int MapReport::finish(const StudyOptions& o) {
   js["verdict"] = {{"passed", failed.empty()}, {"failed", failed}, {"required", required}};
   line("verdict", fmt::format("{} ({})", failed.empty() ? "PASS" : "FAIL",
                               fmt::join(failed.empty() ? required : failed, ", ")));
@@ -280,7 +283,12 @@ int MapReport::finish(bool json_given, const std::string& json_out) {
     eprint(fmt::format("vibook: verify: FAIL ({}); the report above says why\n",
                        fmt::join(failed, ", ")));
   if (rc == kNumerical) eprint("vibook: error: verify: " + first_error + "\n");
-  if (json_given) write_output_file(json_out, js.dump(2) + "\n", "--json-out");
+  if (o.json_given) write_output_file(o.json_out, js.dump(2) + "\n", "--json-out");
+  if (o.report_given) {
+    const std::filesystem::path dir = report_path(o.report);
+    verify::write_map_report(*this, command_line(), dir);
+    std::cout << "report: " << (dir / "index.html").string() << '\n';
+  }
   return rc;
 }
 

@@ -51,8 +51,9 @@ struct MapReport : verify::MapMeasurement {
   /// the JSON says "derived": false. Nothing is judged on it.
   void variational_order_not_derived(const std::string& reason);
   /// The verdict line; the report to stdout, the one-line summary to stderr, the JSON to
-  /// `json_out` when given. Returns the exit status (0, 3 or 5; 4 from a failed write).
-  int finish(bool json_given, const std::string& json_out);
+  /// --json-out and the page to --report when given. Returns the exit status (0, 3 or 5; 4
+  /// from a failed write).
+  int finish(const StudyOptions& o);
 };
 
 /// The measurement options common to the routes, checked before any work (ArgumentError naming

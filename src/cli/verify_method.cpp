@@ -94,13 +94,13 @@ int run_method(const MethodOptions& o) {
   verify::derive_galerkin_variational_order(p.spec, n, L, p.symbolic, p.study);
   if (!p.sys) {
     verify::measure_method(p.spec, *p.problem, p.q0, p.p0, p.study, rep);
-    return rep.finish(o.json_given, o.json_out);
+    return rep.finish(o);
   }
   const std::string system = o.lagrangian_given
                                  ? set_typed_lagrangian(p.study, *p.sys, o.lagrangian, p.q0, p.p0)
                                  : set_typed_potential(p.study, *p.sys, o.potential, p.q0, p.p0);
   verify::measure_method_typed(p.spec, *p.sys, p.q0, p.p0, p.study, system, rep);
-  return rep.finish(o.json_given, o.json_out);
+  return rep.finish(o);
 }
 
 }  // namespace vibook::cli

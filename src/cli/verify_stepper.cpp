@@ -360,7 +360,7 @@ int run_n(const StepperOptions& o, const Plan& p) {
   rep.variational_order_not_derived(
       "a black-box stepper has no discrete Lagrangian to expand; its order is "
       "the measured one");
-  return rep.finish(o.json_given, o.json_out);
+  return rep.finish(o);
 }
 
 }  // namespace

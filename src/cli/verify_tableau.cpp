@@ -60,14 +60,14 @@ int run_tableau(const TableauOptions& o) {
   MapReport rep;
   if (!p.sys) {
     verify::measure_tableau(p.spec, *p.problem, p.q0, p.p0, p.study, o.symmetric, rep);
-    return rep.finish(o.json_given, o.json_out);
+    return rep.finish(o);
   }
   const std::string system = o.hamiltonian_given
                                  ? set_typed_hamiltonian(p.study, *p.sys, o.hamiltonian, p.q0, p.p0)
                                  : set_typed_potential(p.study, *p.sys, o.potential, p.q0, p.p0);
   verify::measure_tableau_typed(p.spec, *p.sys, p.q0, p.p0, p.study, system, o.symmetric,
                                 o.hamiltonian_given, rep);
-  return rep.finish(o.json_given, o.json_out);
+  return rep.finish(o);
 }
 
 }  // namespace vibook::cli

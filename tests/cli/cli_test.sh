@@ -257,6 +257,27 @@ diff -r "$tmp/rep1" "$tmp/rep2" >/dev/null && ok || bad "verify --report: two ru
 cmp -s "$tmp/rep1/vibook.css" "$SRC/book/vibook.css" && grep -q 'table class="vibook-claims"' "$tmp/rep1/index.html" &&
   ok || bad "verify --report: not in the book's stylesheet"
 [ -z "$(find "$tmp" -maxdepth 1 -name '.*rep*')" ] && ok || bad "verify --report left a temporary"
+# --report on every route (#49): the verdicts' table, the report as printed, the JSON the same
+# bytes as --json-out's; a failing method's page says FAIL and names the check.
+for route in "method --method gauss:2 --problem pendulum" \
+             "tableau --tableau $SRC/examples/tableaus/gauss2.json --problem pendulum" \
+             "composition --composition sv --coefficients yoshida4 --problem pendulum" \
+             "wrong --composition sv --coefficients 1,1 --problem pendulum"; do
+  name=${route%% *}
+  args=(${route#* })
+  "$V" verify "${args[@]}" --report "$tmp/page-$name" --json-out "$tmp/page-$name.json" \
+    >"$tmp/out" 2>"$tmp/err"
+  st=$?
+  want=0; [ "$name" = wrong ] && want=5
+  [ "$st" = "$want" ] && grep -q "^report: $tmp/page-$name/index.html" "$tmp/out" &&
+    cmp -s "$tmp/page-$name/verify.json" "$tmp/page-$name.json" &&
+    cmp -s "$tmp/page-$name/vibook.css" "$SRC/book/vibook.css" &&
+    grep -q 'table class="vibook-claims"' "$tmp/page-$name/index.html" &&
+    grep -q "verdict  *$([ $want = 0 ] && echo PASS || echo FAIL)" "$tmp/page-$name/index.html" &&
+    ok || bad "verify --report on --$name: status $st, $(head -c 300 "$tmp/err")"
+done
+grep -q "Verdict: <strong>FAIL</strong> (consistency" "$tmp/page-wrong/index.html" && ok ||
+  bad "verify --report: a failing composition's page does not say FAIL (consistency)"
 # Wrong and right discrete Lagrangians, verdict by verdict: verify_verdicts.sh.
 
 # --- figures and claims ---------------------------------------------------------------------

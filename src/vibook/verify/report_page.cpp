@@ -13,6 +13,7 @@
 #include "vibook/core/output_file.hpp"
 #include "vibook/plot/gnuplot.hpp"
 #include "vibook/verify/ld_study.hpp"
+#include "vibook/verify/report_page.hpp"
 #include "vibook_book_stylesheet.hpp"
 
 namespace vibook::verify {
@@ -294,6 +295,82 @@ std::string write_ld_report(const LdStudy& st, const LdSettings& p, const std::s
     throw;
   }
   return rendered ? std::string() : render_error;
+}
+
+}  // namespace vibook::verify
+
+namespace vibook::verify {
+
+// The page of a one-step-map route (--method, --tableau, --composition, a black box): the
+// verdicts' table from the same JSON as --json-out, the text report, the order study's data.
+void write_map_report(const MapMeasurement& m, const std::string& command_line,
+                      const std::filesystem::path& final_dir) {
+  const json& js = m.js;
+  const std::filesystem::path tmp = temporary_directory_for(final_dir);
+  try {
+    write_output_file((tmp / "verify.json").string(), js.dump(2) + "\n", "--report");
+    write_output_file((tmp / "vibook.css").string(), std::string(kBookStylesheet), "--report");
+    const bool have_order =
+        js.contains("order") && js.at("order").contains("h") && js.at("order").contains("error");
+    if (have_order) {
+      std::ostringstream conv;
+      conv << "h,error\n";
+      const json& h = js.at("order").at("h");
+      const json& e = js.at("order").at("error");
+      for (std::size_t i = 0; i < h.size() && i < e.size(); ++i)
+        conv << fmt::format("{:.17g},{}\n", h[i].get<double>(),
+                            e[i].is_number() ? fmt::format("{:.17g}", e[i].get<double>()) : "");
+      write_output_file((tmp / "convergence.csv").string(), conv.str(), "--report");
+    }
+    std::ostringstream html;
+    html << page_head(command_line)
+         << "<table class=\"vibook-claims\"><tr><th>property</th><th>measured</th>"
+            "<th>criterion</th><th>verdict</th></tr>\n";
+    // Each part the JSON judged, in the report's order; "required" as the verdict line says.
+    const std::vector<std::pair<const char*, const char*>> parts = {
+        {"consistency", "consistency"},
+        {"order", "order"},
+        {"variational_order", "variational order"},
+        {"symplecticity", "symplecticity"},
+        {"symmetry", "symmetry"},
+        {"reversibility", "time reversibility"},
+        {"energy", "energy"}};
+    for (const auto& [key, what] : parts) {
+      if (!js.contains(key) || !js.at(key).is_object()) continue;
+      const json& j = js.at(key);
+      std::string measured = j.value("why", std::string());
+      if (std::string(key) == "order" && j.contains("fitted") && j.at("fitted").is_number())
+        measured = fmt::format("{:.3f}", j.at("fitted").get<double>());
+      if (std::string(key) == "energy") measured = j.value("verdict", std::string());
+      if (std::string(key) == "variational_order")
+        measured = j.contains("order") && j.at("order").is_number()
+                       ? fmt::format("{:g}", j.at("order").get<double>())
+                       : j.value("reason", std::string("not derived"));
+      const bool judged = j.contains("passed") && j.at("passed").is_boolean();
+      const bool passed = judged && j.at("passed").get<bool>();
+      html << table_row(what, measured, j.value("criterion", std::string("see the report")),
+                        judged ? (passed ? "yes" : "no") : "—", !judged || passed);
+    }
+    const json& v = js.contains("verdict") ? js.at("verdict") : json::object();
+    const bool pass = v.value("passed", false);
+    html << "</table>\n<p>Verdict: <strong>" << (pass ? "PASS" : "FAIL") << "</strong>";
+    if (v.contains(pass ? "required" : "failed"))
+      html << " ("
+           << html_escape(fmt::format(
+                  "{}",
+                  fmt::join(v.at(pass ? "required" : "failed").get<std::vector<std::string>>(),
+                            ", ")))
+           << ")";
+    html << ". The report as printed:</p>\n<pre>" << html_escape(m.out.str()) << "</pre>\n"
+         << "<p>No figure for this route yet; the order study's data: "
+         << (have_order ? "<a href=\"convergence.csv\">convergence.csv</a>" : "none")
+         << ". Every number: <a href=\"verify.json\">verify.json</a>.</p>\n</body></html>\n";
+    write_output_file((tmp / "index.html").string(), html.str(), "--report");
+    commit_directory(tmp, final_dir);
+  } catch (...) {
+    discard_temporary_directory(tmp);
+    throw;
+  }
 }
 
 }  // namespace vibook::verify
