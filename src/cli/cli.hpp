@@ -1,6 +1,7 @@
 // Shared declarations of the `vibook` command's subcommands.
 #pragma once
 
+#include <cstddef>
 #include <functional>
 #include <string>
 
@@ -35,7 +36,13 @@ class Interrupted : public NumericalError {
 
 /// One message to standard error that never throws and never aborts: a closed or full stderr
 /// loses the message but not the exit status (every error path of the command goes through it).
+/// A message is one line: its newlines and tabs become spaces, and past kMaxMessage characters
+/// it is cut, saying how long it was (an argument or a library's message echoed whole made
+/// screen-wide "lines"; the JSON of --json-out keeps every reason whole).
 void eprint(const std::string& text);
+/// The message as eprint writes it.
+std::string one_line(const std::string& text);
+inline constexpr std::size_t kMaxMessage = 300;
 
 /// The command line as the user typed it (shell-quoted where needed), for reports.
 const std::string& command_line();

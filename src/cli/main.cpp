@@ -262,7 +262,28 @@ std::string& command_line_storage() {
 }
 }  // namespace
 const std::string& command_line() { return command_line_storage(); }
-void eprint(const std::string& text) {
+std::string one_line(const std::string& text) {
+  // A progress line (carriage return, escape) is drawn as it is.
+  if (text.empty() || text[0] == '\r' || text[0] == '\033') return text;
+  const bool newline = text.back() == '\n';
+  std::string body = text.substr(0, text.size() - (newline ? 1 : 0));
+  for (char& c : body)
+    if (c == '\n' || c == '\r' || c == '\t') c = ' ';
+  if (body.size() > kMaxMessage) {
+    // The beginning (what failed, which argument) and the end (why) are kept, the middle (an
+    // echoed argument, a state) is cut, at character boundaries (not inside a UTF-8
+    // sequence), and the cut says so.
+    std::size_t head = 150, tail = body.size() - 120;
+    while (head > 0 && (static_cast<unsigned char>(body[head]) & 0xC0) == 0x80) --head;
+    while (tail < body.size() && (static_cast<unsigned char>(body[tail]) & 0xC0) == 0x80) ++tail;
+    body = body.substr(0, head) + fmt::format(" [... {} characters cut ...] ", tail - head) +
+           body.substr(tail);
+  }
+  return newline ? body + '\n' : body;
+}
+
+void eprint(const std::string& message) {
+  const std::string text = one_line(message);
   // fwrite on a closed descriptor sets the error flag and returns; nothing is thrown.
   (void)std::fwrite(text.data(), 1, text.size(), stderr);
   (void)std::fflush(stderr);

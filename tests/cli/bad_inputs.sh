@@ -357,6 +357,11 @@ row 2 "--q0: is empty" verify --ld "$SIMPSON" --potential "$HH" --q0 ''
 row 2 "--lagrangian='-v^2/2 - q^2/2'" verify --method gauss:2 --lagrangian '-v^2/2 - q^2/2'
 row 2 "expected ')'" verify --ld "$SIMPSON" --potential '((((x'
 row 2 "--stepper-cmd: is empty" verify --stepper-cmd ' ' --expected-order 2
+# --- one line, of readable length: an argument echoed whole is cut (#50) ---------------------
+long=$(printf 'x+%.0s' $(seq 1500))w
+row 2 "characters cut ...] " verify --ld "$SIMPSON" --potential "$long"
+[ "$(wc -c <stderr)" -le 320 ] && grep -q "unknown symbol 'w'" stderr && pass=$((pass + 1)) ||
+  bad "a 3000-character argument's message: $(wc -c <stderr) characters: $(cat stderr)"
 
 echo "bad inputs: $pass passed, $fail failed"
 [ "$fail" = 0 ]
