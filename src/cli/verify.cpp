@@ -399,7 +399,8 @@ std::function<int()> add_verify_command(CLI::App& app) {
   c->add_option("--stepper-arg", o->stepper_arg,
                 "with --stepper-lib: the text passed to vibook_stepper_create (e.g. which method)");
   c->add_option("--stepper-timeout", o->stepper_timeout,
-                "with --stepper-cmd: seconds to wait for one answer (default 60)");
+                "with --stepper-cmd or --stepper-lib: seconds to wait for one answer (default "
+                "60)");
   c->add_option("--lagrangian", o->lagrangian,
                 "the intended Lagrangian L(q, v) in q, v (q[1], v[2], …), V(...), grad(V)(...); "
                 "default v^2/2 - V(q); with --method: the system the Galerkin method runs on");

@@ -142,10 +142,6 @@ Plan check(const StepperOptions& o) {
     p.timeout = parse_number("--stepper-timeout", o.timeout);
     if (!(p.timeout > 0 && p.timeout <= 86400))
       throw ArgumentError("--stepper-timeout", "must lie in (0, 86400] seconds");
-    if (o.lib_given)
-      throw ArgumentError("--stepper-timeout",
-                          "applies only to --stepper-cmd (a library runs "
-                          "in vibook's process; --max-seconds bounds it)");
   }
   if (o.cmd_given && !o.arg.empty())
     throw ArgumentError("--stepper-arg",
@@ -272,9 +268,22 @@ int run_n(const StepperOptions& o, const Plan& p) {
   // The black box, and a first step from the initial state: a stepper that cannot take it is
   // refused as an argument, before any measurement.
   std::unique_ptr<BlackBox> box;
-  if (o.lib_given)
-    box = std::make_unique<verify::StepperLibrary>(o.lib, o.arg, N);
-  else
+  if (o.lib_given) {
+    // The library runs in a child process of its own (forked, the protocol of --stepper-cmd
+    // inside): an abort() or a crash in it ends the child, never vibook, and it is held to
+    // --stepper-timeout like a command.
+    const std::string lib = o.lib, arg = o.arg;
+    auto host = std::make_unique<verify::LineProtocolStepper>(
+        [lib, arg] { return verify::serve_stepper_library(lib, arg, N); }, N, p.timeout);
+    bool ended = false;
+    if (const std::string why = host->handshake(ended); !why.empty())
+      throw ArgumentError("--stepper-lib", ended ? "could not be loaded: " + why +
+                                                       " (not a shared library vibook "
+                                                       "can load, or one that crashed "
+                                                       "while loading)"
+                                                 : why);
+    box = std::move(host);
+  } else
     box = std::make_unique<verify::LineProtocolStepper>(o.cmd, N, p.timeout);
   const std::string which = o.lib_given ? "--stepper-lib" : "--stepper-cmd";
   auto finite = [](const Eigen::VectorXd& z) { return z.allFinite(); };
@@ -282,6 +291,12 @@ int run_n(const StepperOptions& o, const Plan& p) {
     Eigen::VectorXd z = z0;
     try {
       box->run(p.study.h, 1, z.data(), z.data() + N);
+    } catch (const verify::StepperKilled& e) {
+      // A crash is the method's code failing, not a refusal of the arguments.
+      throw NumericalError(
+          fmt::format("the stepper's first step of h = {:g} from the initial "
+                      "state: {}",
+                      p.study.h, e.what()));
     } catch (const NumericalError& e) {
       throw ArgumentError(which, fmt::format("the stepper did not take a first step of h = {:g} "
                                              "from the initial state: {}",
@@ -309,21 +324,21 @@ int run_n(const StepperOptions& o, const Plan& p) {
       throw NumericalError(
           fmt::format("a step of h = {:g} from {} returned a non-finite state", h, where(start)));
   };
-  if (o.cmd_given)
-    s.propagate = [raw, where, finite](Eigen::VectorXd& z, double h, long long n) {
-      const Eigen::VectorXd start = z;
-      try {
-        raw->run(h, n, z.data(), z.data() + N);
-      } catch (const NumericalError& e) {
-        throw NumericalError(
-            fmt::format("{} steps of h = {:g} from {}: {}", n, h, where(start), e.what()));
-      }
-      if (!finite(z))
-        throw NumericalError(
-            fmt::format("{} steps of h = {:g} from {} returned a non-finite "
-                        "state",
-                        n, h, where(start)));
-    };
+  // A run of the order study is one request (both routes talk to a child process).
+  s.propagate = [raw, where, finite](Eigen::VectorXd& z, double h, long long n) {
+    const Eigen::VectorXd start = z;
+    try {
+      raw->run(h, n, z.data(), z.data() + N);
+    } catch (const NumericalError& e) {
+      throw NumericalError(
+          fmt::format("{} steps of h = {:g} from {}: {}", n, h, where(start), e.what()));
+    }
+    if (!finite(z))
+      throw NumericalError(
+          fmt::format("{} steps of h = {:g} from {} returned a non-finite "
+                      "state",
+                      n, h, where(start)));
+  };
   set_typed_system<N>(s, sys, z0);
   s.expected = p.expected;
   // A command answers a whole run at once, but at the speed of its language: the walk of step

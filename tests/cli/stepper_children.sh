@@ -112,5 +112,63 @@ chmod +x "$tmp/nul.sh"
 s=$?
 [ $s != 0 ] && grep -q "NUL byte" "$tmp/e8" && ok || bad "NUL: status $s, $(cat "$tmp/e8")"
 
+# --- a library (--stepper-lib) runs in a child of its own: its crash is a status, not vibook's
+# end (#50). Explicit Euler on the pendulum, which calls abort() after ABORT_AFTER steps, prints
+# to its standard output on every step, or hangs on its first step (symplectic Euler on the
+# pendulum otherwise: a correct first-order method).
+cat >"$tmp/lib.cpp" <<'CPP'
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <unistd.h>
+struct Ctx { long steps; long abort_after; bool chatty, hang; };
+extern "C" {
+int vibook_stepper_abi_version() { return 1; }
+void* vibook_stepper_create(int dof, const char* arg) {
+  if (dof != 1) return nullptr;
+  return new Ctx{0, std::strncmp(arg, "abort", 5) == 0 ? std::atol(arg + 5) : -1,
+                 std::strcmp(arg, "chatty") == 0, std::strcmp(arg, "hang") == 0};
+}
+int vibook_stepper_step(void* c, double h, double* q, double* p) {
+  Ctx* x = static_cast<Ctx*>(c);
+  if (x->hang) sleep(100000);
+  if (x->abort_after >= 0 && x->steps++ >= x->abort_after) std::abort();
+  if (x->chatty) std::printf("step %ld\n", x->steps++);
+  *p -= h * std::sin(*q);
+  *q += h * *p;
+  return 0;
+}
+void vibook_stepper_destroy(void* c) { delete static_cast<Ctx*>(c); }
+}
+CPP
+PL=(--problem pendulum --expected-order 1 --steps 2048 --h-list 0.1,0.05,0.025)
+if ${CXX:-g++} -shared -fPIC -O1 -o "$tmp/lib.so" "$tmp/lib.cpp" 2>"$tmp/cc.err"; then
+  "$V" verify --stepper-lib "$tmp/lib.so" --stepper-arg abort0 "${PL[@]}" >"$tmp/o9" 2>"$tmp/e9"
+  s=$?
+  [ $s = 3 ] && [ "$(wc -l <"$tmp/e9")" = 1 ] && grep -q "first step.*SIGABRT" "$tmp/e9" &&
+    ok || bad "abort at the first step: status $s, $(cat "$tmp/e9")"
+  "$V" verify --stepper-lib "$tmp/lib.so" --stepper-arg abort3000 "${PL[@]}" >"$tmp/o10" 2>"$tmp/e10"
+  s=$?
+  [ $s = 3 ] && [ "$(wc -l <"$tmp/e10")" = 1 ] && grep -q "SIGABRT" "$tmp/e10" && ok ||
+    bad "abort later: status $s, $(cat "$tmp/e10")"
+  "$V" verify --stepper-lib "$tmp/lib.so" --stepper-arg chatty "${PL[@]}" >"$tmp/o11" 2>"$tmp/e11"
+  s=$?
+  [ $s = 0 ] && ! grep -q "^step " "$tmp/o11" && grep -Eq "^verdict +PASS" "$tmp/o11" && ok ||
+    bad "a library printing on stdout: status $s, $(head -c 300 "$tmp/e11")"
+  "$V" verify --stepper-lib "$tmp/lib.so" --stepper-arg hang "${PL[@]}" --stepper-timeout 0.5 \
+    >"$tmp/o12" 2>"$tmp/e12"
+  s=$?
+  [ $s = 2 ] && grep -q "did not answer within 0.5 s" "$tmp/e12" && ! pgrep -f "$tmp/lib" >/dev/null &&
+    ok || bad "a library that hangs: status $s, $(cat "$tmp/e12")"
+  head -c 3000 "$tmp/lib.so" >"$tmp/truncated.so"
+  "$V" verify --stepper-lib "$tmp/truncated.so" "${PL[@]}" >"$tmp/o13" 2>"$tmp/e13"
+  s=$?
+  [ $s = 2 ] && [ "$(wc -l <"$tmp/e13")" = 1 ] && grep -q -- "--stepper-lib" "$tmp/e13" && ok ||
+    bad "a truncated library: status $s, $(cat "$tmp/e13")"
+else
+  bad "the test library did not compile: $(head -c 300 "$tmp/cc.err")"
+fi
+
 echo "stepper children: $pass passed, $fail failed"
 [ "$fail" = 0 ]

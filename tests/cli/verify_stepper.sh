@@ -114,7 +114,6 @@ arg wrong-dof --stepper-lib --stepper-lib "$LIB" --stepper-arg mclachlan4/kepler
   --problem pendulum --expected-order 4
 arg with-ld --ld "${L[@]}" --expected-order 4 --ld 'h*((q1-q0)^2/(2*h^2))' --potential x
 arg problem --problem "${L[@]}" --expected-order 4 --problem double-pendulum
-arg lib-timeout --stepper-timeout "${L[@]}" --expected-order 4 --stepper-timeout 5
 arg cmd-arg --stepper-arg --stepper-cmd cat --stepper-arg x --expected-order 2
 arg q0-length --q0 "${L[@]}" --expected-order 4 --q0 1,2,3
 arg order-range --expected-order "${L[@]}" --expected-order 21

@@ -2,7 +2,14 @@
 #include "vibook/verify/black_box.hpp"
 
 #include <dlfcn.h>
+#include <sys/resource.h>
 #include <sys/stat.h>
+#include <unistd.h>
+
+#include <cerrno>
+#include <cstdlib>
+#include <memory>
+#include <vector>
 
 #include <fmt/format.h>
 
@@ -62,6 +69,82 @@ void StepperLibrary::run(double h, long long n, double* q, double* p) {
 std::string StepperLibrary::reason(void* context) const {
   const char* m = message_ ? message_(context) : nullptr;
   return m && *m ? std::string(": ") + m : std::string();
+}
+
+namespace {
+
+bool write_fd(int fd, const std::string& s) {
+  std::size_t done = 0;
+  while (done < s.size()) {
+    const ssize_t w = ::write(fd, s.data() + done, s.size() - done);
+    if (w < 0 && errno == EINTR) continue;
+    if (w <= 0) return false;
+    done += static_cast<std::size_t>(w);
+  }
+  return true;
+}
+
+}  // namespace
+
+int serve_stepper_library(const std::string& path, const std::string& arg, int dof) {
+  // The protocol's answers on a descriptor of their own; the library's prints to standard
+  // output go where its standard error goes (captured by vibook), never into an answer.
+  const int answers = ::dup(1);
+  ::dup2(2, 1);
+  // A library that aborts ends this child with a status vibook reports; no core file is left.
+  const rlimit no_core{0, 0};
+  ::setrlimit(RLIMIT_CORE, &no_core);
+  std::unique_ptr<StepperLibrary> lib;
+  try {
+    lib = std::make_unique<StepperLibrary>(path, arg, dof);
+  } catch (const ArgumentError& e) {
+    std::string why = e.what();
+    const std::string prefix = e.argument() + ": ";
+    if (why.rfind(prefix, 0) == 0) why.erase(0, prefix.size());
+    write_fd(answers, "error " + why + "\n");
+    return 2;
+  }
+  if (!write_fd(answers, "ready\n")) return 0;
+  std::string buf;
+  std::vector<double> q(static_cast<std::size_t>(dof)), p(static_cast<std::size_t>(dof));
+  char chunk[4096];
+  while (true) {
+    const auto nl = buf.find('\n');
+    if (nl == std::string::npos) {
+      const ssize_t got = ::read(0, chunk, sizeof chunk);
+      if (got < 0 && errno == EINTR) continue;
+      if (got <= 0) return 0;  // end of input: vibook is done
+      buf.append(chunk, static_cast<std::size_t>(got));
+      continue;
+    }
+    const std::string line = buf.substr(0, nl);
+    buf.erase(0, nl + 1);
+    // "h n q_1 … q_d p_1 … p_d", as vibook writes it
+    const char* s = line.c_str();
+    char* end = nullptr;
+    const double h = std::strtod(s, &end);
+    s = end;
+    const long long n = std::strtoll(s, &end, 10);
+    s = end;
+    for (int i = 0; i < 2 * dof; ++i) {
+      (i < dof ? q[static_cast<std::size_t>(i)] : p[static_cast<std::size_t>(i - dof)]) =
+          std::strtod(s, &end);
+      s = end;
+    }
+    std::string answer;
+    try {
+      lib->run(h, n, q.data(), p.data());
+      for (int i = 0; i < dof; ++i)
+        answer += fmt::format("{}{:.17g}", i ? " " : "", q[static_cast<std::size_t>(i)]);
+      for (int i = 0; i < dof; ++i)
+        answer += fmt::format(" {:.17g}", p[static_cast<std::size_t>(i)]);
+    } catch (const std::exception& e) {
+      answer = std::string("error ") + e.what();
+      for (char& c : answer)
+        if (c == '\n' || c == '\r') c = ' ';
+    }
+    if (!write_fd(answers, answer + "\n")) return 0;
+  }
 }
 
 }  // namespace vibook::verify

@@ -40,4 +40,11 @@ class StepperLibrary final : public BlackBox {
   const char* (*message_)(void*) = nullptr;
 };
 
+/// The child's side of an isolated library (`vibook verify --stepper-lib`): load it, announce
+/// `ready` (or `error REASON` when it cannot be loaded), then answer the line protocol's
+/// requests on file descriptors 0 and `answers`, numbers in 17 significant digits (exact).
+/// Anything the library prints on its standard output goes to the captured standard error.
+/// Returns the child's exit status: 0 at the end of its input, 2 when the library did not load.
+int serve_stepper_library(const std::string& path, const std::string& arg, int dof);
+
 }  // namespace vibook::verify

@@ -44,6 +44,31 @@ std::string one_line(std::string s, std::size_t n = 160) {
 
 LineProtocolStepper::LineProtocolStepper(const std::string& cmd, int dof, double timeout)
     : dof_(dof), timeout_(timeout) {
+  start([&cmd] {
+    ::execl("/bin/sh", "sh", "-c", cmd.c_str(), static_cast<char*>(nullptr));
+    ::_exit(127);
+  });
+}
+
+LineProtocolStepper::LineProtocolStepper(const std::function<int()>& serve, int dof, double timeout)
+    : dof_(dof), timeout_(timeout) {
+  start([&serve] { ::_exit(serve()); });
+}
+
+std::string LineProtocolStepper::handshake(bool& ended) {
+  ended = false;
+  try {
+    const std::string line = read_line(now_s() + timeout_);
+    if (line == "ready") return {};
+    if (line.rfind("error ", 0) == 0) return one_line(line.substr(6), 1000);
+    return "it announced '" + one_line(line, 60) + "', not 'ready'";
+  } catch (const NumericalError& e) {
+    ended = true;
+    return e.what();
+  }
+}
+
+void LineProtocolStepper::start(const std::function<void()>& child) {
   int in[2], out[2], err[2];
   if (::pipe2(in, O_CLOEXEC) != 0) throw NumericalError("pipe: " + std::string(strerror(errno)));
   if (::pipe2(out, O_CLOEXEC) != 0 || ::pipe2(err, O_CLOEXEC) != 0) {
@@ -62,7 +87,7 @@ LineProtocolStepper::LineProtocolStepper(const std::string& cmd, int dof, double
     sigset_t none;
     sigemptyset(&none);
     ::sigprocmask(SIG_SETMASK, &none, nullptr);  // vibook blocks its handled signals
-    ::execl("/bin/sh", "sh", "-c", cmd.c_str(), static_cast<char*>(nullptr));
+    child();
     ::_exit(127);
   }
   ::setpgid(pid_, pid_);  // also here: whichever runs first (EACCES after exec is harmless)
@@ -110,6 +135,7 @@ void LineProtocolStepper::fail(const std::string& why) {
     tail.pop_back();
   if (const auto nl = tail.rfind('\n'); nl != std::string::npos) tail = tail.substr(nl + 1);
   if (!tail.empty()) msg += " (its last line on stderr: '" + one_line(tail) + "')";
+  if (killed_) throw StepperKilled(msg);
   throw NumericalError(msg);
 }
 
@@ -120,8 +146,12 @@ std::string LineProtocolStepper::exited() {
       reaped_ = true;
       if (WIFEXITED(status))
         return fmt::format("the stepper exited with status {}", WEXITSTATUS(status));
+      killed_ = WIFSIGNALED(status);
       if (WIFSIGNALED(status))
-        return fmt::format("the stepper was killed by signal {}", WTERMSIG(status));
+        return fmt::format("the stepper was killed by signal {}{}", WTERMSIG(status),
+                           sigabbrev_np(WTERMSIG(status))
+                               ? fmt::format(" (SIG{})", sigabbrev_np(WTERMSIG(status)))
+                               : std::string());
     }
     ::usleep(10000);
   }

@@ -15,16 +15,34 @@
 
 #include <sys/types.h>
 
+#include <functional>
 #include <string>
 
+#include "vibook/core/errors.hpp"
 #include "vibook/verify/black_box.hpp"
 
 namespace vibook::verify {
+
+/// The stepper's process was killed by a signal (an abort(), a segmentation fault, a bus
+/// error): a numerical failure of the method's code, status 3 even at its first step.
+class StepperKilled : public NumericalError {
+ public:
+  using NumericalError::NumericalError;
+};
 
 class LineProtocolStepper final : public BlackBox {
  public:
   /// Start `sh -c cmd`; `dof` degrees of freedom; `timeout` seconds for each answer.
   LineProtocolStepper(const std::string& cmd, int dof, double timeout);
+  /// Start a child that runs `serve` (forked, not executed) and exits with its value: the
+  /// child's standard input and output carry the protocol, its standard error is captured.
+  /// `serve` runs in the child only.
+  LineProtocolStepper(const std::function<int()>& serve, int dof, double timeout);
+
+  /// The first line of a child that announces itself (`ready`, or `error REASON`), within the
+  /// timeout: "" for ready, else why not: its reason, or (`ended` set) how it ended, e.g. killed
+  /// by SIGBUS while loading. Never throws for what the child did.
+  std::string handshake(bool& ended);
   ~LineProtocolStepper() override;
   LineProtocolStepper(const LineProtocolStepper&) = delete;
   LineProtocolStepper& operator=(const LineProtocolStepper&) = delete;
@@ -35,6 +53,7 @@ class LineProtocolStepper final : public BlackBox {
   static constexpr std::size_t kMaxLine = std::size_t(1) << 20;
 
  private:
+  void start(const std::function<void()>& child);
   [[noreturn]] void fail(const std::string& why);
   std::string exited();
   void pump(int timeout_ms);  // read what is there on stdout and stderr, waiting up to timeout
@@ -48,6 +67,7 @@ class LineProtocolStepper final : public BlackBox {
   int to_ = -1, from_ = -1, err_ = -1;
   std::string buf_, err_tail_;
   bool reaped_ = false;
+  bool killed_ = false;  // it ended by a signal (exited() found out)
 };
 
 }  // namespace vibook::verify
