@@ -190,11 +190,19 @@ def claim_link(cid):
 def math(latex):
     """The formula in a box of its own that scrolls sideways when it is wide. Inline math in
     display style: the book numbers every display (mathjax-config.js), and these are the
-    papers' formulas, not the book's. For rendering only, a \\tag{X} is written (X) and a
-    line break outside an environment is put in one; the text compared is the paper's."""
+    papers' formulas, not the book's. For rendering only, a \\tag{X} is written (X), a
+    line break outside an environment is put in one, and in a display of several rows or with
+    unbalanced delimiters \\left/\\right become fixed sizes (\\Bigl/\\Bigr): the papers break
+    a \\left( ... \\right) over the rows of an aligned display, or close one \\left| twice,
+    which TeX (and MathJax) cannot typeset. The text compared is the paper's."""
     if not latex:
         return ""
     tex = re.sub(r"\\tag\{([^}]*)\}", r"\\quad (\1)", latex)
+    if "\\\\" in tex or len(re.findall(r"\\left(?![a-zA-Z])", tex)) != len(
+            re.findall(r"\\right(?![a-zA-Z])", tex)):
+        tex = re.sub(r"\\(left|right)\s*\.", "", tex)
+        tex = re.sub(r"\\left(?![a-zA-Z])\s*", r"\\Bigl", tex)
+        tex = re.sub(r"\\right(?![a-zA-Z])\s*", r"\\Bigr", tex)
     if ("\\\\" in tex or "&" in tex) and "\\begin" not in tex:
         tex = "\\begin{aligned}" + tex + "\\end{aligned}"
     return '<div class="formula-scroll">\\(\\displaystyle ' + html.escape(tex) + "\\)</div>"

@@ -82,6 +82,19 @@ const t0 = Date.now();
 INSPECT = """
 const out = {errors: [], images: [], links: []};
 document.querySelectorAll('.MathJax_Error, merror').forEach(e => out.errors.push('MathJax error: ' + e.textContent));
+// A TeX error rendered by the SVG output (a red box) leaves no .MathJax_Error element: look
+// for the merror node in each formula's MathML tree.
+if (window.MathJax && MathJax.Hub && MathJax.Hub.getAllJax) {
+  const hasError = (node, depth) => {
+    if (!node || depth > 200) return false;
+    if (node.type === 'merror') return true;
+    return Array.isArray(node.data) && node.data.some(c => hasError(c, depth + 1));
+  };
+  MathJax.Hub.getAllJax().forEach(j => {
+    if (hasError(j.root, 0))
+      out.errors.push('MathJax error in the formula ' + String(j.originalText || '').slice(0, 80));
+  });
+}
 const walker = document.createTreeWalker(document.body, NodeFilter.SHOW_TEXT);
 while (walker.nextNode()) {
   const n = walker.currentNode;

@@ -4,7 +4,7 @@
 # evidence, a broken filter, sideways scrolling, a formula cut off, figure text under 12 px, a
 # chapter without previous/next links, quoted code linking to a .cpp's file-local symbol, a
 # caption that names no paper figure, a page without contents box, a numbered list born of a
-# sentence, history words, an appendix no chapter links to) must
+# sentence, history words, an appendix no chapter links to, a formula MathJax cannot parse) must
 # be reported, and a clean page must pass.
 set -u
 here=$(cd "$(dirname "$0")" && pwd)
@@ -69,6 +69,16 @@ HTML
 cat >"$tmp/helper_8cpp.html" <<'HTML'
 <!DOCTYPE html><html><head><title>helper.cpp</title></head><body><a id="a0123">k</a></body></html>
 HTML
+# A formula MathJax cannot parse (an accent without its argument), configured as the book's
+# pages are (Doxygen's: no noErrors extension): the SVG output draws it in red without a
+# .MathJax_Error element, so the checker must ask MathJax itself.
+cat >"$tmp/mathbad.html" <<'HTML'
+<!DOCTYPE html><html><head><title>math</title>
+<script type="text/x-mathjax-config">MathJax.Hub.Config({extensions: ["tex2jax.js"],
+  jax: ["input/TeX", "output/SVG"], tex2jax: {inlineMath: [['\\(','\\)']]}});</script>
+<script src="file:///usr/share/javascript/mathjax/MathJax.js"></script>
+</head><body><p>A slip: \(\dot\) read as \(\ddot x\).</p></body></html>
+HTML
 cat >"$tmp/leak.html" <<HTML
 <!DOCTYPE html><html><head><title>leak</title></head><body>
 <pre>report: $tmp/build/book/figures/verify-report/index.html</pre></body></html>
@@ -97,6 +107,8 @@ grep -q "chapter-bad.html: quoted code links 'k' to a file-local symbol of helpe
 grep -q "reportbad.html: claim row without evidence links: X-2" "$tmp/bad.log" || { echo "FAIL: row without evidence not reported"; fail=1; }
 grep -q "classB.html: broken link classNowhere.html#x" "$tmp/bad.log" || { echo "FAIL: static broken link not reported"; fail=1; }
 grep -q "classB.html: broken image gone.png" "$tmp/bad.log" || { echo "FAIL: static broken image not reported"; fail=1; }
+grep -q 'mathbad.html: MathJax error in the formula .dot$' "$tmp/bad.log" || { echo "FAIL: a MathJax parse error not reported"; fail=1; }
+grep -q 'mathbad.html: .*ddot x' "$tmp/bad.log" && { echo "FAIL: a formula that parses was reported"; fail=1; }
 grep -q "leak.html: names the machine's directory $tmp/build" "$tmp/bad.log" || { echo "FAIL: a build path in a page not reported"; fail=1; }
 grep -q "index.html\|classA.html" "$tmp/bad.log" && { echo "FAIL: a clean page was reported"; fail=1; }
 [ $fail = 0 ] && echo "book checker selftest: passed" || cat "$tmp/bad.log"

@@ -647,8 +647,25 @@ claims::FormulaComparison compare(const Spec& spec, const std::vector<Case>& cas
       if (tokens[k].cmd("dot") || tokens[k].cmd("ddot")) {
         Candidate c{tokens, {}, ""};
         c.tokens[k].text = tokens[k].text == "dot" ? "ddot" : "dot";
-        c.edit = "\\(\\" + tokens[k].text + "\\) read as \\(\\" + c.tokens[k].text +
-                 "\\) at character " + std::to_string(tokens[k].begin + 1);
+        // The accent with its argument (a bare \dot is a MathJax error): the next letter or
+        // braced group, as printed.
+        std::size_t e = k + 1;
+        if (e < tokens.size() && tokens[e].sym("{")) {
+          for (int depth = 0; e < tokens.size(); ++e) {
+            depth += tokens[e].sym("{") ? 1 : tokens[e].sym("}") ? -1 : 0;
+            if (depth == 0) break;
+          }
+          e = std::min(e + 1, tokens.size());
+        } else if (e < tokens.size()) {
+          ++e;
+        }
+        const std::string arg =
+            e > k + 1
+                ? print(std::vector<Token>(tokens.begin() + static_cast<std::ptrdiff_t>(k + 1),
+                                           tokens.begin() + static_cast<std::ptrdiff_t>(e)))
+                : std::string("{}");
+        c.edit = "\\(\\" + tokens[k].text + " " + arg + "\\) read as \\(\\" + c.tokens[k].text +
+                 " " + arg + "\\) at character " + std::to_string(tokens[k].begin + 1);
         singles.push_back(c);
       }
       if ((tokens[k].kind == Token::Kind::letter ||
