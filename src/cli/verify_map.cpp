@@ -274,6 +274,8 @@ void MapReport::variational_order_not_derived(const std::string& reason) {
 
 int MapReport::finish(const StudyOptions& o) {
   js["verdict"] = {{"passed", failed.empty()}, {"failed", failed}, {"required", required}};
+  // The full text of the first numerical failure (its line on stderr may be cut to 300).
+  if (numerical_failure) js["error"] = first_error;
   line("verdict", fmt::format("{} ({})", failed.empty() ? "PASS" : "FAIL",
                               fmt::join(failed.empty() ? required : failed, ", ")));
   std::cout << out.str();

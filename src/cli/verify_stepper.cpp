@@ -339,6 +339,25 @@ int run_n(const StepperOptions& o, const Plan& p) {
                       "state",
                       n, h, where(start)));
   };
+  // The energy runs' states, a block of steps a request (a library's host answers them all;
+  // a command, one step a request as before).
+  s.every = [raw, where, finite](Eigen::VectorXd& z, double h, long long n,
+                                 const std::function<void()>& each) {
+    Eigen::VectorXd start = z;
+    try {
+      raw->every(h, n, z.data(), z.data() + N, [&] {
+        if (!finite(z))
+          throw NumericalError(fmt::format("a step of h = {:g} from {} returned a non-finite state",
+                                           h, where(start)));
+        each();
+        start = z;
+      });
+    } catch (const NumericalError& e) {
+      if (!finite(z)) throw;
+      throw NumericalError(
+          fmt::format("a step of h = {:g} from {}: {}", h, where(start), e.what()));
+    }
+  };
   set_typed_system<N>(s, sys, z0);
   s.expected = p.expected;
   // A command answers a whole run at once, but at the speed of its language: the walk of step

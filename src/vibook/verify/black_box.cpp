@@ -7,6 +7,7 @@
 #include <unistd.h>
 
 #include <cerrno>
+#include <chrono>
 #include <cstdlib>
 #include <memory>
 #include <vector>
@@ -119,8 +120,10 @@ int serve_stepper_library(const std::string& path, const std::string& arg, int d
     }
     const std::string line = buf.substr(0, nl);
     buf.erase(0, nl + 1);
-    // "h n q_1 … q_d p_1 … p_d", as vibook writes it
-    const char* s = line.c_str();
+    // "h n q_1 … q_d p_1 … p_d", as vibook writes it; "every h n …": the state after each
+    // of the n steps, one line each, ending at an "error" line if a step fails
+    const bool every = line.rfind("every ", 0) == 0;
+    const char* s = line.c_str() + (every ? 6 : 0);
     char* end = nullptr;
     const double h = std::strtod(s, &end);
     s = end;
@@ -132,18 +135,50 @@ int serve_stepper_library(const std::string& path, const std::string& arg, int d
       s = end;
     }
     std::string answer;
-    try {
-      lib->run(h, n, q.data(), p.data());
+    auto state = [&] {
       for (int i = 0; i < dof; ++i)
         answer += fmt::format("{}{:.17g}", i ? " " : "", q[static_cast<std::size_t>(i)]);
       for (int i = 0; i < dof; ++i)
         answer += fmt::format(" {:.17g}", p[static_cast<std::size_t>(i)]);
-    } catch (const std::exception& e) {
-      answer = std::string("error ") + e.what();
-      for (char& c : answer)
+      answer += '\n';
+    };
+    auto failed = [&](const std::exception& e) {
+      std::string why = std::string("error ") + e.what();
+      for (char& c : why)
         if (c == '\n' || c == '\r') c = ' ';
+      answer += why + "\n";
+    };
+    if (!every) {
+      try {
+        lib->run(h, n, q.data(), p.data());
+        state();
+      } catch (const std::exception& e) {
+        failed(e);
+      }
+      if (!write_fd(answers, answer)) return 0;
+      continue;
     }
-    if (!write_fd(answers, answer + "\n")) return 0;
+    // The lines go out in blocks of up to 32 kB, and at least every 50 ms, so that vibook's
+    // timeout on each line holds for a slow library too.
+    auto sent = std::chrono::steady_clock::now();
+    for (long long k = 0; k < n; ++k) {
+      bool ok = true;
+      try {
+        lib->run(h, 1, q.data(), p.data());
+        state();
+      } catch (const std::exception& e) {
+        failed(e);
+        ok = false;
+      }
+      const auto now = std::chrono::steady_clock::now();
+      if (!ok || k + 1 == n || answer.size() > 32768 ||
+          now - sent > std::chrono::milliseconds(50)) {
+        if (!write_fd(answers, answer)) return 0;
+        answer.clear();
+        sent = now;
+      }
+      if (!ok) break;
+    }
   }
 }
 

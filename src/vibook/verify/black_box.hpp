@@ -8,6 +8,7 @@
 /// Chapter: \ref chapter-verify (section "Any stepper as a black box").
 #pragma once
 
+#include <functional>
 #include <string>
 
 namespace vibook::verify {
@@ -18,6 +19,15 @@ class BlackBox {
   virtual ~BlackBox() = default;
   /// n steps of size h from (q, p), in place; a failure is a NumericalError saying why.
   virtual void run(double h, long long n, double* q, double* p) = 0;
+  /// n steps of size h from (q, p), in place, `each` called after every step (q, p then hold
+  /// its state): n single steps, unless the stepper can answer every state of the run at once.
+  virtual void every(double h, long long n, double* q, double* p,
+                     const std::function<void()>& each) {
+    for (long long k = 0; k < n; ++k) {
+      run(h, 1, q, p);
+      each();
+    }
+  }
 };
 
 /// A library behind the C ABI (stepper_abi.h), loaded into this process. The constructor

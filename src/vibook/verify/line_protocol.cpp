@@ -53,6 +53,7 @@ LineProtocolStepper::LineProtocolStepper(const std::string& cmd, int dof, double
 LineProtocolStepper::LineProtocolStepper(const std::function<int()>& serve, int dof, double timeout)
     : dof_(dof), timeout_(timeout) {
   start([&serve] { ::_exit(serve()); });
+  serves_every_ = true;
 }
 
 std::string LineProtocolStepper::handshake(bool& ended) {
@@ -206,12 +207,12 @@ void LineProtocolStepper::write_all(const std::string& s, double deadline_s) {
   }
 }
 
-std::string LineProtocolStepper::read_line(double deadline_s) {
+std::string LineProtocolStepper::read_line(double deadline_s, bool more_may_follow) {
   while (true) {
     if (const auto nl = buf_.find('\n'); nl != std::string::npos) {
       std::string line = buf_.substr(0, nl);
       buf_.erase(0, nl + 1);
-      if (!buf_.empty())
+      if (!buf_.empty() && !more_may_follow)
         fail(
             "the stepper answered more than one line to a request (line protocol 1: one "
             "line an answer)");
@@ -226,19 +227,22 @@ std::string LineProtocolStepper::read_line(double deadline_s) {
   }
 }
 
-void LineProtocolStepper::run(double h, long long n, double* q, double* p) {
+void LineProtocolStepper::request(const std::string& head, double h, long long n, const double* q,
+                                  const double* p, double deadline_s) {
   if (pid_ <= 0) fail("the stepper has ended");
-  const double deadline = now_s() + timeout_;
   // Anything on its output before a request is a line it was not asked for.
   pump(0);
   if (!buf_.empty())
     fail("the stepper wrote '" + one_line(buf_, 60) + "' without a request (line protocol 1)");
-  std::string req = fmt::format("{:.17g} {}", h, n);
+  std::string req = head + fmt::format("{:.17g} {}", h, n);
   for (int i = 0; i < dof_; ++i) req += fmt::format(" {:.17g}", q[i]);
   for (int i = 0; i < dof_; ++i) req += fmt::format(" {:.17g}", p[i]);
   req += '\n';
-  write_all(req, deadline);
-  const std::string answer = read_line(deadline);
+  write_all(req, deadline_s);
+}
+
+std::optional<std::string> LineProtocolStepper::parse_answer(const std::string& answer, double* q,
+                                                             double* p) {
   auto protocol = [&](const std::string& what) {
     fail("the stepper's answer " + what + " (line protocol 1: 'q_1 ... q_d p_1 ... p_d'): '" +
          one_line(answer, 120) + "'");
@@ -247,7 +251,7 @@ void LineProtocolStepper::run(double h, long long n, double* q, double* p) {
   if (answer.rfind("error", 0) == 0) {
     std::string why = answer.substr(5);
     why.erase(0, why.find_first_not_of(" :\t"));
-    fail("the stepper answered 'error'" + (why.empty() ? "" : ": " + one_line(why)));
+    return why;
   }
   std::vector<double> v;
   const char* s = answer.c_str();
@@ -267,6 +271,31 @@ void LineProtocolStepper::run(double h, long long n, double* q, double* p) {
   for (int i = 0; i < dof_; ++i) {
     q[i] = v[static_cast<std::size_t>(i)];
     p[i] = v[static_cast<std::size_t>(dof_ + i)];
+  }
+  return std::nullopt;
+}
+
+void LineProtocolStepper::run(double h, long long n, double* q, double* p) {
+  const double deadline = now_s() + timeout_;
+  request("", h, n, q, p, deadline);
+  const std::string answer = read_line(deadline);
+  if (const auto why = parse_answer(answer, q, p))
+    fail("the stepper answered 'error'" + (why->empty() ? "" : ": " + one_line(*why)));
+}
+
+void LineProtocolStepper::every(double h, long long n, double* q, double* p,
+                                const std::function<void()>& each) {
+  if (!serves_every_) {
+    BlackBox::every(h, n, q, p, each);
+    return;
+  }
+  // One request; n lines, each within the timeout, an "error" line ending the answer early.
+  request("every ", h, n, q, p, now_s() + timeout_);
+  for (long long k = 0; k < n; ++k) {
+    const std::string line = read_line(now_s() + timeout_, k + 1 < n);
+    if (const auto why = parse_answer(line, q, p))
+      fail("the stepper answered 'error'" + (why->empty() ? "" : ": " + one_line(*why)));
+    each();
   }
 }
 

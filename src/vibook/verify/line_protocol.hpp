@@ -16,7 +16,9 @@
 #include <sys/types.h>
 
 #include <functional>
+#include <optional>
 #include <string>
+#include <vector>
 
 #include "vibook/core/errors.hpp"
 #include "vibook/verify/black_box.hpp"
@@ -48,6 +50,11 @@ class LineProtocolStepper final : public BlackBox {
   LineProtocolStepper& operator=(const LineProtocolStepper&) = delete;
 
   void run(double h, long long n, double* q, double* p) override;
+  /// A child started with `serve` (a library's host) answers all n states in one request
+  /// (`every h n q p`, one line a state; the library takes the same calls as n single steps);
+  /// a command, n single steps (line protocol 1 has no such request).
+  void every(double h, long long n, double* q, double* p,
+             const std::function<void()>& each) override;
 
   /// The largest answer line read (bytes).
   static constexpr std::size_t kMaxLine = std::size_t(1) << 20;
@@ -58,7 +65,12 @@ class LineProtocolStepper final : public BlackBox {
   std::string exited();
   void pump(int timeout_ms);  // read what is there on stdout and stderr, waiting up to timeout
   void write_all(const std::string& s, double deadline_s);
-  std::string read_line(double deadline_s);
+  std::string read_line(double deadline_s, bool more_may_follow = false);
+  void request(const std::string& head, double h, long long n, const double* q, const double* p,
+               double deadline_s);
+  // An answer line: its state into q, p, or its reason when it is "error ..." (returned, not
+  // thrown); any other line is a protocol error (thrown).
+  std::optional<std::string> parse_answer(const std::string& answer, double* q, double* p);
   void end();
 
   int dof_;
@@ -67,7 +79,8 @@ class LineProtocolStepper final : public BlackBox {
   int to_ = -1, from_ = -1, err_ = -1;
   std::string buf_, err_tail_;
   bool reaped_ = false;
-  bool killed_ = false;  // it ended by a signal (exited() found out)
+  bool killed_ = false;        // it ended by a signal (exited() found out)
+  bool serves_every_ = false;  // a library's host: `every` is one request
 };
 
 }  // namespace vibook::verify

@@ -498,10 +498,31 @@ void measure_map(const MapStudy& s, MapMeasurement& rep) {
     const double H0 = H(z0);
     const double scale =
         std::max({std::abs(H0), 0.5 * z0.tail(z0.size() / 2).squaredNorm(), 1e-300});
-    const auto en = energy_behaviour(step, H, z0, s.h, s.steps);
+    // With `every`, the run's states come in blocks of at most 4096 steps, never more than the
+    // run takes (so the stepper is called exactly as by single steps).
+    auto energy_run = [&](double h, long long steps) {
+      if (!s.every) return energy_behaviour(step, H, z0, h, steps);
+      std::vector<Eigen::VectorXd> block;
+      std::size_t next = 0;
+      long long asked = 0;
+      const Advance advance = [&](Eigen::VectorXd& z) {
+        if (next == block.size()) {
+          block.clear();
+          next = 0;
+          const long long n = std::min<long long>(4096, steps - asked);
+          asked += n;
+          Eigen::VectorXd w = z;
+          s.every(w, h, n, [&] { block.push_back(w); });
+        }
+        z = block[next++];
+        return true;
+      };
+      return energy_envelope(advance, H, z0, h, steps);
+    };
+    const auto en = energy_run(s.h, s.steps);
     const long long k1 = std::min<long long>(s.steps, 4096);
-    const auto e1 = energy_behaviour(step, H, z0, s.h, k1);
-    const auto e2 = energy_behaviour(step, H, z0, s.h / 2, 2 * k1);
+    const auto e1 = energy_run(s.h, k1);
+    const auto e2 = energy_run(s.h / 2, 2 * k1);
     const double h_exp = e1.max_error > 0 && e2.max_error > 0
                              ? std::log2(e1.max_error / e2.max_error)
                              : std::numeric_limits<double>::quiet_NaN();

@@ -95,6 +95,11 @@ struct MapStudy {
   /// Optional: n steps of size h at once (a line-protocol stepper answers one request for a
   /// whole run); by default `step` n times.
   std::function<void(Eigen::VectorXd& z, double h, long long n)> propagate;
+  /// Optional: n steps of size h at once with every state (`each` after each step, z holding
+  /// it): the energy runs, which look at every state, then take a few requests instead of one a
+  /// step (a library's host); by default `step` n times.
+  std::function<void(Eigen::VectorXd& z, double h, long long n, const std::function<void()>& each)>
+      every;
   Eigen::VectorXd z0;
   verify::Field<dd_real> field;  ///< Hamilton's equations, for the reference (unless `reference`)
   /// Optional: the reference in the system's own coordinates, used instead of integrating
