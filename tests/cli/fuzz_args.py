@@ -1,13 +1,14 @@
 #!/usr/bin/env python3
 """Seeded random arguments for `vibook run`, `vibook modified` and `vibook verify` (the argument
-parser, the strict number and list parsers, the --alpha rational parser, and the expression
-parser of --ld and --potential, fed mutated expressions), run for a bounded number of cases
-and time. Every case must end with exit status 0, 2, 3 or 4, or 5 for a verify whose verdict
+parser, the strict number and list parsers, the --alpha rational parser, the expression
+parser of --ld and --potential, fed mutated expressions, and the other routes of verify:
+--method, --tableau, --composition, and black-box steppers that crash, hang, flood or do not
+load, with --report and --json-out), run for a bounded number of cases and time. Every case must end with exit status 0, 2, 3 or 4, or 5 for a verify whose verdict
 failed (never a signal, an
 uncaught exception's 1, or a hang), with exactly one stderr line when it fails, and must leave
 nothing in its directory but the file it was asked to write (or FILE.partial after status 3).
 
-Usage: fuzz_args.py VIBOOK [--seed N] [--cases N] [--seconds S]
+Usage: fuzz_args.py VIBOOK [--seed N] [--cases N] [--seconds S] [--stepper-lib FILE]
 The seed is printed, so that a failing case can be replayed.
 """
 import argparse
@@ -111,9 +112,63 @@ def verify_case(r):
     return args
 
 
+TABLEAUS = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "examples",
+                        "tableaus")
+STEPPER_LIB = None  # --stepper-lib FILE: Boost.Odeint's steppers behind the C ABI
+STEPPER_CMDS = ["cat", "true", "sleep 100", "yes '0.1 0.1'", "sh -c 'kill -SEGV $$'",
+                "python3 -c 'import os; os.abort()'", "printf 'ready\\n'", "echo error nope",
+                "head -c 3000000 /dev/zero"]
+STEPPER_ARGS = ["mclachlan4/kepler", "symplectic_euler/pendulum", "explicit_euler/pendulum",
+                "velocity_verlet/kepler", "rk4/kepler", "nosuch/kepler", "mclachlan4", ""]
+
+
+def map_case(r):
+    # The other routes of verify (a method, a tableau, a composition, a black box), each with
+    # its report and JSON asked for now and then: small studies only.
+    args = ["verify"]
+    k = r.random()
+    if k < 0.3:
+        args += ["--method", pick(r, ["gauss:1", "gauss:2", "lobatto:2", "lobatto:3"],
+                                  ["gauss:0", "gauss:99", "nosuch", "gauss:", "sv"], GARBAGE)]
+    elif k < 0.5:
+        names = sorted(os.listdir(TABLEAUS)) if os.path.isdir(TABLEAUS) else []
+        pool = [os.path.join(TABLEAUS, n) for n in names if n.endswith(".json")]
+        args += ["--tableau", pick(r, pool or ["x.json"], ["/dev/null", "/dev/zero", ".", ""],
+                                   GARBAGE)]
+    elif k < 0.7:
+        args += ["--composition", pick(r, ["sv", "se"], ["ld", "nosuch"], GARBAGE),
+                 "--coefficients", pick(r, ["yoshida4", "ruth3", "1,1", "1/2,1/2"], GARBAGE)]
+    elif k < 0.85 or STEPPER_LIB is None:
+        args += ["--stepper-cmd", r.choice(STEPPER_CMDS), "--stepper-timeout", "2"]
+    else:
+        args += ["--stepper-lib", pick(r, [STEPPER_LIB], ["/dev/null", "/etc/passwd", "."]),
+                 "--stepper-arg", r.choice(STEPPER_ARGS), "--stepper-timeout", "5"]
+    if r.random() < 0.9:
+        args += ["--problem", pick(r, ["pendulum", "kepler", "henon-heiles"], ["", "nosuch"])]
+    args += ["--h-list", "0.1,0.05,0.025", "--steps", "1024"]
+    if "--stepper-cmd" in args or "--stepper-lib" in args:
+        # a black box's order is said, not derived (mostly a valid one)
+        args += ["--expected-order", pick(r, ["1", "2", "4"], NUMBERS, GARBAGE)]
+    opts = {
+        "--json-out": [["out.json"], ["", ".", "nodir/x.json"]],
+        "--report": [["rep"], ["", ".", "nodir/rep", "rep/"]],
+        "--h": [["0.05", "0.1"], NUMBERS, GARBAGE],
+        "--q0": [LISTS, GARBAGE],
+        "--p0": [LISTS, GARBAGE],
+    }
+    if "--expected-order" not in args:
+        opts["--expected-order"] = [["1", "2", "4"], NUMBERS, GARBAGE]
+    for name in r.sample(sorted(opts), r.choice([0, 1, 2, 2, 3])):
+        args += [name, pick(r, *opts[name])]
+    args += ["--max-seconds", "40"]
+    return args
+
+
 def run_case(r):
     if r.random() < 0.15:
         return verify_case(r)
+    if r.random() < 0.1:
+        return map_case(r)
     if r.random() < 0.7:
         args = ["run"]
         if r.random() < 0.95:
@@ -182,7 +237,10 @@ def main():
     ap.add_argument("--seed", type=int, default=int(os.environ.get("VIBOOK_FUZZ_SEED", "20261122")))
     ap.add_argument("--cases", type=int, default=int(os.environ.get("VIBOOK_FUZZ_CASES", "400")))
     ap.add_argument("--seconds", type=float, default=float(os.environ.get("VIBOOK_FUZZ_SECONDS", "120")))
+    ap.add_argument("--stepper-lib", help="a library behind the stepper ABI, for the black-box cases")
     a = ap.parse_args()
+    global STEPPER_LIB
+    STEPPER_LIB = a.stepper_lib
     vibook = os.path.realpath(a.vibook)
     r = random.Random(a.seed)
     print(f"fuzz: seed {a.seed}, at most {a.cases} cases in {a.seconds:.0f} s")
