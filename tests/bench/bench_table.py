@@ -178,6 +178,29 @@ if typed and mp and sv_k:
     print("<p>Targets of the compiled discrete Lagrangian (#28), evaluated on this run: " +
         "; ".join(parts) + ".</p>")
 
+# A library stepper behind vibook's host process (#50): per step, one request a step and one
+# request a run, against the library called in this process.
+box = {k: med[k] for k in ("black_box_inprocess", "black_box_host_step", "black_box_host_every")
+       if k in med}
+if "black_box_inprocess" in box:
+    base = box["black_box_inprocess"]
+    labels = {"black_box_inprocess": "called in this process (the limit)",
+              "black_box_host_step": "in vibook's host process, one request a step",
+              "black_box_host_every": "in vibook's host process, one request a run (every state)"}
+    print("<table class=\"vibook-bench\">")
+    print("<tr><th>--stepper-lib: Odeint's McLachlan 4 on Kepler</th><th>ns per step (median, "
+          "wall)</th><th>ratio to the call in this process</th></tr>")
+    for k, v in box.items():
+        print(f"<tr><td>{labels[k]}</td><td>{v:.0f}</td><td>{v / base:.1f}</td></tr>")
+    print("</table>")
+    if "black_box_host_every" in box and "black_box_host_step" in box:
+        print("<p>The energy phase's run of 10<sup>5</sup> steps, at these rates: "
+              f"{box['black_box_host_every'] * 1e-4:.2g} s with one request a run (how "
+              f"<code>vibook verify --stepper-lib</code> takes it), "
+              f"{box['black_box_host_step'] * 1e-4:.2g} s with one request a step. The library "
+              "runs in a child process so that a crash in it is a status, not the end of vibook "
+              "(chapter \"Verify your own integrator\").</p>")
+
 if adaptive:
     print("\n".join(adaptive))
 if len(sys.argv) > 3:
