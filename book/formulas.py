@@ -269,7 +269,8 @@ def main():
             if not row_wanted:
                 continue
             where = html.escape(d["section"] + (" · " + d["context"] if d["context"] else ""))
-            label = html.escape(d["label"] if not d["number"] else "(" + d["number"] + ")")
+            # its place in the paper's terms; the section and context are the next column
+            label = html.escape(d["place"] if not d["number"] else "(" + d["number"] + ")")
             if cs:
                 if did in annotation and not annotation[did][1]:
                     problems.append(f"{key} {did}: annotated but compared by "

@@ -226,6 +226,7 @@ int cmd_displays(const std::vector<std::string>& papers, bool with_inline, bool 
       out.push_back({{"paper", std::string(printed::key(p))},
                      {"id", d->id()},
                      {"label", d->label()},
+                     {"place", d->place()},
                      {"number", d->number},
                      {"line", d->line},
                      {"section", d->section},

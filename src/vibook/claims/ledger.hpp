@@ -35,7 +35,7 @@ struct ClaimInfo {
 struct FormulaComparison {
   std::string paper;      ///< "S", "V" or "SS"
   std::string display;    ///< "(39)", or "L288" for an unnumbered display (its first line)
-  std::string label;      ///< "(39)", or "unnumbered, line 288 (Example 2)"
+  std::string label;      ///< "(39)", or "the 2nd unnumbered display after (39), §5.1 …"
   std::string part;       ///< which part: "the right-hand side", "member 2 of 3"
   std::string quote;      ///< the LaTeX compared, verbatim from the paper
   std::string against;    ///< what it was compared with (the engine's modified equation, …)
@@ -69,7 +69,8 @@ struct ClaimResult {
   /// note), "open-reading" (it depends on a reading the paper leaves open; the note shows each),
   /// "edge-of-criterion" (the measurement lies at the criterion fixed beforehand; the note says
   /// by how much), "pre-asymptotic" (a measured order still converging toward the stated one at
-  /// the smallest step sizes of the window fixed beforehand; the note gives the local slopes). Empty for a reproduced claim.
+  /// the smallest step sizes of the window fixed beforehand; the note gives the local slopes).
+  /// Empty for a reproduced claim.
   std::string cause;
   std::vector<std::string> errata;  ///< the erratum IDs a "misprint" cause refers to
   /// One line naming what failed (a claim not reproduced) or what is misprinted: the claim's

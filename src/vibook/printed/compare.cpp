@@ -419,6 +419,29 @@ std::vector<SubDigit> subscript_digits(const std::vector<Token>& t) {
   return out;
 }
 
+// Where a token stands, in terms a reader of the printed display can count (our transcription's
+// character positions mean nothing to the paper's author): "" when what it shows occurs once in
+// the display, else " (the 2nd from the left)". key(j) is what position j shows, "" where it
+// shows nothing of the kind; k is the position described.
+std::string which(std::size_t n, std::size_t k,
+                  const std::function<std::string(std::size_t)>& key) {
+  const std::string mine = key(k);
+  std::size_t before = 0, all = 0;
+  for (std::size_t j = 0; j < n; ++j)
+    if (const std::string kj = key(j); !kj.empty() && kj == mine) {
+      ++all;
+      if (j < k) ++before;
+    }
+  if (all <= 1) return "";
+  const std::size_t i = before + 1;
+  const char* suffix = (i % 100 >= 11 && i % 100 <= 13) ? "th"
+                       : i % 10 == 1                    ? "st"
+                       : i % 10 == 2                    ? "nd"
+                       : i % 10 == 3                    ? "rd"
+                                                        : "th";
+  return fmt::format(" (the {}{} from the left)", i, suffix);
+}
+
 // Positions of integers in superscripts (h^2, x^{(3)}).
 std::vector<std::size_t> superscript_integers(const std::vector<Token>& t) {
   std::vector<std::size_t> out;
@@ -649,23 +672,24 @@ claims::FormulaComparison compare(const Spec& spec, const std::vector<Case>& cas
         c.tokens[k].text = tokens[k].text == "dot" ? "ddot" : "dot";
         // The accent with its argument (a bare \dot is a MathJax error): the next letter or
         // braced group, as printed.
-        std::size_t e = k + 1;
-        if (e < tokens.size() && tokens[e].sym("{")) {
-          for (int depth = 0; e < tokens.size(); ++e) {
-            depth += tokens[e].sym("{") ? 1 : tokens[e].sym("}") ? -1 : 0;
-            if (depth == 0) break;
+        auto argument = [&tokens](std::size_t j) {
+          std::size_t e = j + 1;
+          if (e < tokens.size() && tokens[e].sym("{")) {
+            for (int depth = 0; e < tokens.size(); ++e) {
+              depth += tokens[e].sym("{") ? 1 : tokens[e].sym("}") ? -1 : 0;
+              if (depth == 0) break;
+            }
+            e = std::min(e + 1, tokens.size());
+          } else if (e < tokens.size()) {
+            ++e;
           }
-          e = std::min(e + 1, tokens.size());
-        } else if (e < tokens.size()) {
-          ++e;
-        }
-        const std::string arg =
-            e > k + 1
-                ? print(std::vector<Token>(tokens.begin() + static_cast<std::ptrdiff_t>(k + 1),
-                                           tokens.begin() + static_cast<std::ptrdiff_t>(e)))
-                : std::string("{}");
+          return e > j + 1 ? term_text(tokens, j + 1, e) : std::string("{}");
+        };
+        const std::string arg = argument(k);
         c.edit = "\\(\\" + tokens[k].text + " " + arg + "\\) read as \\(\\" + c.tokens[k].text +
-                 " " + arg + "\\) at character " + std::to_string(tokens[k].begin + 1);
+                 " " + arg + "\\)" + which(tokens.size(), k, [&](std::size_t j) {
+                   return tokens[j].cmd(tokens[k].text) ? argument(j) : std::string();
+                 });
         singles.push_back(c);
       }
       if ((tokens[k].kind == Token::Kind::letter ||
@@ -679,30 +703,55 @@ claims::FormulaComparison compare(const Spec& spec, const std::vector<Case>& cas
         Candidate add{tokens, {}, ""};
         add.tokens.insert(add.tokens.begin() + static_cast<std::ptrdiff_t>(k) + 1,
                           make(Token::Kind::symbol, "'"));
-        add.edit = "a prime added to \\(" + tokens[k].text + "\\) at character " +
-                   std::to_string(tokens[k].begin + 1);
+        add.edit = "a prime added to \\(" + tokens[k].text + "\\)" +
+                   which(tokens.size(), k, [&](std::size_t j) {
+                     return tokens[j].kind == tokens[k].kind ? tokens[j].text : std::string();
+                   });
         singles.push_back(add);
       }
       if (tokens[k].sym("'")) {
+        // The primed symbol as printed (its letter and all its primes), counted among the
+        // symbols printed the same way.
+        auto primed = [&tokens](std::size_t j) {
+          if (!tokens[j].sym("'")) return std::string();
+          std::size_t b = j, e = j;
+          while (b > 0 && tokens[b - 1].sym("'")) --b;
+          while (e < tokens.size() && tokens[e].sym("'")) ++e;
+          return b > 0 ? term_text(tokens, b - 1, e) : std::string();
+        };
+        auto first_prime = [&tokens, &primed](std::size_t j) {
+          return j > 0 && tokens[j - 1].sym("'") ? std::string() : primed(j);
+        };
+        std::size_t run = k;
+        while (run > 0 && tokens[run - 1].sym("'")) --run;
+        const std::string where =
+            "\\(" + primed(k) + "\\)" + which(tokens.size(), run, first_prime);
         Candidate add{tokens, {}, ""};
         add.tokens.insert(add.tokens.begin() + static_cast<std::ptrdiff_t>(k),
                           make(Token::Kind::symbol, "'"));
-        add.edit = "one prime more at character " + std::to_string(tokens[k].begin + 1);
+        add.edit = "one prime more on " + where;
         singles.push_back(add);
         Candidate del{tokens, {}, ""};
         del.tokens.erase(del.tokens.begin() + static_cast<std::ptrdiff_t>(k));
-        del.edit = "one prime less at character " + std::to_string(tokens[k].begin + 1);
+        del.edit = "one prime less on " + where;
         singles.push_back(del);
       }
     }
-    for (std::size_t pos : superscript_integers(tokens))
+    const std::vector<std::size_t> exponents = superscript_integers(tokens);
+    for (std::size_t pos : exponents)
       for (int dv : {-1, 1}) {
         const numeric v = numeric(tokens[pos].text.c_str()) + dv;
         if (v.is_negative()) continue;
         Candidate c{tokens, {}, ""};
         c.tokens[pos].text = str(v);
-        c.edit = "the exponent " + tokens[pos].text + " at character " +
-                 std::to_string(tokens[pos].begin + 1) + " read as " + str(v);
+        c.edit = "the exponent " + tokens[pos].text +
+                 which(tokens.size(), pos,
+                       [&](std::size_t j) {
+                         return std::find(exponents.begin(), exponents.end(), j) != exponents.end()
+                                    ? tokens[j].text
+                                    : std::string();
+                       }) +
+                 " read as " + str(v);
         singles.push_back(c);
       }
     for (const auto& c : singles)
@@ -761,13 +810,20 @@ claims::FormulaComparison compare(const Spec& spec, const std::vector<Case>& cas
   }
   // 4. one argument deleted
   if (out.edit.empty()) {
-    for (const auto& [b, e] : list_items(tokens)) {
+    const auto items = list_items(tokens);
+    for (const auto& [b, e] : items) {
       std::vector<Token> t = tokens;
       t.erase(t.begin() + static_cast<std::ptrdiff_t>(b),
               t.begin() + static_cast<std::ptrdiff_t>(e));
       if (works(t, {})) {
-        found(t, "the argument \\(" + term_text(tokens, b + 1, e) + "\\) at character " +
-                     std::to_string(tokens[b].begin + 1) + " removed");
+        found(t, "the argument \\(" + term_text(tokens, b + 1, e) + "\\)" +
+                     which(tokens.size(), b,
+                           [&](std::size_t j) {
+                             for (const auto& [bj, ej] : items)
+                               if (bj == j) return term_text(tokens, bj + 1, ej);
+                             return std::string();
+                           }) +
+                     " removed");
         break;
       }
     }
@@ -805,8 +861,17 @@ claims::FormulaComparison compare(const Spec& spec, const std::vector<Case>& cas
         std::vector<Token> t = tokens;
         t[k + 1] = tokenize(v).front();
         if (works(t, {})) {
-          found(t, "\\(d/d" + tokens[k + 1].text + "\\) at character " +
-                       std::to_string(tokens[k + 1].begin + 1) + " read as \\(d/d" + v + "\\)");
+          found(t, "\\(d/d" + tokens[k + 1].text + "\\)" +
+                       which(tokens.size(), k,
+                             [&](std::size_t j) {
+                               return j + 1 < tokens.size() &&
+                                              tokens[j].is(Token::Kind::letter, "d") && j >= 2 &&
+                                              tokens[j - 1].sym("{") && tokens[j - 2].sym("}") &&
+                                              tokens[j + 1].kind == Token::Kind::letter
+                                          ? tokens[j + 1].text
+                                          : std::string();
+                             }) +
+                       " read as \\(d/d" + v + "\\)");
           break;
         }
       }

@@ -7,6 +7,7 @@
 #include <mutex>
 #include <regex>
 #include <stdexcept>
+#include <vector>
 
 namespace vibook::printed {
 
@@ -73,10 +74,121 @@ std::string Display::id() const {
 
 std::string Display::full_id() const { return std::string(key(paper)) + " " + id(); }
 
-std::string Display::label() const {
+namespace {
+std::string ordinal(int i) {
+  const char* suffix = (i % 100 >= 11 && i % 100 <= 13) ? "th"
+                       : i % 10 == 1                    ? "st"
+                       : i % 10 == 2                    ? "nd"
+                       : i % 10 == 3                    ? "rd"
+                                                        : "th";
+  return std::to_string(i) + suffix;
+}
+}  // namespace
+
+// In the paper's own terms (our transcription's line numbers mean nothing to its author): which
+// unnumbered display, or inline formula, after which numbered one, in which section.
+std::string Display::label() const { return describe(true); }
+std::string Display::place() const { return describe(false); }
+
+namespace {
+
+// The numbered display an unnumbered one (or an inline formula) is counted from: the last one
+// before it in its own section ("" when none), its line, and how many unnumbered displays of
+// that frame come before it, itself included.
+struct Frame {
+  std::string after;
+  int after_line = 0, nth = 1;
+};
+Frame frame_of(const Display& me) {
+  Frame f;
+  for (const Display& d : displays(me.paper)) {
+    if (d.line >= me.line) break;
+    if (d.section != me.section) {  // counted from the start of its own section
+      f = Frame{{}, d.line, 1};
+    } else if (!d.number.empty()) {
+      f = Frame{d.number, d.line, 1};
+    } else if (!me.inline_math) {
+      ++f.nth;
+    }
+  }
+  return f;
+}
+
+// The words an inline formula follows in its sentence (up to six, back to the formula before
+// it or the paragraph's start); "" when fewer than two.
+std::string words_before(const Display& me) {
+  const std::string_view t = text(me.paper);
+  const std::size_t b = me.spans.empty() || me.spans[0].first == 0 ? 0 : me.spans[0].first - 1;
+  std::size_t a = b;
+  while (a > 0 && t[a - 1] != '$' && !(t[a - 1] == '\n' && a >= 2 && t[a - 2] == '\n')) --a;
+  std::vector<std::string> words;
+  std::string w;
+  for (std::size_t i = a; i <= b; ++i) {
+    const char c = i < b ? t[i] : ' ';
+    if (std::isspace(static_cast<unsigned char>(c))) {
+      if (!w.empty()) words.push_back(w);
+      w.clear();
+    } else if (c != '*' && c != '_') {
+      w += c;
+    }
+  }
+  const std::size_t from = words.size() > 6 ? words.size() - 6 : 0;
+  // a sentence's punctuation before the first word kept (", where the" -> "where the")
+  if (from < words.size()) words[from].erase(0, words[from].find_first_not_of(",.;:"));
+  if (from < words.size() && words[from].empty()) words.erase(words.begin() + long(from));
+  if (words.size() - std::min(from, words.size()) < 2) return "";
+  std::string tail = from > 0 ? "… " : "";
+  for (std::size_t i = from; i < words.size(); ++i) tail += (i > from ? " " : "") + words[i];
+  return tail;
+}
+
+}  // namespace
+
+std::string Display::describe(bool with_section) const {
   if (!number.empty()) return "(" + number + ")";
-  std::string s = (inline_math ? "inline, line " : "unnumbered, line ") + std::to_string(line);
-  if (inline_math && part > 0) s += ", formula " + std::to_string(part + 1) + " of the line";
+  const Frame f = frame_of(*this);
+  const std::string& after = f.after;
+  std::string s;
+  if (inline_math) {
+    // After its words, counted among the formulas after the same words in the same frame when
+    // there are several; without words, its count in the text.
+    const auto before = [this](const Display& d) {
+      return d.line < line || (d.line == line && d.part < part);
+    };
+    if (const std::string words = words_before(*this); !words.empty()) {
+      int k = 1, n = 1;
+      for (const Display& d : inline_formulas(paper)) {
+        if (d.line == line && d.part == part) continue;
+        if (d.section != section || words_before(d) != words || frame_of(d).after != after)
+          continue;
+        ++n;
+        if (before(d)) ++k;
+      }
+      s = "the formula after “" + words + "”" +
+          (n > 1 ? " (the " + ordinal(k) + " of " + std::to_string(n) + ")" : "") + " in the text";
+    } else {
+      int nth = 1;
+      for (const Display& d : inline_formulas(paper))
+        if (d.line > f.after_line && before(d)) ++nth;
+      s = "the " + ordinal(nth) + " formula in the text";
+    }
+  } else {
+    s = "the " + ordinal(f.nth) + " unnumbered display";
+  }
+  // "3. Discrete Lagrangian Mechanics" -> "§3 Discrete Lagrangian Mechanics"
+  std::string sec = section;
+  if (const auto sp = sec.find(' '); sp != std::string::npos && sp > 0 && sec[sp - 1] == '.')
+    sec.erase(sp - 1, 1);
+  std::erase(sec, '*');  // Markdown emphasis in a heading
+  if (!sec.empty() && std::isdigit(static_cast<unsigned char>(sec[0]))) sec = "§" + sec;
+  if (!with_section)
+    return s + (!after.empty() ? " after (" + after + ")"
+                : sec.empty()  ? " of the paper"
+                               : " of its section");
+  if (!after.empty())
+    s += " after (" + after + ")" + (sec.empty() ? "" : ", " + sec);
+  else
+    s += sec.empty() ? " of the paper" : " of " + sec;
   if (!context.empty()) s += " (" + context + ")";
   return s;
 }

@@ -48,8 +48,15 @@ struct Display {
   std::string id() const;
   /// "S (39)", "V L288": unique across the papers.
   std::string full_id() const;
-  /// For a reader: "(39)", or "unnumbered, line 288 (Example 2)".
+  /// For a reader, in the paper's terms: "(39)", or "the 2nd unnumbered display after (39),
+  /// §5.1 Numerical examples (Example 2)", "the 1st formula in the text after (4.23), …".
   std::string label() const;
+  /// The label without the section and context (a table that shows them in a column of their
+  /// own): "(39)", "the 2nd unnumbered display after (39)", "the 1st … of its section".
+  std::string place() const;
+
+ private:
+  std::string describe(bool with_section) const;
 };
 
 /// Every display of the paper, in order.

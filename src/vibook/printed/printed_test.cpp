@@ -91,7 +91,10 @@ TEST_CASE("papers: a quote names exactly one display or inline formula") {
   const Display& n = display_quoting(Paper::SS, "\\dot{x}_1 + \\frac{x_1}{|x|^3}");
   CHECK(n.inline_math);
   CHECK(n.id() == "I307");
-  CHECK(n.label() == "inline, line 307 (Proof)");
+  // Named as a reader of the paper finds it, not by our transcription's line.
+  CHECK(n.label() ==
+        "the formula after “Proof. Taking” in the text after (3.13), §3 Discrete Lagrangian "
+        "Mechanics (Proof)");
 }
 
 TEST_CASE("reader: the constructs the papers use") {
