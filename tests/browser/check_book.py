@@ -278,6 +278,8 @@ def static_check(page, text):
     return out
 
 
+# Names of the engine that mean nothing to a reader: the abstract functions' GiNaC names.
+INTERNAL = re.compile(r"vibook_abstract[0-9]")
 pages = sorted(f for f in os.listdir(html_dir) if f.endswith(".html"))
 problems = []
 checked = 0
@@ -289,6 +291,10 @@ for page in pages:
         if path + "/" in text:
             problems.append(f"{page}: names the machine's directory {path}")
     kind = api_kind(page)
+    # The engine's internal names never reach a reader (the API pages document them).
+    if kind is None:
+        for name in sorted(set(INTERNAL.findall(text))):
+            problems.append(f"{page}: internal name {name} (print it in the paper's notation)")
     if kind is None or TEX.search(text) or kind not in seen_kinds:
         browser_pages.append(page)
         if kind is not None:

@@ -79,6 +79,11 @@ cat >"$tmp/mathbad.html" <<'HTML'
 <script src="file:///usr/share/javascript/mathjax/MathJax.js"></script>
 </head><body><p>A slip: \(\dot\) read as \(\ddot x\).</p></body></html>
 HTML
+# The engine's internal name of an abstract function, where the paper writes U.
+cat >"$tmp/internal.html" <<'HTML'
+<!DOCTYPE html><html><head><title>internal</title></head><body>
+<p>Ours: -vibook_abstract1(0,q0)/2</p></body></html>
+HTML
 cat >"$tmp/leak.html" <<HTML
 <!DOCTYPE html><html><head><title>leak</title></head><body>
 <pre>report: $tmp/build/book/figures/verify-report/index.html</pre></body></html>
@@ -110,6 +115,7 @@ grep -q "classB.html: broken image gone.png" "$tmp/bad.log" || { echo "FAIL: sta
 grep -q 'mathbad.html: MathJax error in the formula .dot$' "$tmp/bad.log" || { echo "FAIL: a MathJax parse error not reported"; fail=1; }
 grep -q 'mathbad.html: .*ddot x' "$tmp/bad.log" && { echo "FAIL: a formula that parses was reported"; fail=1; }
 grep -q "leak.html: names the machine's directory $tmp/build" "$tmp/bad.log" || { echo "FAIL: a build path in a page not reported"; fail=1; }
+grep -q "internal.html: internal name vibook_abstract1" "$tmp/bad.log" || { echo "FAIL: an internal name not reported"; fail=1; }
 grep -q "index.html\|classA.html" "$tmp/bad.log" && { echo "FAIL: a clean page was reported"; fail=1; }
 [ $fail = 0 ] && echo "book checker selftest: passed" || cat "$tmp/bad.log"
 exit $fail

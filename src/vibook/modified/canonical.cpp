@@ -3,6 +3,7 @@
 #include "vibook/modified/canonical.hpp"
 
 #include <algorithm>
+#include <regex>
 #include <sstream>
 
 namespace vibook::modified {
@@ -158,13 +159,56 @@ std::string print_term(const Term& t, Format f) {
   return numeric_text(t.coeff, f) + "*" + body;
 }
 
+thread_local const std::vector<std::string>* t_abstract_names = nullptr;
+
+// A subscript as a reader writes it: "k1" and "kp1" are k+1 (q_k1 is q_{k+1}).
+std::string subscript(const std::string& s) {
+  static const std::regex next(R"(^([a-z])p?1$)");
+  std::smatch m;
+  if (std::regex_match(s, m, next)) return m[1].str() + "+1";
+  return s;
+}
+
+// The LaTeX of a symbol made without a TeX name (GiNaC then prints its name as it is, and
+// "q_k1" would read as q_k followed by 1): its letter, with its accent ("bbar" is b̄, "bhat" b̂)
+// or its midpoint index ("qm" is q_m), then its subscript in braces ("q0", "a11", "q_k1" is
+// q_{k+1}, "qm_1" is q_{m,1}). Any other name is printed as it is.
+std::string symbol_latex(const std::string& name) {
+  static const std::regex digits(R"(^([A-Za-z]+?)([0-9]+)$)");
+  static const std::regex letters(R"(^[A-Za-z]+$)");
+  static const std::regex accent(R"(^([A-Za-z])(bar|hat|tilde|ddot|dot)$)");
+  static const std::regex mid(R"(^([a-z])m$)");
+  std::smatch m;
+  std::string base = name, sub;
+  if (const auto u = name.find('_'); u != std::string::npos && u > 0 && u + 1 < name.size() &&
+                                     name.find('_', u + 1) == std::string::npos) {
+    base = name.substr(0, u);
+    sub = subscript(name.substr(u + 1));
+  } else if (std::regex_match(name, m, digits)) {
+    base = m[1].str();
+    sub = m[2].str();
+  }
+  std::string head;
+  if (std::regex_match(base, m, accent))
+    head = "\\" + m[2].str() + "{" + m[1].str() + "}";
+  else if (std::regex_match(base, m, mid))
+    return m[1].str() + "_{m" + (sub.empty() ? "" : "," + sub) + "}";
+  else if (std::regex_match(base, m, letters))
+    head = base;
+  else
+    return name;
+  if (sub.empty()) return head == name ? name : head;
+  return head + "_{" + sub + "}";
+}
+
 std::string print(const ex& e, Format f) {
   if (GiNaC::is_a<numeric>(e)) return numeric_text(GiNaC::ex_to<numeric>(e), f);
   if (GiNaC::is_a<GiNaC::symbol>(e)) {
-    if (f != Format::latex) return GiNaC::ex_to<GiNaC::symbol>(e).get_name();
+    const std::string name = GiNaC::ex_to<GiNaC::symbol>(e).get_name();
+    if (f != Format::latex) return name;
     std::ostringstream os;
     os << GiNaC::latex << e;
-    return os.str();
+    return os.str() == name ? symbol_latex(name) : os.str();
   }
   if (GiNaC::is_a<GiNaC::add>(e)) {
     std::string s;
@@ -191,6 +235,19 @@ std::string print(const ex& e, Format f) {
     const std::string name = GiNaC::ex_to<GiNaC::function>(e).get_name();
     std::string args;
     for (std::size_t k = 0; k < e.nops(); ++k) args += (k ? "," : "") + print(e.op(k), f);
+    if (f == Format::latex && name.rfind("vibook_abstract", 0) == 0 && e.nops() >= 1 &&
+        GiNaC::is_a<numeric>(e.op(0))) {
+      // An abstract function: its family's name (AbstractNames), without the family id.
+      const int family = GiNaC::ex_to<numeric>(e.op(0)).to_int();
+      std::string inner;
+      for (std::size_t k = 1; k < e.nops(); ++k) inner += (k > 1 ? "," : "") + print(e.op(k), f);
+      const bool named = t_abstract_names && family >= 0 &&
+                         family < static_cast<int>(t_abstract_names->size()) &&
+                         !(*t_abstract_names)[static_cast<std::size_t>(family)].empty();
+      const std::string fn = named ? (*t_abstract_names)[static_cast<std::size_t>(family)]
+                                   : "F_{" + std::to_string(family) + "}";
+      return fn + "\\left(" + inner + "\\right)";
+    }
     if (f == Format::latex) {
       const bool known = name == "sin" || name == "cos" || name == "exp" || name == "log";
       return (known ? "\\" + name : "\\mathrm{" + name + "}") + "\\left(" + args + "\\right)";
@@ -260,5 +317,12 @@ std::vector<ex> canonical_operands(const ex& e) {
 }
 
 std::string canonical_string(const ex& e, Format f) { return print(e, f); }
+
+AbstractNames::AbstractNames(std::vector<std::string> tex)
+    : tex_(std::move(tex)), previous_(t_abstract_names) {
+  t_abstract_names = &tex_;
+}
+
+AbstractNames::~AbstractNames() { t_abstract_names = previous_; }
 
 }  // namespace vibook::modified

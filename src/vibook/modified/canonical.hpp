@@ -28,8 +28,26 @@ enum class Format { text, latex, python };
 
 /// The expression in the given format with every sum and product in canonical order.
 /// text: GiNaC's syntax (`-1/12*U_11*v1^2`), parsed back by GiNaC to the same expression;
-/// python: SymPy source (`Rational(-1, 12)*U_11*v1**2`); latex: for MathJax.
+/// python: SymPy source (`Rational(-1, 12)*U_11*v1**2`); latex: for MathJax, a symbol made
+/// without a TeX name written with its subscript (`q0` as \f$q_{0}\f$, `q_k1` as
+/// \f$q_{k+1}\f$, `qm_1` as \f$q_{m,1}\f$).
 std::string canonical_string(const ex& e, Format f = Format::text);
+
+/// The names the abstract functions' families print with in LaTeX on this thread, while an
+/// instance lives (a comparison with a paper sets the paper's letters: U, V, φ): an abstract call
+/// then prints as `U\left(x\right)`; without a name, as `F_{k}\left(x\right)` (k its family),
+/// never as the engine's internal function name.
+class AbstractNames {
+ public:
+  explicit AbstractNames(std::vector<std::string> tex);
+  ~AbstractNames();
+  AbstractNames(const AbstractNames&) = delete;
+  AbstractNames& operator=(const AbstractNames&) = delete;
+
+ private:
+  std::vector<std::string> tex_;
+  const std::vector<std::string>* previous_;
+};
 
 /// The operands of a sum or product in canonical order (any other expression: its operands in
 /// GiNaC's order, which for those is fixed by position).

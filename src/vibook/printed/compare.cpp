@@ -495,6 +495,14 @@ std::vector<std::pair<std::size_t, std::size_t>> list_items(const std::vector<To
 }  // namespace
 
 claims::FormulaComparison compare(const Spec& spec, const std::vector<Case>& cases) {
+  // Our side's abstract functions print with the paper's letters (U, V, φ), never with the
+  // engine's internal names.
+  std::vector<std::string> family_names;
+  if (!cases.empty() && cases[0].notation) {
+    const auto& J = cases[0].notation->jets();
+    for (int f = 0; f < J.families(); ++f) family_names.push_back(J.family_tex(f));
+  }
+  const modified::AbstractNames abstract_names(std::move(family_names));
   claims::FormulaComparison out;
   out.paper = std::string(key(spec.paper));
   out.quote = spec.quote;
