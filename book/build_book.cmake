@@ -41,8 +41,25 @@ endforeach()
 # 2. Claims: the ledger written as JSON and HTML tables. The figures' results (long studies
 #    included) are read back from step 1's claims.json files, not measured twice; the checks
 #    without a figure run now.
+#    The provenance names the source commit: its hash and date (the commit's, not the build's,
+#    so that two builds of one commit write the same bytes), and whether the tree differed.
+find_program(GIT git)
+set(commit "unknown (not a git checkout)")
+if(GIT)
+  execute_process(COMMAND ${GIT} -C ${SOURCE_DIR} log -1 --format=%h%x20of%x20%cs
+                  OUTPUT_VARIABLE git_commit OUTPUT_STRIP_TRAILING_WHITESPACE ERROR_QUIET
+                  RESULT_VARIABLE git_rc)
+  if(git_rc EQUAL 0 AND git_commit)
+    execute_process(COMMAND ${GIT} -C ${SOURCE_DIR} status --porcelain --untracked-files=no
+                    OUTPUT_VARIABLE git_dirty OUTPUT_STRIP_TRAILING_WHITESPACE ERROR_QUIET)
+    set(commit "${git_commit}")
+    if(git_dirty)
+      string(APPEND commit " with local changes")
+    endif()
+  endif()
+endif()
 execute_process(COMMAND ${VIBOOK} claims --json-out ${OUT}/claims.json --html-dir ${GEN}
-                        --figures-dir ${FIGS}
+                        --figures-dir ${FIGS} --commit ${commit}
                 RESULT_VARIABLE rc)
 if(NOT rc EQUAL 0)
   message(FATAL_ERROR "vibook claims failed (exit ${rc})")
@@ -263,6 +280,7 @@ file(COPY ${MATHJAX_SRC}/ DESTINATION ${OUT}/html/mathjax
      PATTERN "test" EXCLUDE
      REGEX "mathjax/fonts(/.*)?$" EXCLUDE)  # HTML-CSS web fonts: not used by SVG output
 file(COPY ${FIGS} DESTINATION ${OUT}/html)  # CSV and PNG beside the book, for download
+file(COPY ${OUT}/claims.json DESTINATION ${OUT}/html)  # the whole ledger, linked from the index
 # Every chapter figure numbered, a link to its full-size picture, its caption listing its CSVs.
 execute_process(COMMAND ${PYTHON3} ${SOURCE_DIR}/book/figure_links.py ${OUT}/html ${SOURCE_DIR}
                 RESULT_VARIABLE rc)

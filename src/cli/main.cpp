@@ -18,6 +18,7 @@
 #include "cli.hpp"
 #include "signals.hpp"
 #include "vibook/claims/ledger.hpp"
+#include "vibook/claims/provenance.hpp"
 #include "vibook/core/errors.hpp"
 #include "vibook/core/output_file.hpp"
 #include "vibook/core/parallel.hpp"
@@ -131,7 +132,8 @@ int cmd_figures(std::vector<std::string> ids, const fs::path& out) {
 }
 
 int cmd_claims(bool json, const std::string& json_out, const std::string& html_dir,
-               const std::string& figures_dir, const std::vector<std::string>& only) {
+               const std::string& figures_dir, const std::vector<std::string>& only,
+               const std::string& commit) {
   // Every output checked before the checks run (they take a minute or more).
   std::optional<fs::path> fdir;
   if (!figures_dir.empty()) {
@@ -156,7 +158,12 @@ int cmd_claims(bool json, const std::string& json_out, const std::string& html_d
     for (const auto& rs : figures::run_checks(chosen))
       for (const auto& r : rs) ledger.record(r);
   }
-  if (!json_out.empty()) write_output_file(json_out, ledger.to_json().dump(2) + "\n", "--json-out");
+  // What the ledger was measured with (the commit as given, the compiler, the libraries).
+  nlohmann::json js = ledger.to_json();
+  js["provenance"] = claims::provenance(commit);
+  int pending = 0;
+  for (const auto& row : ledger.rows()) pending += row.result.status == claims::Status::pending;
+  if (!json_out.empty()) write_output_file(json_out, js.dump(2) + "\n", "--json-out");
   if (!html_dir.empty()) {
     // The book's tables: all claims, one table per paper, one per check (its claims only).
     const auto write = [&](const std::string& name, const std::string& text) {
@@ -164,6 +171,7 @@ int cmd_claims(bool json, const std::string& json_out, const std::string& html_d
     };
     write("claims.html", ledger.to_html());
     write("summary.html", ledger.to_summary_html());
+    write("provenance.html", claims::provenance_html(js["provenance"], pending));
     for (const char* paper : {"S", "V", "SS", "A"})
       write(fmt::format("claims-{}.html", paper), ledger.to_html(paper));
     // A chapter shows each claim once: a claim measured by several checks is shown with the
@@ -195,7 +203,7 @@ int cmd_claims(bool json, const std::string& json_out, const std::string& html_d
   }
   // The ledger is printed whatever else was written (--json-out and --html-dir write "also").
   if (json)
-    std::cout << ledger.to_json().dump(2) << '\n';
+    std::cout << js.dump(2) << '\n';
   else
     std::cout << ledger.to_table();
   return cli::kOk;
@@ -358,6 +366,10 @@ int main(int argc, char** argv) {
                  "also write the JSON ledger to this file (the ledger is still printed)");
   cl->add_option("--html-dir", cl_html_dir,
                  "also write the book's HTML claims tables into this directory");
+  std::string cl_commit;
+  cl->add_option("--commit", cl_commit,
+                 "the source commit to record with the ledger (its provenance in the JSON and "
+                 "the book's landing page); the book build passes git's hash and date");
   cl->add_option("--figures-dir", cl_figures_dir,
                  "read the results of the figures from DIR/ID/claims.json (written by `vibook "
                  "figures --out DIR` of this build) instead of running them again");
@@ -445,7 +457,7 @@ int main(int argc, char** argv) {
     else if (app.got_subcommand("figures"))
       rc = cmd_figures({}, figs_out);
     else if (app.got_subcommand("claims"))
-      rc = cmd_claims(cl_json, cl_json_out, cl_html_dir, cl_figures_dir, cl_only);
+      rc = cmd_claims(cl_json, cl_json_out, cl_html_dir, cl_figures_dir, cl_only, cl_commit);
     else if (app.got_subcommand("modified"))
       rc = modified();
     else if (app.got_subcommand("verify"))
