@@ -77,6 +77,16 @@ if [ $s = 0 ] && native "$tmp/o4" && [ ! -e "$tmp/marker" ] && [ "$(wc -l <"$tmp
 else
   bad "world-writable cache: status $s, $(cat "$tmp/e4")"
 fi
+# Nothing is created inside a refused directory (the check comes before any mkdir).
+mkdir -m 777 "$tmp/c4e"
+chmod 777 "$tmp/c4e"
+VIBOOK_CACHE_DIR="$tmp/c4e" "$V" verify "${ld[@]}" >"$tmp/o4e" 2>"$tmp/e4e"
+s=$?
+if [ $s = 0 ] && [ -z "$(ls -A "$tmp/c4e")" ] && grep -q "writable by group or others" "$tmp/e4e"; then
+  ok
+else
+  bad "a refused cache directory was written in: status $s, $(ls -A "$tmp/c4e")"
+fi
 # A cache directory that is a link to one of ours is refused too.
 ln -s "$tmp/c1/tapes" "$tmp/c5"
 mkdir -m 700 "$tmp/c5p"

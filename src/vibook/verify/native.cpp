@@ -105,6 +105,19 @@ bool ours(const struct stat& st) {
 // Create `dir` and its missing parents with mode 0700; then require it and its parent to be
 // ours. Returns the reason it is not trusted (empty: trusted).
 std::string trust_directory(const fs::path& dir) {
+  auto check = [](const fs::path& d, bool must_exist) -> std::string {
+    struct stat st {};
+    if (::lstat(d.c_str(), &st) != 0) return must_exist ? "cannot read " + d.string() : "";
+    if (!S_ISDIR(st.st_mode)) return d.string() + " is not a directory (a link is refused)";
+    if (!ours(st))
+      return d.string() + (st.st_uid != geteuid() ? " belongs to another user"
+                                                  : " is writable by group or others");
+    return {};
+  };
+  // What exists is judged before anything is created: nothing is made inside a directory that
+  // is refused.
+  for (const fs::path& d : {dir, dir.parent_path()})
+    if (std::string why = check(d, false); !why.empty()) return why;
   std::vector<fs::path> missing;
   for (fs::path d = dir; !d.empty() && d != d.root_path(); d = d.parent_path()) {
     struct stat st {};
@@ -113,14 +126,8 @@ std::string trust_directory(const fs::path& dir) {
   }
   for (auto it = missing.rbegin(); it != missing.rend(); ++it)
     if (::mkdir(it->c_str(), 0700) != 0 && errno != EEXIST) return "cannot create " + it->string();
-  for (const fs::path& d : {dir, dir.parent_path()}) {
-    struct stat st {};
-    if (::lstat(d.c_str(), &st) != 0) return "cannot read " + d.string();
-    if (!S_ISDIR(st.st_mode)) return d.string() + " is not a directory (a link is refused)";
-    if (!ours(st))
-      return d.string() + (st.st_uid != geteuid() ? " belongs to another user"
-                                                  : " is writable by group or others");
-  }
+  for (const fs::path& d : {dir, dir.parent_path()})
+    if (std::string why = check(d, true); !why.empty()) return why;
   return {};
 }
 
