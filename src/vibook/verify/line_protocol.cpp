@@ -295,7 +295,17 @@ void LineProtocolStepper::every(double h, long long n, double* q, double* p,
     const std::string line = read_line(now_s() + timeout_, k + 1 < n);
     if (const auto why = parse_answer(line, q, p))
       fail("the stepper answered 'error'" + (why->empty() ? "" : ": " + one_line(*why)));
-    each();
+    try {
+      each();
+    } catch (...) {
+      // The caller stops here (a state it refuses): the rest of this answer is read and
+      // dropped, so that the next request starts clean.
+      std::vector<double> rest(static_cast<std::size_t>(2 * dof_));
+      for (long long j = k + 1; j < n; ++j)
+        if (parse_answer(read_line(now_s() + timeout_, j + 1 < n), rest.data(), rest.data() + dof_))
+          break;
+      throw;
+    }
   }
 }
 
