@@ -15,7 +15,7 @@ set(OUT ${BINARY_DIR}/book)
 set(GEN ${OUT}/gen)
 set(IMAGES ${OUT}/images)
 set(FIGS ${OUT}/figures)
-file(REMOVE_RECURSE ${OUT}/html ${GEN} ${IMAGES} ${FIGS})
+file(REMOVE_RECURSE ${OUT}/html ${GEN} ${IMAGES} ${FIGS} ${OUT}/errata)
 file(MAKE_DIRECTORY ${GEN} ${IMAGES} ${FIGS})
 
 # 1. Figures: CSV, SVG, PNG and claims.json per figure, regenerated in parallel.
@@ -78,6 +78,15 @@ execute_process(COMMAND ${PYTHON3} ${SOURCE_DIR}/book/formulas.py ${OUT}/claims.
                 RESULT_VARIABLE rc)
 if(NOT rc EQUAL 0)
   message(FATAL_ERROR "formulas.py failed (exit ${rc})")
+endif()
+
+# 2a'. The errata sheets, one per paper (book/errata-*.md include them), and the same sheets as
+#      Markdown, copied beside the HTML in step 4.
+execute_process(COMMAND ${PYTHON3} ${SOURCE_DIR}/book/errata.py ${OUT}/claims.json
+                        ${OUT}/displays.json ${SOURCE_DIR}/papers ${GEN} ${OUT}/errata
+                RESULT_VARIABLE rc)
+if(NOT rc EQUAL 0)
+  message(FATAL_ERROR "errata.py failed (exit ${rc})")
 endif()
 
 # 2b. The modified-equations chapter's formulas, derived by the engine now.
@@ -281,6 +290,8 @@ file(COPY ${MATHJAX_SRC}/ DESTINATION ${OUT}/html/mathjax
      REGEX "mathjax/fonts(/.*)?$" EXCLUDE)  # HTML-CSS web fonts: not used by SVG output
 file(COPY ${FIGS} DESTINATION ${OUT}/html)  # CSV and PNG beside the book, for download
 file(COPY ${OUT}/claims.json DESTINATION ${OUT}/html)  # the whole ledger, linked from the index
+file(GLOB errata_md ${OUT}/errata/errata-*.md)
+file(COPY ${errata_md} DESTINATION ${OUT}/html)  # the errata sheets as text, linked from each
 # Every chapter figure numbered, a link to its full-size picture, its caption listing its CSVs.
 execute_process(COMMAND ${PYTHON3} ${SOURCE_DIR}/book/figure_links.py ${OUT}/html ${SOURCE_DIR}
                 RESULT_VARIABLE rc)
