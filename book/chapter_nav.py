@@ -6,6 +6,7 @@ book, in the order of the table of contents on the first page (book/index.md, it
 The bar goes at the top and the bottom of each page's contents:
     ← previous: TITLE    contents    next: TITLE →
 Usage: chapter_nav.py BOOK_HTML_DIR SOURCE_DIR"""
+import glob
 import html
 import os
 import re
@@ -28,6 +29,25 @@ def link(page, rel, text):
     return (f'<a class="nav-{rel}" rel="{rel}" href="{files[page]}">{text}'
             f'{html.escape(title.get(page, page))}</a>')
 
+
+# Doxygen also writes an empty file page beside each page of the book (NAME_8md.html, reached
+# only from its search index). Each becomes a redirect to the page its Markdown file holds, so
+# that no stray page is left and a search for the file name still lands on the chapter.
+redirected = 0
+for md in sorted(glob.glob(os.path.join(source_dir, "book", "*.md"))):
+    name = os.path.basename(md)[:-3]
+    stray = os.path.join(html_dir, name.replace("_", "__") + "_8md.html")
+    if not os.path.exists(stray):
+        continue
+    with open(md, encoding="utf-8") as f:
+        head = re.match(r"#\s+(.*?)\s*\{#([\w-]+)\}", f.read())
+    target = ("index.html" if not head or head.group(2) == "mainpage" else head.group(2) + ".html")
+    bookfiles.write_text(stray, '<!DOCTYPE html>\n<html><head><meta charset="utf-8">'
+                                f'<meta http-equiv="refresh" content="0; url={target}">'
+                                f'<title>{html.escape(name)}.md</title></head><body>'
+                                f'<p><a href="{target}">{html.escape(name)}.md</a></p>'
+                                '</body></html>\n')
+    redirected += 1
 
 changed = 0
 for i, page in enumerate(pages):
@@ -53,4 +73,5 @@ for i, page in enumerate(pages):
     text = text[:start] + "\n" + bar + text[start:end] + bar + "\n" + text[end:]
     bookfiles.write_text(path, text)
     changed += 1
-print(f"chapter_nav: previous/next links on {changed} pages")
+print(f"chapter_nav: previous/next links on {changed} pages, {redirected} file pages "
+      "redirected to their pages")

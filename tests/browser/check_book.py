@@ -291,6 +291,17 @@ for page in pages:
         if path + "/" in text:
             problems.append(f"{page}: names the machine's directory {path}")
     kind = api_kind(page)
+    # Doxygen's empty file page of a book page (NAME_8md.html) is a redirect to that page
+    # (chapter_nav.py): nothing else, and its target exists.
+    if page.endswith("_8md.html"):
+        m = re.search(r'http-equiv="refresh" content="0; url=([\w.-]+)"', text)
+        if not m or 'class="contents"' in text:
+            problems.append(f"{page}: a stray Doxygen file page (chapter_nav.py makes it a "
+                            f"redirect to its book page)")
+        elif not os.path.exists(os.path.join(html_dir, m.group(1))):
+            problems.append(f"{page}: redirects to {m.group(1)}, which does not exist")
+        checked += 1
+        continue
     # The engine's internal names never reach a reader (the API pages document them).
     if kind is None:
         for name in sorted(set(INTERNAL.findall(text))):
