@@ -442,9 +442,15 @@ constexpr Kind kKinds[] = {
      "not reproduced: the measured order is still converging at the smallest step sizes of the "
      "window fixed beforehand"},
     {"not-reproduced-unexplained", "no cause given", "not reproduced: cause not given"},
-    {"pending", "pending", "pending"}};
+    {"pending", "pending", "pending"},
+    // Counted apart from the claims: a deliberately wrong method of the field audit that vibook
+    // failed (the audit working, not a method reproduced), and a question the paper leaves open.
+    {"flagged", "flagged", "deliberately wrong methods of the audit, failed as they must be"},
+    {"question", "not a claim", "questions the paper leaves open, measured"}};
 
 std::string kind_of(const ClaimResult& r) {
+  if (r.id.find("-X-") != std::string::npos) return "question";
+  if (r.id.starts_with("A-WRONG-") && r.status == Status::reproduced) return "flagged";
   switch (r.status) {
     case Status::reproduced:
       return "reproduced";
@@ -488,24 +494,30 @@ std::string Ledger::to_summary_html() const {
   };
   // A cause of "not reproduced" gets a column when some claim has it ("does not hold" always),
   // so that the table fits the column of the page.
+  // Rows counted apart (flagged wrong methods, questions) get a column only when there are some.
+  auto apart = [](std::string_view key) { return key == "flagged" || key == "question"; };
   std::vector<const Kind*> shown;
   int causes = 0;
+  std::string apart_heads;
   for (const auto& k : kKinds) {
     const std::string_view key = k.key;
     const bool cause = key.starts_with("not-reproduced-");
-    if (cause && key != "not-reproduced-does-not-hold" && count({}, key) == 0) continue;
+    if ((cause && key != "not-reproduced-does-not-hold") || apart(key))
+      if (count({}, key) == 0) continue;
     shown.push_back(&k);
     causes += cause ? 1 : 0;
+    if (key == "flagged") apart_heads += "<th rowspan=\"2\">wrong<br>method,<br>flagged</th>";
+    if (key == "question") apart_heads += "<th rowspan=\"2\">not a<br>claim</th>";
   }
   std::string out = fmt::format(
       "<table class=\"vibook-summary\">\n<tr><th rowspan=\"2\">paper</th><th "
       "colspan=\"2\">reproduced</th><th rowspan=\"2\">erratum:<br>misprint</th><th "
-      "colspan=\"{}\">not reproduced</th><th rowspan=\"2\">pending</th><th "
+      "colspan=\"{}\">not reproduced</th><th rowspan=\"2\">pending</th>{}<th "
       "rowspan=\"2\">claims</th><th rowspan=\"2\">errata<br>found</th></tr>\n<tr>",
-      causes);
+      causes, apart_heads);
   for (const Kind* k : shown) {
     const std::string_view key = k->key;
-    if (key == "erratum-misprint" || key == "pending") continue;
+    if (key == "erratum-misprint" || key == "pending" || apart(key)) continue;
     out += fmt::format("<th>{}</th>", key == "reproduced" ? "as stated" : k->column);
   }
   out += "</tr>\n";
@@ -515,9 +527,10 @@ std::string Ledger::to_summary_html() const {
              r.result.status == Status::erratum;
     });
   };
+  // The claims column: what the status columns count (rows counted apart are not claims).
   auto claims_of = [&](std::string_view paper) {
     return std::count_if(rows_.begin(), rows_.end(), [&](const Row& r) {
-      return is_claim(r) && (paper.empty() || r.info.paper == paper);
+      return is_claim(r) && (paper.empty() || r.info.paper == paper) && !apart(kind_of(r.result));
     });
   };
   for (const auto& [key, name] : kPapers) {
@@ -533,7 +546,9 @@ std::string Ledger::to_summary_html() const {
                      errata({}));
   // Each claim that is not simply reproduced, headed by what failed, with a link to its row.
   for (const auto& k : kKinds) {
-    if (std::string_view(k.key) == "reproduced" || std::string_view(k.key) == "pending") continue;
+    if (std::string_view(k.key) == "reproduced" || std::string_view(k.key) == "pending" ||
+        std::string_view(k.key) == "flagged")
+      continue;
     std::string items;
     for (const auto& r : rows_) {
       if (!is_claim(r) || kind_of(r.result) != k.key) continue;

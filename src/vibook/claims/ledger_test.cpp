@@ -1,5 +1,6 @@
 // Doctests of the ledger's HTML: the reproduction report and the chapter excerpts.
 #include <doctest/doctest.h>
+#include <fmt/format.h>
 
 #include <string>
 
@@ -102,4 +103,37 @@ TEST_CASE("a long note is never folded inside a formula") {
   REQUIRE(fold != std::string::npos);
   CHECK(html.rfind("which agrees.", fold) != std::string::npos);  // folded after the formula
   CHECK(html.find("&#92;right]&#92;)") < fold);  // the formula whole, before the fold
+}
+
+TEST_CASE("the landing page's counts: a flagged wrong method and a question are not claims") {
+  Ledger ledger;
+  auto record = [&](const char* id, Status s) {
+    ClaimResult r;
+    r.id = id;
+    r.status = s;
+    r.source = "test";
+    ledger.record(r);
+  };
+  record("A-WRONG-DIGIT", Status::reproduced);  // vibook failed it, as it must
+  record("A-YOSHIDA4", Status::reproduced);
+  record("S-X-EXIST", Status::reproduced);
+  const std::string html = ledger.to_summary_html();
+  CHECK(html.find("wrong<br>method,<br>flagged") != std::string::npos);
+  CHECK(html.find("not a<br>claim") != std::string::npos);
+  // The audit's row: one reproduced, one flagged; its claims column counts the reproduced one
+  // and the catalogue's other audit rows (pending here), never the flagged one.
+  const auto audit = html.substr(html.find("<td>Field audit</td>"));
+  const auto row = audit.substr(0, audit.find("</tr>"));
+  CHECK(row.find("<td class=\"kind-reproduced\">1</td>") != std::string::npos);
+  CHECK(row.find("<td class=\"kind-flagged\">1</td>") != std::string::npos);
+  std::size_t audit_rows = 0;
+  for (const auto& c : catalogue()) audit_rows += c.paper == "A" ? 1 : 0;
+  CHECK(row.find(fmt::format("<td>{}</td>", audit_rows - 1)) != std::string::npos);
+  // Sharma's row: the question counted apart.
+  const auto sharma = html.substr(html.find("<td>Sharma et al. 2022</td>"));
+  CHECK(sharma.substr(0, sharma.find("</tr>")).find("<td class=\"kind-question\">1</td>") !=
+        std::string::npos);
+  // A flagged method is not listed among the findings; the question is, under its own heading.
+  CHECK(html.find("questions the paper leaves open") != std::string::npos);
+  CHECK(html.find("deliberately wrong methods of the audit") == std::string::npos);
 }
