@@ -345,19 +345,23 @@ std::vector<claims::ClaimResult> run_fig345(const Context& ctx) {
 // excluded), and over the paper's i = 1..6 for the report.
 std::vector<claims::ClaimResult> run_fig6(const Context& ctx) {
   struct Ic {
-    const char* name;
+    const char* name;  ///< the key of its values and data
+    const char* says;  ///< the reading in words, for the note and the headline
     State<2> s0;
   };
   std::vector<Ic> ics(3);
   ics[0].name = "perihelion_e0.6";
+  ics[0].says = "the e = 0.6 orbit from perihelion";
   ics[0].s0 = kepler_perihelion_state(0.6);
   ics[1].name = "x0_-3_p0_0.45";
+  ics[1].says = "the orbit from x = (−3, 0), p = (0, 0.45)";
   ics[1].s0.q = Vec<double, 2>(-3.0, 0.0);
   ics[1].s0.p = Vec<double, 2>(0.0, 0.45);
   // Both of §5's starts lie on the orbit's axis, where a symmetric method's one-period error
   // in e cancels to higher order; a start off the axis (the e = 0.6 orbit a fifth of a period
   // after perihelion) is a third reading.
   ics[2].name = "e0.6_at_T/5";
+  ics[2].says = "the e = 0.6 orbit from a fifth of a period after perihelion";
   {
     const KeplerOrbit o = KeplerOrbit::perihelion(0.6);
     const auto st = o.at(2 * std::numbers::pi / 5);
@@ -373,7 +377,7 @@ std::vector<claims::ClaimResult> run_fig6(const Context& ctx) {
   for (const auto& ic : ics) {
     for (const bool literal : {false, true}) {
       const std::string reading =
-          std::string(ic.name) + (literal ? ", h = 2^-i literally" : ", period closed (h = T/n)");
+          std::string(ic.says) + (literal ? ", h = 2^-i literally" : ", period closed (h = T/n)");
       std::string tag = std::string(ic.name) + (literal ? "_h2i" : "");
       for (auto& ch : tag)
         if (ch == '/') ch = '_';
