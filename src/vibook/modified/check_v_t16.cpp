@@ -334,9 +334,10 @@ std::vector<claims::ClaimResult> run(const Context&) {
           "interior node on the curve, \\(x_{{n+1/2}} = x(t + h/2)\\); that reproduces (4.23) term "
           "by "
           "term (check-modified) but is not the discrete Lagrangian of the x_n sequence: its "
-          "modified equation gives \\(h^{{{:.2f}}}\\). The printed (4.24) also differs from the "
-          "Euler–"
-          "Lagrange equation of (4.23) (check-modified, SS-T12 note). Kepler, \\(\\phi^{{[1]}} = "
+          "modified equation gives \\(h^{{{:.2f}}}\\). The printed (4.24) is the Euler–Lagrange "
+          "equation of the printed (4.23), as the proof says (checked exactly in SymPy, "
+          "tests/cli/ss_eq424_sympy.py): its error is inherited from (4.23). Kepler, "
+          "\\(\\phi^{{[1]}} = "
           "0.3U\\), "
           "RK4 with 400 substeps in long double, h = 0.2 … 0.025; defects: {}; {}; {}.",
           vi2[2].slope, vi2[0].slope, expected2, vi2[1].slope, describe(vi2[0]), describe(vi2[1]),
