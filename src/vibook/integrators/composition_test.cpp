@@ -12,6 +12,7 @@
 #include "vibook/core/precision.hpp"
 #include "vibook/integrators/composition.hpp"
 #include "vibook/integrators/kernels.hpp"
+#include "vibook/integrators/splitting_sequence.hpp"
 #include "vibook/problems/problems.hpp"
 #include "vibook/verify/reference.hpp"
 #include "vibook/verify/verify.hpp"
@@ -173,4 +174,84 @@ TEST_CASE("composition: measured orders on Hénon–Heiles, two-sided") {
   const double p2 =
       fitted([&](double h) { return henon_heiles_error<SE, SEA>(sw, h); }, {0.05, 0.025, 0.0125});
   CHECK(std::abs(p2 - 2) < 0.2);
+}
+
+// --- splittings (splitting_sequence.hpp) ------------------------------------------------------
+
+TEST_CASE("splitting: coefficients as expressions, sequences, and the equivalent composition") {
+  const MpfrDigits digits(kDigits);
+  using R = mpfr_real;
+  const R theta = comp::evaluate_coefficient<R>("--splitting", "1/(2 - 2^(1/3))");
+  CHECK(abs(theta - R(1) / (2 - cbrt(R(2)))) < R("1e-115"));
+  CHECK(abs(comp::evaluate_coefficient<R>("--splitting", "1/2-sqrt(3)/6") -
+            (R(1) / 2 - sqrt(R(3)) / 6)) < R("1e-115"));
+  CHECK(comp::evaluate_coefficient<R>("--splitting", "-(3)*-2") == 6);
+  for (const char* bad : {"", "1/0", "sqrt(-1)", "(1", "2^", "1..2", "x", "(-8)^(1/3)", "1 2"})
+    CHECK_THROWS_AS(comp::evaluate_coefficient<R>("--splitting", bad), ArgumentError);
+  CHECK_THROWS_AS(comp::parse_sequence<R>("--splitting", "drift:1,push:1"), ArgumentError);
+  CHECK_THROWS_AS(comp::parse_sequence<R>("--splitting", "drift 1"), ArgumentError);
+  // Ruth's method as published (kick first) is the catalogue's composition 7/24*, 3/8, 3/8*,
+  // -25/24, 1* of symplectic Euler (drift, then kick) and its adjoint (*).
+  const auto ruth = comp::parse_sequence<R>("--splitting", comp::find_splitting("ruth-3")->flows);
+  const auto st = comp::as_symplectic_euler_composition(ruth, 1e-100);
+  const auto want = comp::catalogue_stages<R>("ruth3", kDigits);
+  REQUIRE(st.size() == want.size());
+  for (std::size_t i = 0; i < st.size(); ++i) {
+    CHECK(abs(st[i].c - want[i].c) < R("1e-115"));
+    CHECK(st[i].adjoint == want[i].adjoint);
+  }
+  // Leapfrog, drift first: se at h/2, then its adjoint: Störmer-Verlet. Merged flows: a kick
+  // written in two halves is one kick.
+  const auto lf = comp::as_symplectic_euler_composition(
+      comp::parse_sequence<R>("--splitting", "drift:1/2,kick:1/4,kick:3/4,drift:1/2"), 1e-100);
+  REQUIRE(lf.size() == 2);
+  CHECK((lf[0].c == R(1) / 2 && !lf[0].adjoint && lf[1].c == R(1) / 2 && lf[1].adjoint));
+  // Inconsistent (the drifts sum to 1, the kicks to 1/2): no equivalent composition.
+  CHECK(comp::as_symplectic_euler_composition(
+            comp::parse_sequence<R>("--splitting", "drift:1/2,kick:1/2,drift:1/2"), 1e-100)
+            .empty());
+  CHECK(comp::is_palindrome(comp::parse_sequence<R>("--splitting", "drift:1/2,kick:1,drift:1/2"),
+                            1e-60));
+  CHECK_FALSE(comp::is_palindrome(comp::parse_sequence<R>("--splitting", "drift:1,kick:1"), 1e-60));
+}
+
+TEST_CASE("splitting: the two-flow order conditions against known orders, and wrong variants") {
+  const MpfrDigits digits(kDigits);
+  using R = mpfr_real;
+  // The free algebra's log of exp(A) exp(B): A + B + [A, B]/2 + ... (the word AB has 1/2).
+  {
+    const comp::TwoLetterAlgebra T(3);
+    const auto L = comp::splitting_log(T, comp::parse_sequence<R>("--splitting", "drift:1,kick:1"));
+    CHECK(abs(L[static_cast<std::size_t>(comp::TwoLetterAlgebra::index(2, 1u))] - R(1) / 2) <
+          R("1e-115"));  // A B
+    CHECK(abs(L[static_cast<std::size_t>(comp::TwoLetterAlgebra::index(2, 2u))] + R(1) / 2) <
+          R("1e-115"));  // B A
+    // BCH at weight 3: (1/12)[A,[A,B]] gives the word AAB the coefficient 1/12.
+    CHECK(abs(L[static_cast<std::size_t>(comp::TwoLetterAlgebra::index(3, 1u))] - R(1) / 12) <
+          R("1e-115"));
+  }
+  // Every catalogue entry reaches exactly its documented order (the next weight fails).
+  for (const auto& e : comp::splitting_catalogue()) {
+    INFO(e.name);
+    const auto oc = comp::splitting_order_conditions(
+        comp::parse_sequence<R>("--splitting", e.flows), e.order + 2);
+    CHECK(oc.order == e.order);
+  }
+  // Forest-Ruth stepped as a non-palindromic sequence (its last half drift moved to the front,
+  // so that the first drift is whole): order 1. One kick's sign flipped: not consistent.
+  const std::string t = "(2-2^(1/3))";
+  const auto moved = comp::splitting_order_conditions(
+      comp::parse_sequence<R>("--splitting", "drift:1/" + t + ",kick:1/" + t +
+                                                 ",drift:(1-2^(1/3))/(2*" + t + "),kick:-2^(1/3)/" +
+                                                 t + ",drift:(1-2^(1/3))/(2*" + t + "),kick:1/" +
+                                                 t),
+      6);
+  CHECK(moved.order == 1);
+  const auto flipped = comp::splitting_order_conditions(
+      comp::parse_sequence<R>("--splitting", "drift:1/(2*" + t + "),kick:-1/" + t +
+                                                 ",drift:(1-2^(1/3))/(2*" + t + "),kick:-2^(1/3)/" +
+                                                 t + ",drift:(1-2^(1/3))/(2*" + t + "),kick:1/" +
+                                                 t + ",drift:1/(2*" + t + ")"),
+      6);
+  CHECK(flipped.order == 0);
 }

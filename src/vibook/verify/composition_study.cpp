@@ -6,14 +6,17 @@
 #include "vibook/verify/composition_study.hpp"
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <limits>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include <fmt/format.h>
 #include <fmt/ranges.h>
+#include <boost/multiprecision/cpp_int.hpp>
 
 #include "vibook/integrators/kernels.hpp"
 #include "vibook/integrators/splitting.hpp"
@@ -129,6 +132,124 @@ GeneratingStep generating_composition(const std::string& b, const P& prob,
   return composed_generating<N>(vi2, vi2, c, adj);
 }
 
+// --- splittings (splitting_sequence.hpp) -----------------------------------------------------
+
+// A coefficient typed as an exact ratio of decimals ("7/24", "-0.25", "3"), as a rational; none
+// for anything else (an expression, an exponent).
+std::optional<boost::multiprecision::cpp_rational> exact_ratio(std::string t) {
+  using boost::multiprecision::cpp_int;
+  using boost::multiprecision::cpp_rational;
+  t.erase(0, t.find_first_not_of(" \t"));
+  t.erase(t.find_last_not_of(" \t") + 1);
+  auto decimal = [](const std::string& d) -> std::optional<cpp_rational> {
+    std::size_t i = 0;
+    bool minus = false;
+    if (i < d.size() && (d[i] == '-' || d[i] == '+')) minus = d[i++] == '-';
+    std::string digits;
+    int scale = -1;
+    for (; i < d.size(); ++i) {
+      if (d[i] == '.' && scale < 0) {
+        scale = 0;
+      } else if (std::isdigit(static_cast<unsigned char>(d[i]))) {
+        digits += d[i];
+        if (scale >= 0) ++scale;
+      } else {
+        return std::nullopt;
+      }
+    }
+    if (digits.empty() || digits.size() > 200) return std::nullopt;
+    // no leading zeros: Boost reads "0193" as octal
+    digits.erase(0, std::min(digits.find_first_not_of('0'), digits.size() - 1));
+    cpp_rational r(cpp_int(digits), pow(cpp_int(10), std::max(scale, 0)));
+    return minus ? cpp_rational(-r) : r;
+  };
+  const auto slash = t.find('/');
+  const auto a = decimal(t.substr(0, slash));
+  if (!a) return std::nullopt;
+  if (slash == std::string::npos) return a;
+  const auto b = decimal(t.substr(slash + 1));
+  if (!b || *b == 0) return std::nullopt;
+  return *a / *b;
+}
+
+}  // namespace
+
+CompositionSpec splitting_spec(const std::string& arg, const std::string& seq) {
+  CompositionSpec spec;
+  spec.base = find_composition_base("se");
+  spec.splitting = comp::find_splitting(seq);
+  const std::string flows_text = spec.splitting ? spec.splitting->flows : seq;
+  spec.flows_typed = flows_text;
+  if (!spec.splitting && flows_text.find(':') == std::string::npos) {
+    std::vector<std::string> names;
+    for (const auto& e : comp::splitting_catalogue()) names.push_back(e.name);
+    throw ArgumentError(arg, fmt::format("no catalogue splitting '{}' ({}), and not a sequence "
+                                         "of flows drift:COEFFICIENT,kick:COEFFICIENT,...",
+                                         seq, fmt::join(names, ", ")));
+  }
+  const MpfrDigits digits(kCompositionDigits);
+  spec.flows = comp::parse_sequence<mpfr_real>(arg, flows_text);
+  if (spec.flows.size() > 128) throw ArgumentError(arg, "has more than 128 flows");
+  for (std::size_t i = 0; i < spec.flows.size(); ++i)
+    if (!(abs(spec.flows[i].c) <= mpfr_real(1e3)))
+      throw ArgumentError(arg, fmt::format("flow {} lies beyond 1e3 in size", i + 1));
+  // Equal totals to within the rounding of 120 digits (exact coefficients agree far closer).
+  // Without them there is no equivalent composition: the method is not consistent, and its
+  // order conditions of weight 1 say so (measure_composition fails it on them).
+  spec.typed = comp::as_symplectic_euler_composition(spec.flows, 1e-100);
+  if (spec.typed.empty()) {
+    spec.not_exact = "not derived: the method is not consistent";
+    return spec;
+  }
+  // The same stages exactly, when every flow is a ratio of decimals: the symbolic engine's
+  // variational order needs the coefficients exact.
+  std::vector<boost::multiprecision::cpp_rational> exact;
+  {
+    std::vector<std::pair<bool, boost::multiprecision::cpp_rational>> flows;
+    std::size_t from = 0;
+    while (from <= flows_text.size() && spec.not_exact.empty()) {
+      const auto comma = std::min(flows_text.find(',', from), flows_text.size());
+      const std::string item = flows_text.substr(from, comma - from);
+      const auto colon = item.find(':');
+      const auto r = exact_ratio(item.substr(colon + 1));
+      if (!r)
+        spec.not_exact = "not derived: the coefficient '" + item.substr(colon + 1) +
+                         "' is an expression, and the engine's zero test needs the "
+                         "coefficients as exact ratios";
+      else if (*r != 0) {
+        const bool kick = item.find("kick") != std::string::npos;
+        if (!flows.empty() && flows.back().first == kick) {
+          flows.back().second += *r;
+          if (flows.back().second == 0) flows.pop_back();
+        } else {
+          flows.push_back({kick, *r});
+        }
+      }
+      from = comma + 1;
+    }
+    if (spec.not_exact.empty() && flows.size() >= 2) {
+      boost::multiprecision::cpp_rational g = 0;
+      for (std::size_t j = 0; j + 1 < flows.size(); ++j) {
+        g = flows[j].second - g;
+        exact.push_back(g);
+      }
+    }
+  }
+  std::vector<std::string> items;
+  for (std::size_t j = 0; j < spec.typed.size(); ++j) {
+    const auto& st = spec.typed[j];
+    items.push_back((exact.size() == spec.typed.size() ? exact[j].str()
+                                                       : st.c.str(40, std::ios_base::fmtflags{})) +
+                    (st.adjoint ? "*" : ""));
+  }
+  spec.coefficients = fmt::format("{}", fmt::join(items, ","));
+  if (exact.size() != spec.typed.size() && spec.not_exact.empty())
+    spec.not_exact = "not derived: the coefficients are not exact ratios";
+  return spec;
+}
+
+namespace {
+
 // The stages of a composition, and the order it is held to.
 struct Composed {
   std::vector<double> c;
@@ -138,9 +259,120 @@ struct Composed {
   double conditions_order = 0;  ///< the order the conditions give (below 1: not consistent)
 };
 
+// A splitting's flows and its order conditions for two flows at 120 digits, printed and written
+// to rep; its equivalent composition shown beside them (and stepped).
+Composed splitting_conditions(const CompositionSpec& p, MapMeasurement& rep) {
+  json& js = rep.js;
+  std::vector<double> c;
+  std::vector<bool> adj;
+  comp::OrderConditions oc, visible, as_composition;
+  bool palindrome = false;
+  std::vector<std::string> flow_text;
+  json flows = json::array();
+  {
+    const MpfrDigits digits(kCompositionDigits);
+    for (const auto& s : p.typed) {
+      c.push_back(static_cast<double>(s.c));
+      adj.push_back(s.adjoint);
+    }
+    for (const auto& f : p.flows) {
+      flow_text.push_back(fmt::format("{} {:.16g}", f.kick ? "kick" : "drift", double(f.c)));
+      flows.push_back({{"flow", f.kick ? "kick" : "drift"}, {"c", double(f.c)}});
+    }
+    const int W = std::min(
+        10,
+        std::max(4, int(std::ceil(p.expected.value_or(p.splitting ? p.splitting->order : 8))) + 1));
+    oc = comp::splitting_order_conditions(p.flows, W, kConditionTol);
+    visible = comp::splitting_order_conditions(p.flows, W, kVisibleTol);
+    as_composition = comp::order_conditions(p.typed, false, W, kConditionTol);
+    palindrome = comp::is_palindrome(p.flows, 1e-60);
+  }
+  double expected;
+  std::string expected_from;
+  if (p.expected) {
+    expected = *p.expected;
+    expected_from = p.expected_from;
+  } else if (p.splitting) {
+    expected = p.splitting->order;
+    expected_from = "documented";
+  } else {
+    // the order its conditions give, and never below 1: a method is at least consistent
+    expected = std::max(1, visible.order);
+    expected_from = fmt::format("the order conditions at tolerance {:.0e}, at least 1", kVisibleTol);
+  }
+  const std::size_t kicks = static_cast<std::size_t>(
+      std::count_if(p.flows.begin(), p.flows.end(), [](const auto& f) { return f.kick; }));
+  rep.line("splitting", fmt::format("{} flows of H = T(p) + V(q) ({} drifts, {} kicks), {}",
+                                    p.flows.size(), p.flows.size() - kicks, kicks,
+                                    palindrome ? "a palindrome (symmetric: its own adjoint)"
+                                               : "not a palindrome (not symmetric)"));
+  rep.line("  flows", fmt::format("in the order they act: {}", fmt::join(flow_text, ", ")));
+  rep.line("  source", p.splitting ? p.splitting->name + ": " + p.splitting->source
+                                   : "as typed: " + p.flows_typed);
+  if (c.empty()) {
+    const auto [a, b] = [&] {
+      const MpfrDigits digits(kCompositionDigits);
+      const auto t = comp::totals(p.flows);
+      return std::pair{static_cast<double>(t.first), static_cast<double>(t.second)};
+    }();
+    rep.line("  as a composition",
+             fmt::format("none: the drifts sum to {:.17g} and the kicks to {:.17g} (a consistent "
+                         "splitting of H = T + V has both equal to 1)",
+                         a, b));
+  } else {
+    rep.line("  as a composition",
+             fmt::format("of se (drift, then kick) and se* (kick, then drift), {} stages: {}",
+                         c.size(), p.coefficients));
+  }
+  {
+    std::vector<std::string> parts;
+    for (std::size_t k = 0; k < oc.residual.size(); ++k)
+      parts.push_back(fmt::format("{}: {:.1e}", k + 1, oc.residual[k]));
+    rep.line("order conditions",
+             fmt::format("two flows, A (drift) and B (kick): residual by weight ({} digits) {}",
+                         kCompositionDigits, fmt::join(parts, ", ")));
+  }
+  const bool conditions_ok = oc.order >= int(std::floor(expected + 1e-9));
+  std::string cond_text = fmt::format(
+      "order {} by the conditions (each weight's residual <= {:.0e}); expected {:g} ({}): {}",
+      oc.order, kConditionTol, expected, expected_from, conditions_ok ? "yes" : "NO");
+  if (!conditions_ok && oc.order < oc.max_weight)
+    cond_text += fmt::format(" -- weight {} fails by {:.2e} at the word {}", oc.order + 1,
+                             oc.residual[static_cast<std::size_t>(oc.order)],
+                             oc.worst_word[static_cast<std::size_t>(oc.order)]);
+  if (!conditions_ok && visible.order >= int(std::floor(expected + 1e-9)))
+    cond_text += " (a residual below 1e-8: inexact coefficients rather than a lower order)";
+  rep.line("", cond_text);
+  if (!c.empty())
+    rep.line("", fmt::format("(as a composition of any first-order method and its adjoint: order "
+                             "{}; the splitting's own conditions decide)",
+                             as_composition.order));
+  rep.required.push_back("order conditions");
+  if (!conditions_ok) rep.failed.push_back("order conditions");
+  js["splitting"] = {{"flows", flows},
+                     {"typed", p.splitting ? p.splitting->flows : p.flows_typed},
+                     {"source", p.splitting ? p.splitting->source : "typed"},
+                     {"palindrome", palindrome},
+                     {"composition", {{"base", "se"}, {"stages", c}, {"adjoint", adj}}},
+                     {"composition_order", as_composition.order}};
+  js["order_conditions"] = {{"digits", kCompositionDigits},
+                            {"flows", "two: A (drift), B (kick)"},
+                            {"residual_by_weight", oc.residual},
+                            {"worst_word", oc.worst_word},
+                            {"tolerance", kConditionTol},
+                            {"order", oc.order},
+                            {"visible_tolerance", kVisibleTol},
+                            {"visible_order", visible.order},
+                            {"expected", expected},
+                            {"expected_from", expected_from},
+                            {"passed", conditions_ok}};
+  return {c, adj, palindrome, expected, double(oc.order)};
+}
+
 // The stages and their order conditions at 120 digits, printed and written to rep; the same
 // whatever the base method is, given whether it is symmetric.
 Composed conditions(const CompositionSpec& p, MapMeasurement& rep) {
+  if (!p.flows.empty()) return splitting_conditions(p, rep);
   auto line = [&](const std::string& label, const std::string& text) { rep.line(label, text); };
   json& js = rep.js;
   std::vector<std::string>& failed = rep.failed;
@@ -264,6 +496,14 @@ void measure(const CompositionSpec& p, const std::vector<double>& q0, const std:
              const TestProblem& problem, MapStudy study, MapMeasurement& rep, const P& prob) {
   constexpr int N = P::N;
   const Composed k = conditions(p, rep);
+  if (k.c.empty()) {
+    // A splitting whose drifts and kicks sum to different totals: no composition to step, and
+    // its weight-1 conditions have already failed. An inconsistent method never passes.
+    rep.line("measured", "nothing: an inconsistent method converges to no solution of H");
+    rep.required.push_back("consistency");
+    rep.failed.push_back("consistency");
+    return;
+  }
   const std::vector<double>& c = k.c;
   const std::vector<bool>& adj = k.adj;
   const bool symmetric = k.symmetric;

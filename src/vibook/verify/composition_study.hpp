@@ -15,6 +15,7 @@
 
 #include "vibook/core/precision.hpp"
 #include "vibook/integrators/composition.hpp"
+#include "vibook/integrators/splitting_sequence.hpp"
 #include "vibook/verify/map_study.hpp"
 
 namespace vibook::verify {
@@ -44,7 +45,21 @@ struct CompositionSpec {
   /// on its documented base) or the order its conditions give at 1e-8.
   std::optional<double> expected;
   std::string expected_from = "--expected-order";  ///< where `expected` came from
+  /// A splitting (`vibook verify --splitting`, splitting_sequence.hpp): its flows; `typed` then
+  /// holds its equivalent composition of se and se-adjoint, and the order conditions are those
+  /// of two flows.
+  composition::Sequence<mpfr_real> flows;
+  std::string flows_typed;  ///< the flows as text (the catalogue's, or as typed)
+  const composition::SplittingEntry* splitting = nullptr;  ///< its catalogue entry, if any
+  /// Why the coefficients cannot be given to the symbolic engine exactly (empty when they can).
+  std::string not_exact;
 };
+
+/// The spec of a splitting: `seq` is a catalogue name or flows "drift:c1,kick:d1,…"; the base
+/// is se and the stages its equivalent composition (exact ratios in `coefficients` when every
+/// flow is a ratio or a decimal). ArgumentError naming `arg` when the text is not a sequence or
+/// the sequence has no equivalent composition (its drifts and kicks sum to different totals).
+CompositionSpec splitting_spec(const std::string& arg, const std::string& seq);
 
 /// Measure the composition on `problem` from (q0, p0) with the settings of `study` (its step,
 /// state, field, energy, expected order and reversibility are set here); appended to `rep`.

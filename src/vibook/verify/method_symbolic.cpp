@@ -326,6 +326,10 @@ std::optional<ExactStages> exact_stages(const CompositionSpec& spec, std::string
                                         std::optional<GiNaC::numeric>* zero_below = nullptr,
                                         std::string* precision = nullptr) {
   ExactStages st;
+  if (!spec.not_exact.empty()) {
+    why = spec.not_exact;
+    return std::nullopt;
+  }
   if (spec.entry && spec.entry->name != "ruth3") {
     const std::string& n = spec.entry->name;
     if (!zero_below || !precision) {
