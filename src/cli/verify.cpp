@@ -208,14 +208,36 @@ int run(const VerifyOptions& o, const CLI::App& c) {
            {"--coefficients", &o.coefficients},
            {"--method", &o.method},
            {"--tableau", &o.tableau},
-           {"--composition", &o.composition}})
+           {"--composition", &o.composition},
+           {"--splitting", &o.splitting}})
     if (c.count(opt) > 0 && value->find_first_not_of(" \t") == std::string::npos)
       throw ArgumentError(opt, "is empty");
   // The typed expressions' derivatives are derived symbolically: the limit covers that too.
   const Watchdog watchdog("verify", max_seconds, o.progress);
+  if (c.count("--splitting") > 0) {
+    // A splitting method (verify_composition.cpp): its flows, through its equivalent
+    // composition of symplectic Euler and its adjoint, on --problem.
+    for (const char* opt :
+         {"--method", "--tableau", "--composition", "--stepper-lib", "--stepper-cmd"})
+      if (c.count(opt) > 0)
+        throw ArgumentError(opt, "does not apply to --splitting: give one method");
+    for (const char* opt : {"--coefficients", "--ld", "--lagrangian", "--hamiltonian",
+                            "--potential", "--dim", "--modified-order", "--format", "--reference",
+                            "--adaptive", "--adaptive-steps", "--stepper-arg", "--stepper-timeout"})
+      if (c.count(opt) > 0)
+        throw ArgumentError(opt,
+                            "does not apply to --splitting (its flows give the method; it runs "
+                            "on --problem: kepler, pendulum or henon-heiles)");
+    CompositionOptions co;
+    set_study_options(co, o, c);
+    co.splitting = o.splitting;
+    co.symbolic = o.symbolic;
+    return run_composition(co);
+  }
   if (c.count("--symbolic") > 0 && c.count("--method") == 0 && c.count("--composition") == 0)
     throw ArgumentError("--symbolic",
-                        "applies to --method and --composition only (a typed --ld's variational "
+                        "applies to --method, --composition and --splitting only (a typed --ld's "
+                        "variational "
                         "order is always derived; that of a tableau or a black box is measured)");
   if (c.count("--method") > 0 && c.count("--tableau") > 0)
     throw ArgumentError("--tableau", "does not apply to --method: give one method");
@@ -377,6 +399,14 @@ std::function<int()> add_verify_command(CLI::App& app) {
                 "--ld typed (its adjoint -L_d(q1, q0, -h) for '*' stages; dimensions 1-3) on the "
                 "system of --potential or --hamiltonian (order conditions at 120 digits, "
                 "measured order, symplecticity, reversibility, energy)");
+  c->add_option("--splitting", o->splitting,
+                "verify a splitting method of H = T(p) + V(q) instead of an --ld: its flows in "
+                "the order they act, 'drift:c1,kick:d1,drift:c2,...' (coefficients as ratios, "
+                "decimals or expressions such as 1/(2-2^(1/3)) or 1/2-sqrt(3)/6), or a catalogue "
+                "name (leapfrog, forest-ruth, omelyan-2, saba-2, saba-3, sbab-2, ruth-3); on "
+                "--problem (order conditions for two flows at 120 digits, its equivalent "
+                "composition of symplectic Euler, measured order, symplecticity, symmetry, "
+                "energy)");
   c->add_option("--coefficients", o->coefficients,
                 "with --composition: a catalogue name (yoshida4, suzuki4, yoshida6, yoshida8, "
                 "mclachlan8, kahanli6, kahanli8, ruth3) or the stages' coefficients in order of "

@@ -36,6 +36,16 @@ struct Plan {
 // The largest size of a typed stage coefficient.
 constexpr double kMaxCoefficient = 1e3;
 
+// --expected-order, when given.
+void check_expected(const CompositionOptions& o, verify::CompositionSpec& spec) {
+  if (!o.expected_given) return;
+  const double e = parse_number("--expected-order", o.expected);
+  if (!(e > 0 && e <= verify::kMaxOrder))
+    throw ArgumentError("--expected-order",
+                        fmt::format("must lie in (0, {:g}]", verify::kMaxOrder));
+  spec.expected = e;
+}
+
 // The coefficients: a catalogue entry or a typed list (parsed at 120 digits), and
 // --expected-order.
 void check_coefficients(const CompositionOptions& o, verify::CompositionSpec& spec) {
@@ -66,25 +76,24 @@ void check_coefficients(const CompositionOptions& o, verify::CompositionSpec& sp
     if (spec.typed.empty() || spec.typed.size() > 64)
       throw ArgumentError("--coefficients", "needs 1 to 64 stages");
   }
-  if (o.expected_given) {
-    const double e = parse_number("--expected-order", o.expected);
-    if (!(e > 0 && e <= verify::kMaxOrder))
-      throw ArgumentError("--expected-order",
-                          fmt::format("must lie in (0, {:g}]", verify::kMaxOrder));
-    spec.expected = e;
-  }
+  check_expected(o, spec);
 }
 
 Plan check(const CompositionOptions& o) {
   Plan p;
-  p.spec.base = verify::find_composition_base(o.base);
-  if (!p.spec.base)
-    throw ArgumentError("--composition",
-                        "unknown base method '" + o.base +
-                            "' (sv, midpoint, se, se-adjoint, vi1, vi1-adjoint, vi2, or ld for "
-                            "the --ld typed)");
+  if (!o.splitting.empty()) {
+    p.spec = verify::splitting_spec("--splitting", o.splitting);
+    check_expected(o, p.spec);
+  } else {
+    p.spec.base = verify::find_composition_base(o.base);
+    if (!p.spec.base)
+      throw ArgumentError("--composition",
+                          "unknown base method '" + o.base +
+                              "' (sv, midpoint, se, se-adjoint, vi1, vi1-adjoint, vi2, or ld "
+                              "for the --ld typed)");
+  }
   p.problem = &find_test_problem(o.problem);
-  check_coefficients(o, p.spec);
+  if (o.splitting.empty()) check_coefficients(o, p.spec);
   p.symbolic = verify::parse_symbolic_use(o.symbolic);
   check_initial_state(o, *p.problem, p.q0, p.p0, p.study);
   check_study_options(o, p.study);
@@ -95,7 +104,7 @@ Plan check(const CompositionOptions& o) {
 }  // namespace
 
 int run_composition(const CompositionOptions& o) {
-  if (o.base == "ld") {
+  if (o.splitting.empty() && o.base == "ld") {
     if (!o.problem.empty())
       throw ArgumentError("--problem",
                           "does not apply to --composition ld: the system is --potential, "
@@ -114,7 +123,8 @@ int run_composition(const CompositionOptions& o) {
                           "applies to --composition ld only (the composition of the --ld "
                           "typed); the other bases run on --problem");
   Plan p = check(o);
-  verify::derive_composition_variational_order(p.spec, p.problem->name, p.symbolic, p.study);
+  if (o.splitting.empty() || !p.spec.typed.empty())
+    verify::derive_composition_variational_order(p.spec, p.problem->name, p.symbolic, p.study);
   MapReport rep;
   verify::measure_composition(p.spec, *p.problem, p.q0, p.p0, p.study, rep);
   return rep.finish(o);

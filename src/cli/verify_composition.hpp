@@ -14,6 +14,7 @@ namespace vibook::cli {
 /// (the defaults of the step sizes depend on the expected order).
 struct CompositionOptions : StudyOptions {
   std::string base, coefficients;
+  std::string splitting;  ///< --splitting: a catalogue name or the flows (the base is then se)
   /// --composition ld: the typed discrete Lagrangian and the system, as for --ld
   std::string ld, potential, lagrangian, hamiltonian, dim;
   std::string symbolic = "auto";  ///< --symbolic: when the engine derives the variational order

@@ -2,7 +2,7 @@
 """Seeded random arguments for `vibook run`, `vibook modified` and `vibook verify` (the argument
 parser, the strict number and list parsers, the --alpha rational parser, the expression
 parser of --ld and --potential, fed mutated expressions, and the other routes of verify:
---method, --tableau, --composition, and black-box steppers that crash, hang, flood or do not
+--method, --tableau, --composition, --splitting, and black-box steppers that crash, hang, flood or do not
 load, with --report and --json-out), run for a bounded number of cases and time. Every case must end with exit status 0, 2, 3 or 4, or 5 for a verify whose verdict
 failed (never a signal, an
 uncaught exception's 1, or a hang), with exactly one stderr line when it fails, and must leave
@@ -135,9 +135,17 @@ def map_case(r):
         pool = [os.path.join(TABLEAUS, n) for n in names if n.endswith(".json")]
         args += ["--tableau", pick(r, pool or ["x.json"], ["/dev/null", "/dev/zero", ".", ""],
                                    GARBAGE)]
-    elif k < 0.7:
+    elif k < 0.62:
         args += ["--composition", pick(r, ["sv", "se"], ["ld", "nosuch"], GARBAGE),
                  "--coefficients", pick(r, ["yoshida4", "ruth3", "1,1", "1/2,1/2"], GARBAGE)]
+    elif k < 0.7:
+        args += ["--splitting", pick(r, ["leapfrog", "forest-ruth", "sbab-2",
+                                         "drift:1/2,kick:1,drift:1/2", "drift:1,kick:1",
+                                         "kick:1/2-sqrt(3)/6,drift:1,kick:1/2+sqrt(3)/6"],
+                                     ["nosuch", "drift:1/0", "kick:sqrt(-2)", "drift:(1",
+                                      "drift:1e999,kick:1", "drift:1,kick:1,",
+                                      "drift:" + "(" * 100 + "1" + ")" * 100 + ",kick:1"],
+                                     GARBAGE)]
     elif k < 0.85 or STEPPER_LIB is None:
         args += ["--stepper-cmd", r.choice(STEPPER_CMDS), "--stepper-timeout", "2"]
     else:

@@ -208,6 +208,33 @@ if [ "$got" = 3 ] && [ "$(wc -l <"$tmp/err")" = 1 ] &&
    grep -q '^verdict' "$tmp/out"; then ok; else
   bad "newton failure: exit $got, stderr: $(cat "$tmp/err")"; fi
 
+# Splittings as sequences of flows (--splitting): catalogue methods pass at their documented
+# order, through the equivalent composition of symplectic Euler; Ruth's method as published
+# (kick first) is the composition ruth3 and its variational order is derived exactly. Deliberately
+# wrong: Forest-Ruth stepped as a non-palindromic sequence (its last half drift moved to the
+# front, the first drift whole) drops to order 1; one kick's sign flipped is not consistent.
+T='(2-2^(1/3))'
+FR_MOVED="drift:1/$T,kick:1/$T,drift:(1-2^(1/3))/(2*$T),kick:-2^(1/3)/$T,drift:(1-2^(1/3))/(2*$T),kick:1/$T"
+FR_FLIPPED="drift:1/(2*$T),kick:-1/$T,drift:(1-2^(1/3))/(2*$T),kick:-2^(1/3)/$T,drift:(1-2^(1/3))/(2*$T),kick:1/$T,drift:1/(2*$T)"
+case_ forest-ruth 0 "" 'order 4 by the conditions' 'a palindrome' '^verdict +PASS' \
+  -- --splitting forest-ruth --problem kepler
+case_ saba3-hh 0 "" 'order 2 by the conditions' 'SABA_3' \
+  -- --splitting saba-3 --problem henon-heiles
+case_ ruth-3-splitting 0 "" 'order 3 by the conditions' '5 stages: 7/24\*,3/8,3/8\*,-25/24,1\*' \
+  '^  derived +3 by the engine' \
+  -- --splitting ruth-3 --problem pendulum
+case_ forest-ruth-moved 5 "order conditions,order,energy" 'not a palindrome' \
+  'order 1 by the conditions' 'weight 2 fails' \
+  -- --splitting "$FR_MOVED" --problem pendulum --expected-order 4
+case_ forest-ruth-flipped 5 "consistency" 'as a composition +none: the drifts sum to 1 and the kicks' \
+  -- --splitting "$FR_FLIPPED" --problem pendulum
+arg splitting-unknown --splitting --splitting forest-rut
+arg splitting-flow --splitting --splitting 'drift:1/2,push:1,drift:1/2'
+arg splitting-expr --splitting --splitting 'drift:1/2,kick:sqrt(-1),drift:1/2'
+arg splitting-with-coefficients --coefficients --splitting leapfrog --coefficients yoshida4
+arg splitting-with-composition --composition --splitting leapfrog --composition sv
+arg splitting-with-potential --potential --splitting leapfrog --potential x^2
+
 # Reproducible: two runs, same bytes (text and JSON).
 for i in 1 2; do
   "$V" verify --composition sv --coefficients mclachlan8 --json-out "$tmp/r$i.json" >"$tmp/r$i.txt"
