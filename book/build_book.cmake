@@ -156,6 +156,12 @@ vibook_verify_case(verify-composition-perturbed.txt 5 --composition sv --coeffic
                    --expected-order 6)
 vibook_verify_case(verify-composition-swapped.txt 5 --composition se --coefficients
                    "3/8,7/24*,-25/24,3/8*,0,1*" --expected-order 3)
+# Splittings (the chapter's section "Splittings"): Forest-Ruth must pass; the same flows with the
+# last half drift moved to the front must fail (order 1).
+vibook_verify_case(verify-splitting-forest-ruth.txt 0 --splitting forest-ruth --problem kepler)
+vibook_verify_case(verify-splitting-moved.txt 5 --splitting
+                   "drift:1/(2-2^(1/3)),kick:1/(2-2^(1/3)),drift:(1-2^(1/3))/(2*(2-2^(1/3))),kick:-2^(1/3)/(2-2^(1/3)),drift:(1-2^(1/3))/(2*(2-2^(1/3))),kick:1/(2-2^(1/3))"
+                   --problem pendulum --expected-order 4)
 
 # A method from its tableau (the chapter's section "A method from its tableau"), run in
 # examples/tableaus so that the report names the file as a reader would type it: Lobatto
