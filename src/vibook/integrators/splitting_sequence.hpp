@@ -387,10 +387,13 @@ inline const std::vector<SplittingEntry>& splitting_catalogue() {
        "drift:1/(2*(2-2^(1/3)))",
        4},
       {"omelyan-2",
-       "Omelyan, Mryglod & Folk 2002, Comput. Phys. Commun. 146, 188, the second-order "
-       "position-extended method with the smallest error norm, xi = 0.1931833275037836",
-       "drift:0.1931833275037836,kick:1/2,drift:1-2*0.1931833275037836,kick:1/2,"
-       "drift:0.1931833275037836",
+       "Omelyan, Mryglod & Folk 2002, Comput. Phys. Commun. 146, 188: the second-order "
+       "three-stage method whose leading error has the smallest norm, xi = 1/2 - "
+       "(2 sqrt(326) + 36)^(1/3)/12 + 1/(6 (2 sqrt(326) + 36)^(1/3)) = 0.1931833275037836, "
+       "here with the drifts outside",
+       "drift:1/2-(2*sqrt(326)+36)^(1/3)/12+1/(6*(2*sqrt(326)+36)^(1/3)),kick:1/2,"
+       "drift:2*((2*sqrt(326)+36)^(1/3)/12-1/(6*(2*sqrt(326)+36)^(1/3))),kick:1/2,"
+       "drift:1/2-(2*sqrt(326)+36)^(1/3)/12+1/(6*(2*sqrt(326)+36)^(1/3))",
        2},
       {"saba-2",
        "Laskar & Robutel 2001, Celest. Mech. Dyn. Astron. 80, 39, SABA_2 (kicks at the Gauss "
