@@ -221,17 +221,21 @@ int run(const VerifyOptions& o, const CLI::App& c) {
          {"--method", "--tableau", "--composition", "--stepper-lib", "--stepper-cmd"})
       if (c.count(opt) > 0)
         throw ArgumentError(opt, "does not apply to --splitting: give one method");
-    for (const char* opt : {"--coefficients", "--ld", "--lagrangian", "--hamiltonian",
-                            "--potential", "--dim", "--modified-order", "--format", "--reference",
-                            "--adaptive", "--adaptive-steps", "--stepper-arg", "--stepper-timeout"})
+    for (const char* opt :
+         {"--coefficients", "--ld", "--lagrangian", "--hamiltonian", "--modified-order", "--format",
+          "--reference", "--adaptive", "--adaptive-steps", "--stepper-arg", "--stepper-timeout"})
       if (c.count(opt) > 0)
         throw ArgumentError(opt,
                             "does not apply to --splitting (its flows give the method; it runs "
-                            "on --problem: kepler, pendulum or henon-heiles)");
+                            "on --problem, or on H = |p|^2/2 + V with --potential)");
+    if (c.count("--dim") > 0 && c.count("--potential") == 0)
+      throw ArgumentError("--dim", "applies to --splitting only with --potential");
     CompositionOptions co;
     set_study_options(co, o, c);
     co.splitting = o.splitting;
     co.symbolic = o.symbolic;
+    co.potential = o.potential;
+    co.dim = o.dim;
     return run_composition(co);
   }
   if (c.count("--symbolic") > 0 && c.count("--method") == 0 && c.count("--composition") == 0)
@@ -404,7 +408,8 @@ std::function<int()> add_verify_command(CLI::App& app) {
                 "the order they act, 'drift:c1,kick:d1,drift:c2,...' (coefficients as ratios, "
                 "decimals or expressions such as 1/(2-2^(1/3)) or 1/2-sqrt(3)/6), or a catalogue "
                 "name (leapfrog, forest-ruth, omelyan-2, saba-2, saba-3, sbab-2, ruth-3); on "
-                "--problem (order conditions for two flows at 120 digits, its equivalent "
+                "--problem, or on H = |p|^2/2 + V with --potential (order conditions for two flows "
+                "at 120 digits, its equivalent "
                 "composition of symplectic Euler, measured order, symplecticity, symmetry, "
                 "energy)");
   c->add_option("--coefficients", o->coefficients,

@@ -104,6 +104,20 @@ Plan check(const CompositionOptions& o) {
 }  // namespace
 
 int run_composition(const CompositionOptions& o) {
+  if (!o.splitting.empty() && !o.potential.empty()) {
+    // A splitting on H = |p|^2/2 + V typed: its equivalent composition of symplectic Euler,
+    // stepped as the composition of a typed L_d: symplectic Euler's own discrete Lagrangian
+    // (drift, then kick) and its adjoint -L_d(q1, q0, -h) (kick, then drift).
+    if (!o.problem.empty())
+      throw ArgumentError("--potential",
+                          "gives the system; --problem names a test problem: give one of them");
+    verify::CompositionSpec spec = verify::splitting_spec("--splitting", o.splitting);
+    check_expected(o, spec);
+    CompositionOptions typed = o;
+    typed.base = "ld";
+    typed.ld = "h*((q1-q0)^2/(2*h^2) - V(q1))";
+    return run_composition_ld(typed, std::move(spec));
+  }
   if (o.splitting.empty() && o.base == "ld") {
     if (!o.problem.empty())
       throw ArgumentError("--problem",

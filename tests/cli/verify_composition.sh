@@ -226,14 +226,23 @@ case_ ruth-3-splitting 0 "" 'order 3 by the conditions' '5 stages: 7/24\*,3/8,3/
 case_ forest-ruth-moved 5 "order conditions,order,energy" 'not a palindrome' \
   'order 1 by the conditions' 'weight 2 fails' \
   -- --splitting "$FR_MOVED" --problem pendulum --expected-order 4
-case_ forest-ruth-flipped 5 "consistency" 'as a composition +none: the drifts sum to 1 and the kicks' \
+case_ forest-ruth-flipped 5 "order conditions,consistency" 'weight 1 fails' 'as a composition +none: the drifts sum to 1 and the kicks' \
   -- --splitting "$FR_FLIPPED" --problem pendulum
+# On a typed potential (H = |p|^2/2 + V): the flows stepped explicitly through the system's
+# Hamilton equations; the same verdicts.
+HH='x^2/2+y^2/2+x^2*y-y^3/3'
+case_ forest-ruth-potential 0 "" 'order 4 by the conditions' '^order +(3\.9|4\.0)[0-9]+ over' \
+  'V = x\^2/2' -- --splitting forest-ruth --potential "$HH" --q0 0,0.1 --p0 0.35,0
+case_ forest-ruth-moved-potential 5 "order conditions,order,energy" 'order 1 by the conditions' \
+  -- --splitting "$FR_MOVED" --potential "$HH" --q0 0,0.1 --p0 0.35,0 --expected-order 4
+arg splitting-both-systems --potential --splitting leapfrog --problem kepler --potential x^2
+arg splitting-dim --dim --splitting leapfrog --dim 2
 arg splitting-unknown --splitting --splitting forest-rut
 arg splitting-flow --splitting --splitting 'drift:1/2,push:1,drift:1/2'
 arg splitting-expr --splitting --splitting 'drift:1/2,kick:sqrt(-1),drift:1/2'
 arg splitting-with-coefficients --coefficients --splitting leapfrog --coefficients yoshida4
 arg splitting-with-composition --composition --splitting leapfrog --composition sv
-arg splitting-with-potential --potential --splitting leapfrog --potential x^2
+arg splitting-with-hamiltonian --hamiltonian --splitting leapfrog --hamiltonian 'p^2/2+q^2/2'
 
 # Reproducible: two runs, same bytes (text and JSON).
 for i in 1 2; do
