@@ -149,6 +149,11 @@ std::vector<claims::ClaimResult> appendix_a(std::vector<claims::ClaimResult>& er
         "the ratio test on the exact coefficients (radius {:.4f} at λ = 1) and the partial sums "
         "at h = 1.9",
         radius);
+    // The natural correction deletes the h of the denominator (the search's smallest edit, the
+    // right-hand side times h, leaves h·2/(h√λ)); read and compared like the print.
+    sp.proposed = R"(h \leq \frac{2}{\sqrt{\lambda}})";
+    sp.proposed_edit = "the h in the denominator of \\(\\frac{2}{h\\sqrt{\\lambda}}\\) deleted";
+    sp.prefer_proposed = true;
     cmp.spec(sp, {{&n, Target::exactly(2 / GiNaC::sqrt(lambda)), ""}});
   }
   // The numerical evidence first; the comparison of the bound joins it by name.

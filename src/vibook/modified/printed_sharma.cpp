@@ -343,14 +343,38 @@ std::vector<claims::FormulaComparison> sharma_discrete_prints(
         n, Target::exactly(Ld_at(0)), {1});
     const std::string mom = "−D2 L_d(t_k, q_k, t_{k+1}, q_{k+1}) (15), of " + dl;
     const auto pk = neg(d_slot(0, 2));
-    cmp(Paper::S,
-        R"(\left(\frac{q_{k+1}^1 - q_k^1}{t_{k+1} - t_k}\right) - (t_{k+1} - t_k) \left(\frac{q_k^1 + q_{k+1}^1}{4 \left((q_k^1 + q_{k+1}^1)^2 + (q_k^2 + q_{k+1}^2)^2\right)^{\frac{3}{2}}}\right) = p_k^1, \quad (39))",
-        "the Kepler midpoint momentum equation (39), its left-hand side", mom + ", first component",
-        n, Target::exactly(pk[0]), {0});
-    cmp(Paper::S,
-        R"(\left(\frac{q_{k+1}^2 - q_k^2}{t_{k+1} - t_k}\right) - (t_{k+1} - t_k) \left(\frac{q_k^2 + q_{k+1}^2}{4 \left((q_k^1 + q_{k+1}^1)^2 + (q_k^2 + q_{k+1}^2)^2\right)^{\frac{3}{2}}}\right) = p_k^2, \quad (40))",
-        "the Kepler midpoint momentum equation (40), its left-hand side",
-        mom + ", second component", n, Target::exactly(pk[1]), {0});
+    // (39)-(40): two slips, as a referee names them: the force term's sign, and its
+    // denominator, which is 4|q̄|³ of the midpoint q̄ = (q_k + q_{k+1})/2 of (25), printed with
+    // the sums q_k + q_{k+1} themselves (8 times too large). The search's smallest edit, the term
+    // times -8, merges the two; the check states the natural correction, which is read and
+    // compared like the print, and the search runs if it does not agree.
+    for (int i : {1, 2}) {
+      const std::string m = std::to_string(i);
+      printed::Spec sp;
+      sp.paper = Paper::S;
+      sp.quote =
+          i == 1
+              ? R"(\left(\frac{q_{k+1}^1 - q_k^1}{t_{k+1} - t_k}\right) - (t_{k+1} - t_k) \left(\frac{q_k^1 + q_{k+1}^1}{4 \left((q_k^1 + q_{k+1}^1)^2 + (q_k^2 + q_{k+1}^2)^2\right)^{\frac{3}{2}}}\right) = p_k^1, \quad (39))"
+              : R"(\left(\frac{q_{k+1}^2 - q_k^2}{t_{k+1} - t_k}\right) - (t_{k+1} - t_k) \left(\frac{q_k^2 + q_{k+1}^2}{4 \left((q_k^1 + q_{k+1}^1)^2 + (q_k^2 + q_{k+1}^2)^2\right)^{\frac{3}{2}}}\right) = p_k^2, \quad (40))";
+      sp.part = "the Kepler midpoint momentum equation (" + std::string(i == 1 ? "39" : "40") +
+                "), its left-hand side";
+      sp.against = mom + (i == 1 ? ", first component" : ", second component");
+      sp.members = {0};
+      sp.proposed = "\\left(\\frac{q_{k+1}^" + m + " - q_k^" + m +
+                    "}{t_{k+1} - t_k}\\right) + (t_{k+1} - t_k) \\left(\\frac{q_k^" + m +
+                    " + q_{k+1}^" + m +
+                    "}{4 \\left(\\left(\\frac{q_k^1 + q_{k+1}^1}{2}\\right)^2 + "
+                    "\\left(\\frac{q_k^2 + q_{k+1}^2}{2}\\right)^2\\right)^{\\frac{3}{2}}}"
+                    "\\right) = p_k^" +
+                    m + ", \\quad (" + (i == 1 ? "39" : "40") + ")";
+      sp.proposed_edit =
+          "two slips: the sign of the force term reversed, and in its denominator the sums "
+          "\\(q_k^j + q_{k+1}^j\\) read as the midpoint's coordinates "
+          "\\(\\frac{q_k^j + q_{k+1}^j}{2}\\) (4|q̄|³ of the midpoint q̄ of (25), printed 8 "
+          "times too large)";
+      sp.prefer_proposed = true;
+      cmp.spec(std::move(sp), {{&n, Target::exactly(pk[static_cast<std::size_t>(i - 1)]), ""}});
+    }
     cmp(Paper::S,
         R"(\frac{1}{2} \left(\frac{q_{k+1}^1 - q_k^1}{t_{k+1} - t_k}\right)^2 + \frac{1}{2} \left(\frac{q_{k+1}^2 - q_k^2}{t_{k+1} - t_k}\right)^2 - \frac{2}{\sqrt{(q_k^1 + q_{k+1}^1)^2 + (q_k^2 + q_{k+1}^2)^2}} = E_k. \quad (41))",
         "the Kepler midpoint energy equation (41), its left-hand side",

@@ -596,6 +596,26 @@ claims::FormulaComparison compare(const Spec& spec, const std::vector<Case>& cas
     out.search = "no correction searched for (this comparison is a cross-check)";
     return out;
   }
+  // The check's own correction, read and compared like the print: first when the check knows the
+  // natural reading of the slip (spec.prefer_proposed), otherwise when the search finds none.
+  auto try_proposed = [&] {
+    if (spec.proposed.empty()) return false;
+    try {
+      if (all_vanish(differences(tokenize(spec.proposed), {}, spec, cases, false).d)) {
+        out.corrected = spec.proposed;
+        out.edit = spec.proposed_edit.empty() ? "the check's correction" : spec.proposed_edit;
+        out.edit += " (stated by the check, read and compared like the print)";
+        return true;
+      }
+    } catch (const ReadError&) {
+    } catch (const IllFormed&) {
+    }
+    return false;
+  };
+  if (spec.prefer_proposed && try_proposed()) {
+    out.search = "not searched: the check's correction, read and compared like the print, agrees";
+    return out;
+  }
 
   // --- the correction search ---
   int tried = 0;
@@ -934,17 +954,7 @@ claims::FormulaComparison compare(const Spec& spec, const std::vector<Case>& cas
       }
     }
   }
-  if (out.edit.empty() && !spec.proposed.empty()) {
-    try {
-      if (all_vanish(differences(tokenize(spec.proposed), {}, spec, cases, false).d)) {
-        out.corrected = spec.proposed;
-        out.edit = spec.proposed_edit.empty() ? "the check's correction" : spec.proposed_edit;
-        out.edit += " (stated by the check, read and compared like the print)";
-      }
-    } catch (const ReadError&) {
-    } catch (const IllFormed&) {
-    }
-  }
+  if (out.edit.empty()) try_proposed();
   out.search = fmt::format(
       "searched: one term times a rational λ or a monomial in the parameters ({} terms), one "
       "subscript, accent, prime or exponent changed ({} candidates), subscript pairs exchanged "

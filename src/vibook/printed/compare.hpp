@@ -89,6 +89,10 @@ struct Spec {
   /// fix is larger than the search's edits, the check states it and the reader verifies it.
   std::string proposed;
   std::string proposed_edit;  ///< the proposed correction in words
+  /// Try `proposed` before the search: the check knows the natural reading of the slip (two
+  /// slips a referee would name, where the search's smallest edit is one factor that merges
+  /// them). It must still read and compare equal, or the search runs as usual.
+  bool prefer_proposed = false;
   /// "cross-check": shown beside the display's deciding comparison, decides nothing.
   std::string role;
   /// How our side is verified independently of this comparison (a measured order, a second

@@ -157,6 +157,19 @@ TEST_CASE("compare: a printed display against the right and against a wrong targ
   CHECK(far.outcome == "differs");
   CHECK(far.corrected.empty());
   CHECK(far.search.find("readings in all") != std::string::npos);
+  // A check's preferred correction is used only when it reads equal: a right one is taken
+  // without a search, a wrong one is passed over and the search finds the edit as before.
+  Spec pr = s;
+  pr.prefer_proposed = true;
+  pr.proposed = "= \\frac{1}{2}\\mathbf{q}^\\top \\mathbf{q}, \\quad (27)";
+  pr.proposed_edit = "the factor one half";
+  const auto taken = compare(pr, {{&P.n, Target::exactly(qq / 2), ""}});
+  CHECK(taken.edit.find("the factor one half (stated by the check") == 0);
+  CHECK(taken.search.find("not searched") == 0);
+  pr.proposed = "= \\frac{1}{3}\\mathbf{q}^\\top \\mathbf{q}, \\quad (27)";
+  const auto passed_over = compare(pr, {{&P.n, Target::exactly(qq / 2), ""}});
+  CHECK(passed_over.edit.find("multiplied by \\(\\frac{1}{2}\\)") != std::string::npos);
+  CHECK(passed_over.search.find("readings in all") != std::string::npos);
   // A quote that is not in the paper is never compared, whatever the target.
   Spec t = s;
   t.quote = "= 2\\mathbf{q}^\\top \\mathbf{q}";
