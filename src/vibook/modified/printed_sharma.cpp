@@ -71,12 +71,36 @@ std::vector<claims::ClaimResult> sharma_prints(std::vector<claims::ClaimResult>&
   Compared cmp{kCheck, {}};
   const std::string eng = "the engine, on EpAVI's discrete Lagrangian (25) in (q, t), ";
 
-  // (46): the meshed Lagrangian's definition, in the setting of the example.
-  cmp(Paper::S,
-      R"(\bar{\mathfrak{L}}_{\text{mesh}}([\bar{\mathbf{q}}], \Delta a) := \bar{\mathfrak{L}}_{\text{disc}}([\bar{\mathbf{q}}], \Delta a) - \frac{\Delta a^2}{24} \frac{d^2}{dt^2} \bar{\mathfrak{L}}_{\text{disc}}([\bar{\mathbf{q}}], \Delta a) + \frac{7\Delta a^4}{5760} \frac{d^4}{dt^4} \bar{\mathfrak{L}}_{\text{disc}}([\bar{\mathbf{q}}], \Delta a) + \dots)",
-      "the definition of the meshed Lagrangian (46), in the example's setting",
-      eng + "meshed Lagrangian (the Euler–Maclaurin sum over the uniform mesh in a)", n,
-      Target::scalar_series(E.l_mesh(), 3), {1});
+  // (46): the meshed Lagrangian's definition, in the setting of the example, through the
+  // Δa⁴ term it shows (the engine to order 5 for its meshed Lagrangian). Both derivatives are in
+  // t where the mesh is uniform in a: the natural correction reads both as d/da (one slip made
+  // twice), stated here and compared like the print; the search's single edit would fix only
+  // the first.
+  {
+    Engine E5(sdl, 5);
+    JetNotation n5 = n;
+    Engine* e5 = &E5;
+    n5.callable("mathfrak{L}", [e5, h](const printed::Atom& a, const std::vector<Value>&) -> Value {
+      const std::string sub = a.sub_text();
+      if (sub == "disc") return Value::scalar(series_sum(e5->l_disc(), h));
+      if (sub == "mesh") return Value::scalar(series_sum(e5->l_mesh(), h));
+      throw printed::ReadError("no \\mathfrak{L}_{" + sub + "}");
+    });
+    printed::Spec sp;
+    sp.paper = Paper::S;
+    sp.quote =
+        R"(\bar{\mathfrak{L}}_{\text{mesh}}([\bar{\mathbf{q}}], \Delta a) := \bar{\mathfrak{L}}_{\text{disc}}([\bar{\mathbf{q}}], \Delta a) - \frac{\Delta a^2}{24} \frac{d^2}{dt^2} \bar{\mathfrak{L}}_{\text{disc}}([\bar{\mathbf{q}}], \Delta a) + \frac{7\Delta a^4}{5760} \frac{d^4}{dt^4} \bar{\mathfrak{L}}_{\text{disc}}([\bar{\mathbf{q}}], \Delta a) + \dots)";
+    sp.part = "the definition of the meshed Lagrangian (46), in the example's setting";
+    sp.against = eng + "meshed Lagrangian (the Euler–Maclaurin sum over the uniform mesh in a)";
+    sp.members = {1};
+    sp.proposed =
+        R"(\bar{\mathfrak{L}}_{\text{mesh}}([\bar{\mathbf{q}}], \Delta a) := \bar{\mathfrak{L}}_{\text{disc}}([\bar{\mathbf{q}}], \Delta a) - \frac{\Delta a^2}{24} \frac{d^2}{da^2} \bar{\mathfrak{L}}_{\text{disc}}([\bar{\mathbf{q}}], \Delta a) + \frac{7\Delta a^4}{5760} \frac{d^4}{da^4} \bar{\mathfrak{L}}_{\text{disc}}([\bar{\mathbf{q}}], \Delta a) + \dots)";
+    sp.proposed_edit =
+        "\\(d/dt\\) read as \\(d/da\\) in both derivatives, \\(\\frac{d^2}{da^2}\\) "
+        "and \\(\\frac{d^4}{da^4}\\) (the mesh is uniform in a)";
+    sp.prefer_proposed = true;
+    cmp.spec(std::move(sp), {{&n5, Target::scalar_series(E5.l_mesh(), 5), ""}});
+  }
   // (56): the transformed Lagrangian.
   {
     const ex q1 = J->x(1, 0), t1 = J->x(1, 1);
