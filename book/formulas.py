@@ -244,7 +244,7 @@ def main():
     named_errata = set()
     counts = {}
     problems = []
-    n_compared = n_unread = 0
+    n_compared = n_unread = n_unread_errata = 0
     for key, name, notes in PAPERS:
         mine = [d for d in displays if d["paper"] == key]
         ids = [d["id"] for d in mine]
@@ -289,6 +289,8 @@ def main():
             if css == "agrees" and not cs:
                 problems.append(f"{key} {did}: 'agrees' without a comparison")
             counts[(key, css)] = counts.get((key, css), 0) + 1
+            if not cs and css in ("erratum", "does-not-hold"):
+                n_unread_errata += 1
             out.append(f'<tr class="formula-{css}" id="formula-{key}-{html.escape(did)}">'
                        f'<td>{label}</td><td>{where}</td><td>{math(d["latex"])}</td>'
                        f'<td>{text}</td><td>{ours}</td></tr>\n')
@@ -313,7 +315,13 @@ def main():
         summary.append("</tr>\n")
     summary.append("</table>\n")
     summary.append(f"<p>{n_compared} displays read from the papers and compared; "
-                   f"{n_unread} of them the reader could not parse.</p>\n")
+                   f"{n_unread} of them the reader could not parse.")
+    if n_unread_errata:
+        summary.append(f" The erratum and does-not-hold columns also count {n_unread_errata} "
+                       f"display{'s' if n_unread_errata > 1 else ''} found wrong by a measurement "
+                       f"and not read as a formula (the row says which), so the first four "
+                       f"columns sum to {n_compared + n_unread_errata}.")
+    summary.append("</p>\n")
     bookfiles.write_text(os.path.join(gen, "formulas-summary.html"), "".join(summary))
     print(f"formulas: {n_compared} displays compared ({n_unread} not read), outcomes from "
           f"{claims_json}")

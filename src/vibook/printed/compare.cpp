@@ -1046,6 +1046,7 @@ void conclude(claims::ClaimResult& claim, std::vector<claims::FormulaComparison>
               std::vector<claims::ClaimResult>& errata, const ErratumNames& names) {
   int agree = 0, corrected = 0, replaced = 0, uncorrected = 0, unreadable = 0;
   std::string unread;
+  std::vector<std::string> found_in;  // the errata of these comparisons (one per display)
   for (const auto& c : comparisons) {
     if (agrees(c) || c.role == "cross-check") {
       agree += agrees(c) ? 1 : 0;
@@ -1072,6 +1073,7 @@ void conclude(claims::ClaimResult& claim, std::vector<claims::FormulaComparison>
     }
     if (std::find(claim.errata.begin(), claim.errata.end(), id) == claim.errata.end())
       claim.errata.push_back(id);
+    if (std::find(found_in.begin(), found_in.end(), id) == found_in.end()) found_in.push_back(id);
     if (!c.corrected.empty())
       corrected += 1;
     else if (!c.verified.empty())
@@ -1085,9 +1087,14 @@ void conclude(claims::ClaimResult& claim, std::vector<claims::FormulaComparison>
   std::string summary =
       fmt::format(" Printed displays read from the paper and compared: {}, agreeing {}",
                   comparisons.size(), agree);
-  if (corrected + replaced + uncorrected > 0)
-    summary += fmt::format(", found wrong {} ({})", corrected + replaced + uncorrected,
-                           fmt::join(claim.errata, ", "));
+  // The errata of these comparisons only (a claim may list others, measured, not read); a
+  // display compared in several parts is one erratum.
+  const int wrong = corrected + replaced + uncorrected;
+  if (wrong > 0)
+    summary += wrong == static_cast<int>(found_in.size())
+                   ? fmt::format(", found wrong {} ({})", wrong, fmt::join(found_in, ", "))
+                   : fmt::format(", found wrong {} (in {} errat{}: {})", wrong, found_in.size(),
+                                 found_in.size() == 1 ? "um" : "a", fmt::join(found_in, ", "));
   if (unreadable > 0) summary += fmt::format(", not read {} ({})", unreadable, unread);
   claim.note += summary + ".";
   // The headline: what is wrong, display by display (once per display).
