@@ -109,6 +109,9 @@ void Ledger::record(const ClaimResult& r) {
 }
 
 namespace {
+// The fields of a comparison, in their JSON order (clang-format would reflow this list
+// differently from run to run).
+// clang-format off
 #define VIBOOK_COMPARISON_FIELDS(X)                                                       \
   X(paper)                                                                                \
   X(display)                                                                              \
@@ -118,6 +121,7 @@ namespace {
   X(against)                                                                              \
   X(ours) X(through) X(outcome) X(detail) X(corrected) X(edit) X(search) X(check) X(role) \
       X(verified)
+// clang-format on
 }  // namespace
 
 nlohmann::json to_json(const FormulaComparison& c) {
@@ -513,7 +517,8 @@ std::string Ledger::to_summary_html() const {
       "<table class=\"vibook-summary\">\n<tr><th rowspan=\"2\">paper</th><th "
       "colspan=\"2\">reproduced</th><th rowspan=\"2\">erratum:<br>misprint</th><th "
       "colspan=\"{}\">not reproduced</th><th rowspan=\"2\">pending</th>{}<th "
-      "rowspan=\"2\">claims</th><th rowspan=\"2\">errata<br>found</th></tr>\n<tr>",
+      "rowspan=\"2\">claims</th><th rowspan=\"2\">errata<br>found</th><th "
+      "rowspan=\"2\">of which<br>no small<br>correction</th></tr>\n<tr>",
       causes, apart_heads);
   for (const Kind* k : shown) {
     const std::string_view key = k->key;
@@ -527,6 +532,14 @@ std::string Ledger::to_summary_html() const {
              r.result.status == Status::erratum;
     });
   };
+  // Errata whose display no small edit corrects (cause does-not-hold): the formula vibook
+  // derives, verified another way, stands in for the correction.
+  auto replaced = [&](std::string_view paper) {
+    return std::count_if(rows_.begin(), rows_.end(), [&](const Row& r) {
+      return !is_claim(r) && (paper.empty() || r.info.paper == paper) &&
+             r.result.status == Status::erratum && r.result.cause == "does-not-hold";
+    });
+  };
   // The claims column: what the status columns count (rows counted apart are not claims).
   auto claims_of = [&](std::string_view paper) {
     return std::count_if(rows_.begin(), rows_.end(), [&](const Row& r) {
@@ -537,13 +550,14 @@ std::string Ledger::to_summary_html() const {
     out += fmt::format("<tr><td>{}</td>", name);
     for (const Kind* k : shown)
       out += fmt::format("<td class=\"kind-{}\">{}</td>", k->key, count(key, k->key));
-    out += fmt::format("<td>{}</td><td>{}</td></tr>\n", claims_of(key), errata(key));
+    out += fmt::format("<td>{}</td><td>{}</td><td>{}</td></tr>\n", claims_of(key), errata(key),
+                       replaced(key));
   }
   out += "<tr><td><b>all</b></td>";
   for (const Kind* k : shown)
     out += fmt::format("<td class=\"kind-{}\"><b>{}</b></td>", k->key, count({}, k->key));
-  out += fmt::format("<td><b>{}</b></td><td><b>{}</b></td></tr>\n</table>\n", claims_of({}),
-                     errata({}));
+  out += fmt::format("<td><b>{}</b></td><td><b>{}</b></td><td><b>{}</b></td></tr>\n</table>\n",
+                     claims_of({}), errata({}), replaced({}));
   // Each claim that is not simply reproduced, headed by what failed, with a link to its row.
   for (const auto& k : kKinds) {
     if (std::string_view(k.key) == "reproduced" || std::string_view(k.key) == "pending" ||
@@ -573,9 +587,13 @@ std::string Ledger::to_summary_html() const {
   for (const auto& r : rows_) {
     if (is_claim(r)) continue;
     items += fmt::format(
-        "<li><a href=\"report.html#claim-{0}\"><code>{0}</code></a> ({1}, {2}): {3}</li>\n",
+        "<li><a href=\"report.html#claim-{0}\"><code>{0}</code></a> ({1}, {2}): {3}{4}</li>\n",
         escape(r.info.id), escape(r.info.where), to_string(r.result.status),
-        escape_keep_tex(r.info.title));
+        escape_keep_tex(r.info.title),
+        r.result.cause == "does-not-hold"
+            ? " — no small edit corrects it: the formula vibook derives, verified another way, "
+              "stands in its place"
+            : "");
   }
   if (!items.empty())
     out +=

@@ -137,3 +137,26 @@ TEST_CASE("the landing page's counts: a flagged wrong method and a question are 
   CHECK(html.find("questions the paper leaves open") != std::string::npos);
   CHECK(html.find("deliberately wrong methods of the audit") == std::string::npos);
 }
+
+TEST_CASE("the landing page's counts: an erratum without a small correction is counted apart") {
+  Ledger ledger;
+  auto erratum = [&](const char* id, const char* cause) {
+    ClaimResult r;
+    r.id = id;
+    r.status = Status::erratum;
+    r.cause = cause;
+    r.source = "test";
+    r.info = ClaimInfo{id, "SS", "(9.9)", "a display"};
+    ledger.record(r);
+  };
+  erratum("SS-ERR-9.1", "misprint");
+  erratum("SS-ERR-9.2", "does-not-hold");
+  const std::string html = ledger.to_summary_html();
+  CHECK(html.find("of which<br>no small<br>correction") != std::string::npos);
+  const auto ss = html.substr(html.find("<td>Shen &amp; Sun 2025</td>"));
+  // its last two cells: errata found 2, of which 1 without a small correction
+  CHECK(ss.substr(0, ss.find("</tr>")).ends_with("<td>2</td><td>1</td>"));
+  CHECK(html.find("SS-ERR-9.2</code></a> ((9.9), erratum): a display — no small edit corrects "
+                  "it") != std::string::npos);
+  CHECK(html.find("SS-ERR-9.1</code></a> ((9.9), erratum): a display</li>") != std::string::npos);
+}
