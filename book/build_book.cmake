@@ -324,6 +324,12 @@ execute_process(COMMAND ${PYTHON3} ${SOURCE_DIR}/book/report_evidence.py ${OUT}/
 if(NOT rc EQUAL 0)
   message(FATAL_ERROR "report_evidence.py failed (exit ${rc})")
 endif()
+# A partial build says so on every page that shows something it did not measure.
+execute_process(COMMAND ${PYTHON3} ${SOURCE_DIR}/book/partial_notice.py ${OUT}/html
+                RESULT_VARIABLE rc)
+if(NOT rc EQUAL 0)
+  message(FATAL_ERROR "partial_notice.py failed (exit ${rc})")
+endif()
 if(EXISTS ${OUT}/doxygen-warnings.log)
   file(READ ${OUT}/doxygen-warnings.log warnings)
   if(NOT warnings STREQUAL "")

@@ -302,6 +302,16 @@ for page in pages:
             problems.append(f"{page}: redirects to {m.group(1)}, which does not exist")
         checked += 1
         continue
+    # A page that shows a placeholder (a figure or table this build did not measure) says so
+    # at its top (book/partial_notice.py).
+    if kind is None and 'class="vibook-partial"' not in text:
+        shows = [r for r in re.findall(r'(?:data|src)="([\w.-]+\.svg)"', text)
+                 if os.path.exists(os.path.join(html_dir, r)) and
+                 "not run in this build" in open(os.path.join(html_dir, r), encoding="utf-8",
+                                                   errors="replace").read()]
+        if shows or "Not measured in this build" in text:
+            problems.append(f"{page}: shows what this build did not measure "
+                            f"({', '.join(shows) or 'a table'}) without a partial-build notice")
     # The engine's internal names never reach a reader (the API pages document them).
     if kind is None:
         for name in sorted(set(INTERNAL.findall(text))):
