@@ -136,6 +136,10 @@ TEST_CASE("the landing page's counts: a flagged wrong method and a question are 
   // A flagged method is not listed among the findings; the question is, under its own heading.
   CHECK(html.find("questions the paper leaves open") != std::string::npos);
   CHECK(html.find("deliberately wrong methods of the audit") == std::string::npos);
+  // Criteria set after a first look are said on the landing page, not only in the notes.
+  CHECK(html.find("Criteria set after a first look at the data") != std::string::npos);
+  CHECK(html.find("report.html#claim-S-F3\"><code>S-F3</code></a>: the tolerance") !=
+        std::string::npos);
 }
 
 TEST_CASE("the landing page's counts: an erratum without a small correction is counted apart") {
