@@ -32,6 +32,9 @@ TEST_CASE("field audit: every published composition passes, every wrong one is f
       CHECK(std::abs(r.value("order_henon-heiles") - 4) < 0.2);
       CHECK(r.status == (std::abs(stated - 4) < 0.2 ? claims::Status::reproduced
                                                     : claims::Status::not_reproduced));
+      // Its headline blames the documentation, not the stepper, and gives the measured order.
+      if (r.status == claims::Status::not_reproduced)
+        CHECK(r.headline.starts_with("the order stated in the Doxygen brief of odeint's "));
       continue;
     }
     CHECK(r.status == claims::Status::reproduced);
