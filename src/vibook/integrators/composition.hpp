@@ -228,30 +228,40 @@ struct OrderConditions {
 /// Evaluate the order conditions in Real (mpfr_real at 120 digits for the command). `tolerance`
 /// decides "satisfied": 1e-12 by default, above the 1e-15–1e-13 that rounding the coefficients
 /// to double leaves and below the 1e-11 of a coefficient off in its eleventh digit.
-template <class Real>
-OrderConditions order_conditions(const Stages<Real>& stages, bool symmetric_base, int max_weight,
-                                 double tolerance = 1e-12) {
-  const WordAlgebra A(max_weight, symmetric_base);
-  const Series<Real> r = condition_vector(A, stages);
+/// The conditions from a residual vector over words 1 … n−1 (word 0 the empty one): the largest
+/// deviation of each weight and its word, and the order they give at `tolerance`. `weight(w)`
+/// and `name(w)` describe word w (composition and splitting algebras alike).
+template <class Real, class Weight, class Name>
+OrderConditions conditions_from(const Series<Real>& r, int max_weight, bool symmetric_base,
+                                double tolerance, Weight weight, Name name) {
   OrderConditions oc;
   oc.symmetric_base = symmetric_base;
   oc.max_weight = max_weight;
   oc.tolerance = tolerance;
   oc.residual.assign(static_cast<std::size_t>(max_weight), 0.0);
   oc.worst_word.assign(static_cast<std::size_t>(max_weight), "");
-  for (int w = 1; w < A.size(); ++w) {
+  for (int w = 1; w < static_cast<int>(r.size()); ++w) {
     using std::abs;
     const double v = static_cast<double>(abs(r[static_cast<std::size_t>(w)]));
-    const auto k = static_cast<std::size_t>(A.weight(w) - 1);
+    const auto k = static_cast<std::size_t>(weight(w) - 1);
     if (v > oc.residual[k] || oc.worst_word[k].empty()) {  // residuals start at 0
       oc.residual[k] = v;
-      oc.worst_word[k] = A.name(w);
+      oc.worst_word[k] = name(w);
     }
   }
   oc.order = 0;
   while (oc.order < max_weight && oc.residual[static_cast<std::size_t>(oc.order)] <= tolerance)
     ++oc.order;
   return oc;
+}
+
+template <class Real>
+OrderConditions order_conditions(const Stages<Real>& stages, bool symmetric_base, int max_weight,
+                                 double tolerance = 1e-12) {
+  const WordAlgebra A(max_weight, symmetric_base);
+  return conditions_from(
+      condition_vector(A, stages), max_weight, symmetric_base, tolerance,
+      [&A](int w) { return A.weight(w); }, [&A](int w) { return A.name(w); });
 }
 
 // -------------------------------------------------------------------------------------------

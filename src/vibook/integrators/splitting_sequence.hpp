@@ -339,25 +339,8 @@ OrderConditions splitting_order_conditions(const Sequence<Real>& s, int max_weig
   Series<Real> r = splitting_log(T, s);
   r[static_cast<std::size_t>(TwoLetterAlgebra::index(1, 0))] -= Real(1);
   r[static_cast<std::size_t>(TwoLetterAlgebra::index(1, 1))] -= Real(1);
-  OrderConditions oc;
-  oc.symmetric_base = false;
-  oc.max_weight = max_weight;
-  oc.tolerance = tolerance;
-  oc.residual.assign(static_cast<std::size_t>(max_weight), 0.0);
-  oc.worst_word.assign(static_cast<std::size_t>(max_weight), "");
-  for (int i = 1; i < T.size(); ++i) {
-    using std::abs;
-    const double v = static_cast<double>(abs(r[static_cast<std::size_t>(i)]));
-    const auto k = static_cast<std::size_t>(TwoLetterAlgebra::length(i) - 1);
-    if (v > oc.residual[k] || oc.worst_word[k].empty()) {
-      oc.residual[k] = v;
-      oc.worst_word[k] = TwoLetterAlgebra::name(i);
-    }
-  }
-  oc.order = 0;
-  while (oc.order < max_weight && oc.residual[static_cast<std::size_t>(oc.order)] <= tolerance)
-    ++oc.order;
-  return oc;
+  return conditions_from(r, max_weight, false, tolerance, &TwoLetterAlgebra::length,
+                         &TwoLetterAlgebra::name);
 }
 
 // -------------------------------------------------------------------------------------------

@@ -132,6 +132,25 @@ GeneratingStep generating_composition(const std::string& b, const P& prob,
   return composed_generating<N>(vi2, vi2, c, adj);
 }
 
+// The verdict line of order conditions (a composition's or a splitting's): the order they give
+// against the expected one, the first weight that fails, and whether a residual below 1e-8
+// points to inexact coefficients rather than a lower order. True when they reach it.
+bool conditions_verdict(const comp::OrderConditions& oc, const comp::OrderConditions& visible,
+                        double expected, const std::string& expected_from, MapMeasurement& rep) {
+  const bool ok = oc.order >= int(std::floor(expected + 1e-9));
+  std::string text = fmt::format(
+      "order {} by the conditions (each weight's residual <= {:.0e}); expected {:g} ({}): {}",
+      oc.order, kConditionTol, expected, expected_from, ok ? "yes" : "NO");
+  if (!ok && oc.order < oc.max_weight)
+    text += fmt::format(" -- weight {} fails by {:.2e} at the word {}", oc.order + 1,
+                        oc.residual[static_cast<std::size_t>(oc.order)],
+                        oc.worst_word[static_cast<std::size_t>(oc.order)]);
+  if (!ok && visible.order >= int(std::floor(expected + 1e-9)))
+    text += " (a residual below 1e-8: inexact coefficients rather than a lower order)";
+  rep.line("", text);
+  return ok;
+}
+
 // --- splittings (splitting_sequence.hpp) -----------------------------------------------------
 
 // A coefficient typed as an exact ratio of decimals ("7/24", "-0.25", "3"), as a rational; none
@@ -298,7 +317,8 @@ Composed splitting_conditions(const CompositionSpec& p, MapMeasurement& rep) {
   } else {
     // the order its conditions give, and never below 1: a method is at least consistent
     expected = std::max(1, visible.order);
-    expected_from = fmt::format("the order conditions at tolerance {:.0e}, at least 1", kVisibleTol);
+    expected_from =
+        fmt::format("the order conditions at tolerance {:.0e}, at least 1", kVisibleTol);
   }
   const std::size_t kicks = static_cast<std::size_t>(
       std::count_if(p.flows.begin(), p.flows.end(), [](const auto& f) { return f.kick; }));
@@ -332,17 +352,7 @@ Composed splitting_conditions(const CompositionSpec& p, MapMeasurement& rep) {
              fmt::format("two flows, A (drift) and B (kick): residual by weight ({} digits) {}",
                          kCompositionDigits, fmt::join(parts, ", ")));
   }
-  const bool conditions_ok = oc.order >= int(std::floor(expected + 1e-9));
-  std::string cond_text = fmt::format(
-      "order {} by the conditions (each weight's residual <= {:.0e}); expected {:g} ({}): {}",
-      oc.order, kConditionTol, expected, expected_from, conditions_ok ? "yes" : "NO");
-  if (!conditions_ok && oc.order < oc.max_weight)
-    cond_text += fmt::format(" -- weight {} fails by {:.2e} at the word {}", oc.order + 1,
-                             oc.residual[static_cast<std::size_t>(oc.order)],
-                             oc.worst_word[static_cast<std::size_t>(oc.order)]);
-  if (!conditions_ok && visible.order >= int(std::floor(expected + 1e-9)))
-    cond_text += " (a residual below 1e-8: inexact coefficients rather than a lower order)";
-  rep.line("", cond_text);
+  const bool conditions_ok = conditions_verdict(oc, visible, expected, expected_from, rep);
   if (!c.empty())
     rep.line("", fmt::format("(as a composition of any first-order method and its adjoint: order "
                              "{}; the splitting's own conditions decide)",
@@ -452,17 +462,7 @@ Composed conditions(const CompositionSpec& p, MapMeasurement& rep) {
                                          p.base->symmetric ? "symmetric" : "general",
                                          kCompositionDigits, fmt::join(parts, ", ")));
   }
-  const bool conditions_ok = oc.order >= int(std::floor(expected + 1e-9));
-  std::string cond_text = fmt::format(
-      "order {} by the conditions (each weight's residual <= {:.0e}); expected {:g} ({}): {}",
-      oc.order, kConditionTol, expected, expected_from, conditions_ok ? "yes" : "NO");
-  if (!conditions_ok && oc.order < oc.max_weight)
-    cond_text += fmt::format(" -- weight {} fails by {:.2e} at the word {}", oc.order + 1,
-                             oc.residual[static_cast<std::size_t>(oc.order)],
-                             oc.worst_word[static_cast<std::size_t>(oc.order)]);
-  if (!conditions_ok && visible.order >= int(std::floor(expected + 1e-9)))
-    cond_text += " (a residual below 1e-8: inexact coefficients rather than a lower order)";
-  line("", cond_text);
+  const bool conditions_ok = conditions_verdict(oc, visible, expected, expected_from, rep);
   required.push_back("order conditions");
   if (!conditions_ok) failed.push_back("order conditions");
   js["composition"] = {{"base", p.base->name},
