@@ -403,15 +403,16 @@ std::function<int()> add_verify_command(CLI::App& app) {
                 "--ld typed (its adjoint -L_d(q1, q0, -h) for '*' stages; dimensions 1-3) on the "
                 "system of --potential or --hamiltonian (order conditions at 120 digits, "
                 "measured order, symplecticity, reversibility, energy)");
-  c->add_option("--splitting", o->splitting,
-                "verify a splitting method of H = T(p) + V(q) instead of an --ld: its flows in "
-                "the order they act, 'drift:c1,kick:d1,drift:c2,...' (coefficients as ratios, "
-                "decimals or expressions such as 1/(2-2^(1/3)) or 1/2-sqrt(3)/6), or a catalogue "
-                "name (leapfrog, forest-ruth, omelyan-2, saba-2, saba-3, sbab-2, ruth-3); on "
-                "--problem, or on H = |p|^2/2 + V with --potential (order conditions for two flows "
-                "at 120 digits, its equivalent "
-                "composition of symplectic Euler, measured order, symplecticity, symmetry, "
-                "energy)");
+  c->add_option(
+      "--splitting", o->splitting,
+      "verify a splitting method of H = T(p) + V(q) instead of an --ld: its flows in "
+      "the order they act, 'drift:c1,kick:d1,drift:c2,...' (coefficients as ratios, "
+      "decimals or expressions such as 1/(2-2^(1/3)) or 1/2-sqrt(3)/6), or a catalogue "
+      "name (leapfrog, forest-ruth, omelyan-2, saba-2, saba-3, saba-4, sbab-2, sbab-3, ruth-3); on "
+      "--problem, or on H = |p|^2/2 + V with --potential (order conditions for two flows "
+      "at 120 digits, its equivalent "
+      "composition of symplectic Euler, measured order, symplecticity, symmetry, "
+      "energy)");
   c->add_option("--coefficients", o->coefficients,
                 "with --composition: a catalogue name (yoshida4, suzuki4, yoshida6, yoshida8, "
                 "mclachlan8, kahanli6, kahanli8, ruth3) or the stages' coefficients in order of "

@@ -4,6 +4,7 @@
 // nonlinear Hénon–Heiles problem, against the continuous equations in double-double).
 #include <doctest/doctest.h>
 
+#include <bit>
 #include <cmath>
 #include <string>
 #include <vector>
@@ -236,6 +237,42 @@ TEST_CASE("splitting: the two-flow order conditions against known orders, and wr
     const auto oc = comp::splitting_order_conditions(
         comp::parse_sequence<R>("--splitting", e.flows), e.order + 2);
     CHECK(oc.order == e.order);
+  }
+  // The Laskar-Robutel methods' nodes and weights are quadrature rules, Gauss (SABA_n, exact to
+  // degree 2n - 1) and Lobatto (SBAB_n, n + 1 nodes, the same degree): the words with a single
+  // kick B vanish up to weight 2n (their error is O(h^2n eps + h^2 eps^2)). A node or weight
+  // typed wrong breaks this, though not the generic order 2.
+  for (const auto& [name, n] :
+       {std::pair{"saba-2", 2}, std::pair{"saba-3", 3}, std::pair{"saba-4", 4},
+        std::pair{"sbab-2", 2}, std::pair{"sbab-3", 3}}) {
+    INFO(name);
+    const comp::TwoLetterAlgebra T(2 * n);
+    const auto L = comp::splitting_log(
+        T, comp::parse_sequence<R>("--splitting", comp::find_splitting(name)->flows));
+    R worst = 0;
+    for (int len = 2; len <= 2 * n; ++len)
+      for (unsigned bits = 0; bits < (1u << len); ++bits)
+        if (std::popcount(bits) == 1) {
+          const R c = abs(L[static_cast<std::size_t>(comp::TwoLetterAlgebra::index(len, bits))]);
+          if (c > worst) worst = c;
+        }
+    CHECK(worst < R("1e-100"));
+  }
+  // SABA_4 with its Gauss weights swapped: still symmetric and of order 2, but no longer the
+  // quadrature: a single-kick word of weight 3 does not vanish.
+  {
+    std::string f = comp::find_splitting("saba-4")->flows;
+    for (std::size_t at = 0; (at = f.find("(18-sqrt(30))", at)) != std::string::npos; ++at)
+      f[at + 3] = '#';
+    for (std::size_t at = 0; (at = f.find("(18+sqrt(30))", at)) != std::string::npos; ++at)
+      f[at + 3] = '-';
+    for (auto& ch : f)
+      if (ch == '#') ch = '+';
+    const auto seq = comp::parse_sequence<R>("--splitting", f);
+    CHECK(comp::splitting_order_conditions(seq, 4).order == 2);
+    const comp::TwoLetterAlgebra T(3);
+    const auto L = comp::splitting_log(T, seq);
+    CHECK(abs(L[static_cast<std::size_t>(comp::TwoLetterAlgebra::index(3, 2u))]) > R("1e-3"));
   }
   // Forest-Ruth stepped as a non-palindromic sequence (its last half drift moved to the front,
   // so that the first drift is whole): order 1. One kick's sign flipped: not consistent.

@@ -388,10 +388,25 @@ inline const std::vector<SplittingEntry>& splitting_catalogue() {
        "drift:1/2-sqrt(15)/10,kick:5/18,drift:sqrt(15)/10,kick:4/9,drift:sqrt(15)/10,kick:5/18,"
        "drift:1/2-sqrt(15)/10",
        2},
+      {"saba-4",
+       "Laskar & Robutel 2001, Celest. Mech. Dyn. Astron. 80, 39, SABA_4 (kicks at the four "
+       "Gauss nodes 1/2 -+ sqrt(525 +- 70 sqrt(30))/70, the Gauss weights (18 -+ sqrt(30))/72)",
+       "drift:1/2-sqrt(525+70*sqrt(30))/70,kick:(18-sqrt(30))/72,"
+       "drift:(sqrt(525+70*sqrt(30))-sqrt(525-70*sqrt(30)))/70,kick:(18+sqrt(30))/72,"
+       "drift:sqrt(525-70*sqrt(30))/35,kick:(18+sqrt(30))/72,"
+       "drift:(sqrt(525+70*sqrt(30))-sqrt(525-70*sqrt(30)))/70,kick:(18-sqrt(30))/72,"
+       "drift:1/2-sqrt(525+70*sqrt(30))/70",
+       2},
       {"sbab-2",
        "Laskar & Robutel 2001, Celest. Mech. Dyn. Astron. 80, 39, SBAB_2 (kicks at the Lobatto "
        "nodes, the Lobatto weights)",
        "kick:1/6,drift:1/2,kick:2/3,drift:1/2,kick:1/6", 2},
+      {"sbab-3",
+       "Laskar & Robutel 2001, Celest. Mech. Dyn. Astron. 80, 39, SBAB_3 (kicks at the four "
+       "Lobatto nodes 0, 1/2 -+ sqrt(5)/10, 1, the Lobatto weights 1/12, 5/12)",
+       "kick:1/12,drift:1/2-sqrt(5)/10,kick:5/12,drift:sqrt(5)/5,kick:5/12,drift:1/2-sqrt(5)/10,"
+       "kick:1/12",
+       2},
       {"ruth-3",
        "Ruth 1983, IEEE Trans. Nucl. Sci. 30, 2669: kick 7/24, drift 2/3, kick 3/4, drift -2/3, "
        "kick -1/24, drift 1",
