@@ -134,7 +134,8 @@ GeneratingStep generating_composition(const std::string& b, const P& prob,
 
 // The verdict line of order conditions (a composition's or a splitting's): the order they give
 // against the expected one, the first weight that fails, and whether a residual below 1e-8
-// points to inexact coefficients rather than a lower order. True when they reach it.
+// points to inexact coefficients rather than a lower order; the same in the JSON
+// (order_conditions, the caller adds what describes its algebra). True when they reach it.
 bool conditions_verdict(const comp::OrderConditions& oc, const comp::OrderConditions& visible,
                         double expected, const std::string& expected_from, MapMeasurement& rep) {
   const bool ok = oc.order >= int(std::floor(expected + 1e-9));
@@ -148,6 +149,16 @@ bool conditions_verdict(const comp::OrderConditions& oc, const comp::OrderCondit
   if (!ok && visible.order >= int(std::floor(expected + 1e-9)))
     text += " (a residual below 1e-8: inexact coefficients rather than a lower order)";
   rep.line("", text);
+  rep.js["order_conditions"] = {{"digits", kCompositionDigits},
+                                {"residual_by_weight", oc.residual},
+                                {"worst_word", oc.worst_word},
+                                {"tolerance", kConditionTol},
+                                {"order", oc.order},
+                                {"visible_tolerance", kVisibleTol},
+                                {"visible_order", visible.order},
+                                {"expected", expected},
+                                {"expected_from", expected_from},
+                                {"passed", ok}};
   return ok;
 }
 
@@ -365,17 +376,7 @@ Composed splitting_conditions(const CompositionSpec& p, MapMeasurement& rep) {
                      {"palindrome", palindrome},
                      {"composition", {{"base", "se"}, {"stages", c}, {"adjoint", adj}}},
                      {"composition_order", as_composition.order}};
-  js["order_conditions"] = {{"digits", kCompositionDigits},
-                            {"flows", "two: A (drift), B (kick)"},
-                            {"residual_by_weight", oc.residual},
-                            {"worst_word", oc.worst_word},
-                            {"tolerance", kConditionTol},
-                            {"order", oc.order},
-                            {"visible_tolerance", kVisibleTol},
-                            {"visible_order", visible.order},
-                            {"expected", expected},
-                            {"expected_from", expected_from},
-                            {"passed", conditions_ok}};
+  js["order_conditions"]["flows"] = "two: A (drift), B (kick)";
   return {c, adj, palindrome, expected, double(oc.order)};
 }
 
@@ -477,17 +478,7 @@ Composed conditions(const CompositionSpec& p, MapMeasurement& rep) {
                                    {"max_change_from_published", rf.max_change},
                                    {"published_residual_by_weight", rf.published_residual},
                                    {"final_residual", rf.final_residual}};
-  js["order_conditions"] = {{"digits", kCompositionDigits},
-                            {"symmetric_base", p.base->symmetric},
-                            {"residual_by_weight", oc.residual},
-                            {"worst_word", oc.worst_word},
-                            {"tolerance", kConditionTol},
-                            {"order", oc.order},
-                            {"visible_tolerance", kVisibleTol},
-                            {"visible_order", visible.order},
-                            {"expected", expected},
-                            {"expected_from", expected_from},
-                            {"passed", conditions_ok}};
+  js["order_conditions"]["symmetric_base"] = p.base->symmetric;
   return {c, adj, symmetric, expected, double(oc.order)};
 }
 
