@@ -32,60 +32,71 @@
 #include <limits>
 #include <stdexcept>
 #include <string>
+#include <type_traits>
 #include <vector>
 
 #include "vibook/core/autodiff.hpp"
 #include "vibook/core/errors.hpp"
 #include "vibook/core/newton.hpp"
+#include "vibook/core/scalar.hpp"
 #include "vibook/core/types.hpp"
 
 namespace vibook {
 
-/// A quadrature rule on [0, 1]: nodes c_i and weights b_i.
-struct Quadrature {
+/// A quadrature rule on [0, 1]: nodes c_i and weights b_i, in the scalar T.
+template <class T>
+struct QuadratureT {
   std::string name;  ///< "gauss" or "lobatto"
-  std::vector<double> c, b;
+  std::vector<T> c, b;
   int order = 0;  ///< the order of the variational integrator built on it (2s or 2s − 2)
 };
+using Quadrature = QuadratureT<double>;
 
 namespace galerkin_detail {
 
-// P_n(x) and P_n'(x) on [−1, 1] by the three-term recurrence.
-inline void legendre(int n, long double x, long double& p, long double& dp) {
-  long double p0 = 1, p1 = x;
+// P_n(x) and P_n'(x) on [−1, 1] by the three-term recurrence, in the scalar R.
+template <class R>
+void legendre(int n, R x, R& p, R& dp) {
+  R p0 = R(1), p1 = x;
   if (n == 0) {
-    p = 1;
-    dp = 0;
+    p = R(1);
+    dp = R(0);
     return;
   }
   for (int k = 2; k <= n; ++k) {
-    const long double p2 = ((2 * k - 1) * x * p1 - (k - 1) * p0) / k;
+    const R p2 = (R(2 * k - 1) * x * p1 - R(k - 1) * p0) / R(k);
     p0 = p1;
     p1 = p2;
   }
   p = p1;
-  dp = n * (x * p1 - p0) / (x * x - 1);  // valid off ±1 (Gauss nodes and Lobatto interiors)
+  dp = R(n) * (x * p1 - p0) / (x * x - R(1));  // valid off ±1 (Gauss nodes and Lobatto interiors)
 }
 
 // Lagrange basis polynomial j on the nodes x, and its derivative, at t.
-inline long double lagrange(const std::vector<long double>& x, std::size_t j, long double t) {
-  long double r = 1;
+template <class R>
+R lagrange(const std::vector<R>& x, std::size_t j, R t) {
+  R r = R(1);
   for (std::size_t m = 0; m < x.size(); ++m)
     if (m != j) r *= (t - x[m]) / (x[j] - x[m]);
   return r;
 }
-inline long double lagrange_derivative(const std::vector<long double>& x, std::size_t j,
-                                       long double t) {
-  long double sum = 0;
+template <class R>
+R lagrange_derivative(const std::vector<R>& x, std::size_t j, R t) {
+  R sum = R(0);
   for (std::size_t k = 0; k < x.size(); ++k) {
     if (k == j) continue;
-    long double term = 1 / (x[j] - x[k]);
+    R term = R(1) / (x[j] - x[k]);
     for (std::size_t m = 0; m < x.size(); ++m)
       if (m != j && m != k) term *= (t - x[m]) / (x[j] - x[m]);
     sum += term;
   }
   return sum;
 }
+
+// The scalar the integrator's basis coefficients are computed in: long double for double (as
+// the nodes are), T itself for a wider type.
+template <class T>
+using BasisReal = std::conditional_t<std::is_same_v<T, double>, long double, T>;
 
 }  // namespace galerkin_detail
 
@@ -140,6 +151,41 @@ inline Quadrature lobatto_rule(int s) {
   return q;
 }
 
+/// The same rule in a wider scalar T (double-double, for the order studies beyond double):
+/// each interior node refined by Newton's method on its defining equation in T, from the long
+/// double node, and the weights recomputed in T from the same formulas.
+template <class T>
+QuadratureT<T> quadrature_in(const Quadrature& r) {
+  using std::abs;
+  QuadratureT<T> q{r.name, {}, {}, r.order};
+  const int s = static_cast<int>(r.c.size());
+  const T eps = unit_roundoff<T>();
+  for (int i = 0; i < s; ++i) {
+    if (r.name == "lobatto" && (i == 0 || i == s - 1)) {
+      q.c.push_back(T(i == 0 ? 0 : 1));
+      q.b.push_back(T(1) / T(s * (s - 1)));
+      continue;
+    }
+    T x = T(2) * T(r.c[static_cast<std::size_t>(i)]) - T(1), p, dp;
+    const int n = r.name == "lobatto" ? s - 1 : s;
+    for (int it = 0; it < 20; ++it) {
+      galerkin_detail::legendre(n, x, p, dp);
+      T dx;
+      if (r.name == "lobatto")  // f = P_n', f' = (2x P_n' − n(n+1) P_n)/(1 − x²)
+        dx = dp / ((T(2) * x * dp - T(n * (n + 1)) * p) / (T(1) - x * x));
+      else
+        dx = p / dp;
+      x -= dx;
+      if (abs(dx) <= T(4) * eps) break;
+    }
+    galerkin_detail::legendre(n, x, p, dp);
+    q.c.push_back((T(1) + x) / T(2));
+    q.b.push_back(r.name == "lobatto" ? T(1) / (T(s * (s - 1)) * p * p)
+                                      : T(1) / ((T(1) - x * x) * dp * dp));
+  }
+  return q;
+}
+
 /// "gauss:S" or "lobatto:S" (S the number of stages).
 inline Quadrature quadrature_rule(const std::string& family, int s) {
   if (family == "gauss") return gauss_rule(s);
@@ -154,8 +200,9 @@ inline Quadrature quadrature_rule(const std::string& family, int s) {
 /// instance serves every rule; the same arithmetic, a little slower). `step` has the interface
 /// of DelIntegrator: it advances (q, p) in place, reports the residual and iterations, and
 /// throws SolveError (leaving q, p unchanged) when Newton does not converge or the result is
-/// not finite.
-template <int N, int S, class Lagrangian>
+/// not finite. T is the scalar of the state and the solve (double, or double-double with the
+/// rule from quadrature_in and Newton's stopping rule at T's round-off).
+template <int N, int S, class Lagrangian, class T = double>
 class GalerkinIntegrator {
   static constexpr bool fixed = S != Eigen::Dynamic;
 
@@ -164,29 +211,28 @@ class GalerkinIntegrator {
   static constexpr int M = fixed ? (S + 1) * N : Eigen::Dynamic;  ///< all control points
   static constexpr int U = fixed ? S * N : Eigen::Dynamic;  ///< interior control points and q1
 
-  GalerkinIntegrator(Lagrangian L, Quadrature rule, NewtonOptions options = {})
+  GalerkinIntegrator(Lagrangian L, QuadratureT<T> rule, NewtonOptions options = {})
       : L_(std::move(L)),
         rule_(std::move(rule)),
         options_(options),
         s_(static_cast<int>(rule_.c.size())) {
     if ((fixed && s_ != S) || s_ < 1 || rule_.b.size() != rule_.c.size())
       throw std::invalid_argument("GalerkinIntegrator: the rule must have S nodes and weights");
-    std::vector<long double> d(static_cast<std::size_t>(s_ + 1));
-    for (int nu = 0; nu <= s_; ++nu)
-      d[static_cast<std::size_t>(nu)] = static_cast<long double>(nu) / s_;
+    using R = galerkin_detail::BasisReal<T>;
+    std::vector<R> d(static_cast<std::size_t>(s_ + 1));
+    for (int nu = 0; nu <= s_; ++nu) d[static_cast<std::size_t>(nu)] = R(nu) / R(s_);
     ell_.resize(static_cast<std::size_t>(s_ * (s_ + 1)));
     dell_.resize(ell_.size());
     for (int i = 0; i < s_; ++i)
       for (int nu = 0; nu <= s_; ++nu) {
-        const long double t = rule_.c[static_cast<std::size_t>(i)];
-        ell(i, nu) =
-            static_cast<double>(galerkin_detail::lagrange(d, static_cast<std::size_t>(nu), t));
-        dell(i, nu) = static_cast<double>(
+        const R t = R(rule_.c[static_cast<std::size_t>(i)]);
+        ell(i, nu) = static_cast<T>(galerkin_detail::lagrange(d, static_cast<std::size_t>(nu), t));
+        dell(i, nu) = static_cast<T>(
             galerkin_detail::lagrange_derivative(d, static_cast<std::size_t>(nu), t));
       }
   }
 
-  const Quadrature& rule() const { return rule_; }
+  const QuadratureT<T>& rule() const { return rule_; }
 
   /// One step. The control points are carried as increments, Q^ν = q0 + h W_ν (W_0 = 0), and
   /// the action over h as Φ(q0, W) = A/h = Σ_i b_i L(q0 + h Σ_ν ℓ_ν(c_i) W_ν,
@@ -195,37 +241,37 @@ class GalerkinIntegrator {
   /// ∂A/∂Q^ν = ∂Φ/∂W_ν (ν ≥ 1) and ∂A/∂Q^0 = h ∂Φ/∂q0 − Σ_ν ∂Φ/∂W_ν, so the equations are
   /// ∂Φ/∂W_ν = 0 (ν = 1 … S−1) and p0 + h ∂Φ/∂q0 − ∂Φ/∂W_S = 0 for W = (W_1 … W_S); then
   /// q1 = q0 + h W_S and p1 = ∂Φ/∂W_S = p0 + h ∂Φ/∂q0.
-  SolveReport step(Vec<double, N>& q, Vec<double, N>& p, double h) {
+  SolveReport step(Vec<T, N>& q, Vec<T, N>& p, T h) {
     const int ns = s_, u = ns * N, m = (ns + 1) * N;
-    const Vec<double, N> q0 = q, p0 = p;
+    const Vec<T, N> q0 = q, p0 = p;
     // guess W_ν = d_ν p0 (the straight line with velocity p0: unit mass)
-    Vec<double, U> w = Vec<double, U>::Zero(u);
-    for (int nu = 1; nu <= ns; ++nu) w.template segment<N>((nu - 1) * N) = (double(nu) / ns) * p0;
-    Vec<double, M> grad = Vec<double, M>::Zero(m);
-    Mat<double, M> hess = Mat<double, M>::Zero(m, m);
-    double phi = 0;  // Φ = A/h at the last evaluation
+    Vec<T, U> w = Vec<T, U>::Zero(u);
+    for (int nu = 1; nu <= ns; ++nu) w.template segment<N>((nu - 1) * N) = (T(nu) / T(ns)) * p0;
+    Vec<T, M> grad = Vec<T, M>::Zero(m);
+    Mat<T, M> hess = Mat<T, M>::Zero(m, m);
+    T phi = T(0);  // Φ = A/h at the last evaluation
     // Φ's gradient and Hessian in X = (q0, W): Φ = Σ_i b_i L(B_i X) with B_i the linear map to
     // (q, v) at node i, so they are Σ b_i B_iᵀ ∇L and Σ b_i B_iᵀ ∇²L B_i, with ∇L and ∇²L in the
     // 2N variables (q, v) by nested AutoDiff (small, whatever S is).
-    auto derivatives = [&](const Vec<double, U>& x) {
+    auto derivatives = [&](const Vec<T, U>& x) {
       constexpr int K = 2 * N;
-      using In = ad::Dual<K, double>;
-      using Out = ad::Dual2<K, double>;
+      using In = ad::Dual<K, T>;
+      using Out = ad::Dual2<K, T>;
       grad.setZero();
       hess.setZero();
-      phi = 0;
+      phi = T(0);
       for (int i = 0; i < ns; ++i) {
-        Eigen::Matrix<double, K, M> B = Eigen::Matrix<double, K, M>::Zero(K, m);
+        Eigen::Matrix<T, K, M> B = Eigen::Matrix<T, K, M>::Zero(K, m);
         for (int k = 0; k < N; ++k) {
-          B(k, k) = 1;
+          B(k, k) = T(1);
           for (int nu = 1; nu <= ns; ++nu) {
             B(k, nu * N + k) = h * ell(i, nu);
             B(N + k, nu * N + k) = dell(i, nu);
           }
         }
-        Vec<double, K> z;
+        Vec<T, K> z;
         for (int k = 0; k < N; ++k) {
-          double qk = q0(k), vk = 0;
+          T qk = q0(k), vk = T(0);
           for (int nu = 1; nu <= ns; ++nu) {
             qk += h * ell(i, nu) * x((nu - 1) * N + k);
             vk += dell(i, nu) * x((nu - 1) * N + k);
@@ -237,21 +283,21 @@ class GalerkinIntegrator {
         for (int k = 0; k < K; ++k) {
           Y(k) = Out(In(z(k), K, k));
           Y(k).derivatives().setZero();
-          Y(k).derivatives()(k) = In(1.0);
+          Y(k).derivatives()(k) = In(T(1));
         }
         const Vec<Out, N> qq = Y.template head<N>(), vv = Y.template tail<N>();
         static_assert(ad::returns_scalar<decltype(L_(qq, vv)), Out>, VIBOOK_RETURNS_SCALAR_MESSAGE);
         const Out l = L_(qq, vv);
-        const Vec<double, K> g = l.value().derivatives();
-        Mat<double, K> Hl;
+        const Vec<T, K> g = l.value().derivatives();
+        Mat<T, K> Hl;
         for (int j = 0; j < K; ++j) Hl.col(j) = l.derivatives()(j).derivatives();
-        const double b = rule_.b[static_cast<std::size_t>(i)];
+        const T b = rule_.b[static_cast<std::size_t>(i)];
         phi += b * l.value().value();
         grad.noalias() += b * (B.transpose() * g);
         hess.noalias() += b * (B.transpose() * Hl * B);
       }
     };
-    auto fj = [&](const Vec<double, U>& x, Vec<double, U>& F, Mat<double, U>& J) {
+    auto fj = [&](const Vec<T, U>& x, Vec<T, U>& F, Mat<T, U>& J) {
       derivatives(x);
       // rows: F_0 = p0 + h Φ_q0 − Φ_{W_S}, then Φ_{W_1} … Φ_{W_{S−1}}
       F.template head<N>() = p0 + h * grad.template head<N>() - grad.template tail<N>();
@@ -265,19 +311,31 @@ class GalerkinIntegrator {
     // The updates are judged against the size of the momenta as well as each component's own
     // (a component of W near zero would otherwise ask for more than round-off allows).
     NewtonOptions opt = options_;
-    opt.step_abs = std::max(opt.step_abs, 4 * std::numeric_limits<double>::epsilon() *
-                                              std::max(1.0, p0.template lpNorm<Eigen::Infinity>()));
+    if constexpr (std::is_same_v<T, double>) {
+      opt.step_abs =
+          std::max(opt.step_abs, 4 * std::numeric_limits<double>::epsilon() *
+                                     std::max(1.0, p0.template lpNorm<Eigen::Infinity>()));
+    } else {  // the stopping rule at T's round-off
+      opt.step_rel = std::min(opt.step_rel, 4 * to_double(unit_roundoff<T>()));
+      opt.step_abs = std::max(
+          opt.step_abs, 4 * to_double(unit_roundoff<T>()) *
+                            std::max(1.0, to_double(T(p0.template lpNorm<Eigen::Infinity>()))));
+    }
     const SolveReport rep = newton_solve<U>(w, fj, opt, "Galerkin step");
     if (!rep.converged) throw SolveError("Galerkin step", rep);
     derivatives(w);
-    const Vec<double, N> q1 = q0 + h * w.template tail<N>();
+    const Vec<T, N> q1 = q0 + h * w.template tail<N>();
     // p1 = ∂A/∂Q^S = ∂Φ/∂W_S; at the solution this equals p0 + h ∂Φ/∂q0 (a common shift of all
     // control points changes A by h ∂Φ/∂q0, and the other partial derivatives are −p0 and 0).
     // The second form sums b_i ∂L/∂q, not Lagrange-derivative coefficients of size up to S²
     // times ∂L/∂v, and leaves u|p| of round-off instead of about 10 u|p|.
-    const Vec<double, N> p1 = p0 + h * grad.template head<N>();
-    if (!q1.allFinite() || !p1.allFinite())
-      throw SolveError("Galerkin step: non-finite state", rep);
+    const Vec<T, N> p1 = p0 + h * grad.template head<N>();
+    auto finite = [](const Vec<T, N>& v) {
+      for (Eigen::Index i = 0; i < v.size(); ++i)
+        if (!std::isfinite(to_double(v(i)))) return false;
+      return true;
+    };
+    if (!finite(q1) || !finite(p1)) throw SolveError("Galerkin step: non-finite state", rep);
     q = q1;
     p = p1;
     action_ = h * phi;
@@ -287,19 +345,19 @@ class GalerkinIntegrator {
   /// The discrete Lagrangian of the last step, L_d(q0, q1, h) = A = h Φ at the solved
   /// polynomial (Marsden & West's scaling, L_d ≈ ∫ L dt): the quadrature action with the
   /// interior control points at their extremum for the step's two ends.
-  double action() const { return action_; }
+  T action() const { return action_; }
 
  private:
   // ℓ_ν(c_i) and ℓ'_ν(c_i), i < s, ν ≤ s
-  double& ell(int i, int nu) { return ell_[static_cast<std::size_t>(i * (s_ + 1) + nu)]; }
-  double& dell(int i, int nu) { return dell_[static_cast<std::size_t>(i * (s_ + 1) + nu)]; }
+  T& ell(int i, int nu) { return ell_[static_cast<std::size_t>(i * (s_ + 1) + nu)]; }
+  T& dell(int i, int nu) { return dell_[static_cast<std::size_t>(i * (s_ + 1) + nu)]; }
 
   Lagrangian L_;
-  Quadrature rule_;
+  QuadratureT<T> rule_;
   NewtonOptions options_;
   int s_;  ///< the number of stages (S when S is fixed)
-  std::vector<double> ell_, dell_;
-  double action_ = 0;
+  std::vector<T> ell_, dell_;
+  T action_ = T(0);
 };
 
 /// The partitioned Runge–Kutta method HLW Theorem VI.6.4 pairs with the Galerkin integrator on

@@ -10,6 +10,8 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "vibook/core/precision.hpp"
+#include "vibook/core/scalar.hpp"
 #include "vibook/integrators/step_difference_test.hpp"
 #include "vibook/kepler/kepler.hpp"
 #include "vibook/problems/problems.hpp"
@@ -80,6 +82,57 @@ TEST_CASE("quadrature rules: Gauss exact to degree 2s-1, Lobatto to 2s-3, and no
   CHECK(std::abs(l3.c[1] - 0.5) <= 1e-16);
   CHECK(std::abs(l3.b[1] - 2.0 / 3) <= 2e-16);
   CHECK(std::abs(l3.b[0] - 1.0 / 6) <= 2e-16);
+}
+
+TEST_CASE("quadrature rules in double-double: exact to 1e-30 where the rule is, and no further") {
+  // quadrature_in refines each node by Newton's method in double-double. The moments the rule
+  // integrates exactly vanish to double-double's round-off (measured: below 1e-31); the first
+  // one it does not integrate stays at its true size (above 1e-6 up to five nodes), so a rule left
+  // at double's nodes (moments near 1e-17) fails the first bound.
+  auto moment = [](const QuadratureT<dd_real>& q, int k) {
+    dd_real sum(0.0);
+    for (std::size_t i = 0; i < q.c.size(); ++i) {
+      dd_real x(1.0);
+      for (int j = 0; j < k; ++j) x *= q.c[i];
+      sum += q.b[i] * x;
+    }
+    return std::abs(to_double(sum - dd_real(1.0) / dd_real(double(k + 1))));
+  };
+  for (int s = 1; s <= 5; ++s) {
+    CAPTURE(s);
+    const QuadratureT<dd_real> g = quadrature_in<dd_real>(gauss_rule(s));
+    for (int k = 0; k <= 2 * s - 1; ++k) CHECK(moment(g, k) <= 1e-30);
+    CHECK(moment(g, 2 * s) > 1e-8);
+    if (s < 2) continue;
+    const QuadratureT<dd_real> l = quadrature_in<dd_real>(lobatto_rule(s));
+    for (int k = 0; k <= 2 * s - 3; ++k) CHECK(moment(l, k) <= 1e-30);
+    CHECK(moment(l, 2 * s - 2) > 1e-8);
+  }
+}
+
+TEST_CASE(
+    "Galerkin step in double-double: the double step to its round-off, and its own to 1e-30") {
+  // The same step of lobatto:4 on the pendulum from (1, 0.5), h = 0.1, in double and in
+  // double-double: they agree to a few units of double's round-off (the double step's own
+  // error), and two double-double steps from the same state agree exactly. An error in the
+  // generic code (a coefficient left in double, a wrong node) would separate them by far more.
+  auto L = mechanical(Pendulum{});
+  GalerkinIntegrator<1, Eigen::Dynamic, decltype(L)> in_double(L, lobatto_rule(4));
+  GalerkinIntegrator<1, Eigen::Dynamic, decltype(L), dd_real> in_dd(
+      L, quadrature_in<dd_real>(lobatto_rule(4)));
+  Vec<double, 1> q{1.0}, p{0.5};
+  Vec<dd_real, 1> Q{dd_real(1.0)}, P{dd_real(0.5)};
+  in_double.step(q, p, 0.1);
+  in_dd.step(Q, P, dd_real(0.1));
+  CHECK(std::abs(to_double(Q(0)) - q(0)) <= 8 * 2.2e-16);
+  CHECK(std::abs(to_double(P(0)) - p(0)) <= 8 * 2.2e-16);
+  CHECK(std::abs(to_double(in_dd.action()) - in_double.action()) <= 8 * 2.2e-16);
+  // the method is symmetric and the pendulum reversible: from (q1, -p1) one step of h returns
+  // to (q0, -p0), to double-double's round-off
+  Vec<dd_real, 1> Q2 = Q, P2 = -P;
+  in_dd.step(Q2, P2, dd_real(0.1));
+  CHECK(std::abs(to_double(Q2(0) - dd_real(1.0))) <= 1e-29);
+  CHECK(std::abs(to_double(P2(0) + dd_real(0.5))) <= 1e-29);
 }
 
 TEST_CASE("Galerkin variational integrators are the partitioned Runge-Kutta methods (HLW VI.6.4)") {
