@@ -79,6 +79,8 @@ using GeneratingStep = std::function<double(Eigen::VectorXd& z, double h)>;
 /// A state in double-double, and one step of a map in that arithmetic.
 using VecXdd = Eigen::Matrix<dd_real, Eigen::Dynamic, 1>;
 using StepDD = std::function<void(VecXdd& z, const dd_real& h)>;
+/// GeneratingStep in double-double: advances z and returns L_d(q0, q1, h).
+using GeneratingStepDD = std::function<dd_real(VecXdd& z, const dd_real& h)>;
 
 /// The expected order from which the order study runs in double-double when the method has a
 /// step in it (MapStudy::step_dd): from order 6 on, double's window [1e-12, 1e-6] lies in the
@@ -111,6 +113,9 @@ struct MapStudy {
       reference;
   std::string equations = "Hamilton's equations";
   verify::Observable H;  ///< the energy
+  /// Optional: the energy in double-double (a test problem's), for the variational order's
+  /// exact side in double-double.
+  std::function<dd_real(const VecXdd& z)> H_dd;
   double t_end = 5, h = 0.05, order_tol = 0.2, expected = 2;
   long long steps = 100000;
   std::vector<double> hs;  ///< --h-list (empty: the walk of step counts)
@@ -132,6 +137,10 @@ struct MapStudy {
   /// Optional: the method's step with its discrete Lagrangian. When given, the variational
   /// order is measured and reported beside the order (measure_variational_order).
   GeneratingStep generating;
+  /// Optional: the same in double-double. With it, H_dd, no `reference` and an expected order
+  /// of at least kExtendedOrder, the variational order is measured in double-double, its window
+  /// down to 1e-25 (measure_variational_order).
+  GeneratingStepDD generating_dd;
   std::string generating_from;  ///< how the step's L_d is formed, for the report
   /// Optional: the variational order derived (symbolically), reported right after the measured
   /// one; it may add "variational order" to the verdict (method_symbolic.hpp).
@@ -167,9 +176,11 @@ void measure_map(const MapStudy& s, MapMeasurement& r);
 /// ∫ p·q' dt as an extra component, less h·H); the method's side is `generating` from the
 /// momentum that makes its q1 equal the exact q(h) (Newton, central-difference Jacobian). The
 /// exponent r + 1 is fitted to the largest of the three defects in the window
-/// [1e-12, 1e-8]·scale, scale = max(1, |H0|, ½|p0|²), with an O(h) correction term. Reported
-/// (text and JSON "variational_order"), never part of the verdict: in double precision the
-/// window of an eighth-order method is still pre-asymptotic.
+/// [1e-12, 1e-8]·scale, scale = max(1, |H0|, ½|p0|²), with an O(h) correction term. With
+/// MapStudy::generating_dd (and H_dd) and an expected order of at least kExtendedOrder, the
+/// steps, the shooting and the exact side's energy are in double-double and the window reaches
+/// down to 1e-25·scale: in double the window of an eighth-order method is still
+/// pre-asymptotic. Reported (text and JSON "variational_order"), never part of the verdict.
 void measure_variational_order(const MapStudy& s, MapMeasurement& r);
 
 /// Integrate over [0, T] with steps of h, the last shortened to end at T (verify::integrate),

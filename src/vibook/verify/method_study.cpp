@@ -83,14 +83,19 @@ void measure_method(const MethodSpec& spec, const TestProblem& problem,
   const StudySystem system = test_problem_system(problem, q0, p0);
   const int N = static_cast<int>(q0.size());
   const char* who = "measure_method";
+  // The same method in double-double, for the order study and the variational order from
+  // order 6 on (map_study.hpp, kExtendedOrder).
+  MapStudy s = study;
+  const method_detail::GalerkinDD dd = method_detail::galerkin_dd(problem.name, spec.rule);
+  s.step_dd = dd.step;
+  s.generating_dd = dd.generating;
   if (problem.name == "pendulum")
-    return method_detail::measure(spec, N, system, study, rep,
+    return method_detail::measure(spec, N, system, s, rep,
                                   galerkin_step(Pendulum{}, spec.rule, who));
   if (problem.name == "henon-heiles")
-    return method_detail::measure(spec, N, system, study, rep,
+    return method_detail::measure(spec, N, system, s, rep,
                                   galerkin_step(HenonHeiles{}, spec.rule, who));
-  return method_detail::measure(spec, N, system, study, rep,
-                                galerkin_step(Kepler{}, spec.rule, who));
+  return method_detail::measure(spec, N, system, s, rep, galerkin_step(Kepler{}, spec.rule, who));
 }
 
 }  // namespace vibook::verify

@@ -58,6 +58,14 @@ std::pair<Step, GeneratingStep> galerkin_step(const P& prob, const Quadrature& r
   return galerkin_step_of<P::N>(mechanical_lagrangian(prob), rule, who);
 }
 
+// The Galerkin integrator of `rule` on the test problem `problem` in double-double: its step
+// and its step with the discrete Lagrangian (method_study_dd.cpp).
+struct GalerkinDD {
+  StepDD step;
+  GeneratingStepDD generating;
+};
+GalerkinDD galerkin_dd(const std::string& problem, const Quadrature& rule);
+
 // The method's lines, then the measurement of map_study.hpp; N degrees of freedom.
 void measure(const MethodSpec& p, int N, const StudySystem& system, MapStudy s, MapMeasurement& rep,
              std::pair<Step, GeneratingStep> steps);

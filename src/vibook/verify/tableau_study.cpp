@@ -298,20 +298,23 @@ void measure(const TableauSpec& spec, int N, const StudySystem& system, const Ma
 void measure_tableau(const TableauSpec& spec, const TestProblem& problem,
                      const std::vector<double>& q0, const std::vector<double>& p0,
                      const MapStudy& study, bool symmetric_claimed, MapMeasurement& rep) {
-  using tableau_detail::step_dd_for;
+  using tableau_detail::steps_dd_for;
   using tableau_detail::steps_for;
   std::pair<Step, GeneratingStep> steps;
+  std::pair<StepDD, GeneratingStepDD> dd;
   MapStudy s = study;
   if (problem.name == "pendulum") {
     steps = steps_for(Pendulum{}, spec.tableau);
-    s.step_dd = step_dd_for(Pendulum{}, spec.tableau_dd);
+    dd = steps_dd_for(Pendulum{}, spec.tableau_dd);
   } else if (problem.name == "henon-heiles") {
     steps = steps_for(HenonHeiles{}, spec.tableau);
-    s.step_dd = step_dd_for(HenonHeiles{}, spec.tableau_dd);
+    dd = steps_dd_for(HenonHeiles{}, spec.tableau_dd);
   } else {
     steps = steps_for(Kepler{}, spec.tableau);
-    s.step_dd = step_dd_for(Kepler{}, spec.tableau_dd);
+    dd = steps_dd_for(Kepler{}, spec.tableau_dd);
   }
+  s.step_dd = std::move(dd.first);
+  s.generating_dd = std::move(dd.second);
   tableau_detail::measure(spec, static_cast<int>(q0.size()), test_problem_system(problem, q0, p0),
                           s, symmetric_claimed, rep, std::move(steps));
 }

@@ -38,17 +38,25 @@ std::pair<Step, GeneratingStep> steps_for(const P& prob, const PrkTableau& t) {
 }
 
 // The same method in double-double, for the order study of a high-order tableau
-// (MapStudy::step_dd), on a mechanical problem type.
+// (MapStudy::step_dd), on a mechanical problem type; with it the step that also returns the
+// step's discrete Lagrangian (MapStudy::generating_dd, the variational order beyond double).
 template <class P>
-StepDD step_dd_for(const P& prob, const PrkTableauT<dd_real>& t) {
+std::pair<StepDD, GeneratingStepDD> steps_dd_for(const P& prob, const PrkTableauT<dd_real>& t) {
   constexpr int N = P::N;
-  auto method = std::make_shared<PartitionedRkMethod<Eigen::Dynamic, P, dd_real>>(prob, t);
-  return [method](VecXdd& z, const dd_real& h) {
+  using Method = PartitionedRkMethod<Eigen::Dynamic, P, dd_real>;
+  auto method = std::make_shared<Method>(prob, t);
+  auto generating = std::make_shared<Method>(prob, t);
+  auto advance = [](Method& m, VecXdd& z, const dd_real& h) {
     Vec<dd_real, N> q = z.template head<N>(), p = z.template tail<N>();
-    method->step(q, p, h);
+    m.step(q, p, h);
     z.template head<N>() = q;
     z.template tail<N>() = p;
   };
+  return {[method, advance](VecXdd& z, const dd_real& h) { advance(*method, z, h); },
+          [generating, advance](VecXdd& z, const dd_real& h) {
+            advance(*generating, z, h);
+            return generating->action();
+          }};
 }
 
 // For a problem type with `hamiltonian` and `gradient` (∇H in (q, p)): the method of the
