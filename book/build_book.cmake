@@ -183,6 +183,12 @@ vibook_verify_tableau(verify-tableau-hamiltonian.txt 0 lobatto3-iiia-iiib.json -
 # order study in double-double.
 vibook_verify_tableau(verify-tableau-lobatto4.txt 5 wrong-lobatto4-iiia-only.json --problem pendulum)
 vibook_verify_tableau(verify-tableau-gauss6.txt 0 gauss6.json --problem kepler)
+# Runge-Kutta-Nystrom tableaus (the chapter's section "Runge-Kutta-Nystrom tableaus"): Gauss 3
+# as an RKN passes at order 6; HNW's explicit fifth-order method reaches order 5 and fails the
+# symplecticity verdict; its three-coefficient corruption is order 2.
+vibook_verify_tableau(verify-tableau-rkn-gauss3.txt 0 gauss3-rkn.json --problem henon-heiles)
+vibook_verify_tableau(verify-tableau-rkn5.txt 5 rkn5-hnw.json --problem kepler)
+vibook_verify_tableau(verify-tableau-rkn5-three.txt 5 wrong-rkn5-three.json --problem kepler)
 
 # Galerkin variational integrators (the chapter's section "Galerkin variational integrators").
 vibook_verify_case(verify-method-lobatto3.txt 0 --method lobatto:3 --problem kepler)

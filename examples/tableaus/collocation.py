@@ -82,6 +82,21 @@ def main():
     with open(os.path.join(out, "wrong-gauss6-typo.json"), "w") as f:
         json.dump(doc, f, indent=1)
         f.write("\n")
+    # Gauss 3 as a Runge-Kutta-Nystrom tableau: for q'' = f(q) the collocation method's stages
+    # are Q = q0 + c h p0 + h^2 A A f(Q), so abar = A^2, bbar = b^T A = b_j (1 - c_j) and the
+    # velocities' weights are b (HLW Sec. II.2.3, IV.2.2). Symplectic, symmetric, order 6.
+    c = [(1 + x) / 2 for x in legendre_zeros(3)]
+    a, b = lagrange_integrals(c)
+    abar = [[sum(a[i][k] * a[k][j] for k in range(3)) for j in range(3)] for i in range(3)]
+    bbar = [sum(b[i] * a[i][j] for i in range(3)) for j in range(3)]
+    doc = {"name": "Gauss collocation, 3 stages, as a Runge-Kutta-Nystrom method",
+           "source": f"{hlw}: abar = A^2, bbar = b^T A; entries to 45 digits by "
+           "examples/tableaus/collocation.py", "order": 6, "symmetric": True,
+           "c": [text(x) for x in c], "abar": [[text(x) for x in r] for r in abar],
+           "bbar": [text(x) for x in bbar], "b": [text(x) for x in b]}
+    with open(os.path.join(out, "gauss3-rkn.json"), "w") as f:
+        json.dump(doc, f, indent=1)
+        f.write("\n")
     c = [mp.mpf(0), (5 - mp.sqrt(5)) / 10, (5 + mp.sqrt(5)) / 10, mp.mpf(1)]
     write(os.path.join(out, "wrong-lobatto4-iiia-only.json"),
           "Lobatto IIIA, 4 stages (not symplectic)",

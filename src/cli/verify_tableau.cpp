@@ -28,6 +28,10 @@ struct Plan {
 Plan check(const TableauOptions& o) {
   Plan p;
   p.spec = verify::read_tableau(o.file);
+  if (p.spec.rkn && (o.hamiltonian_given || o.potential_given))
+    throw ArgumentError(o.hamiltonian_given ? "--hamiltonian" : "--potential",
+                        "a Runge-Kutta-Nystrom tableau (abar, bbar) runs on the test problems "
+                        "(--problem) only, for now");
   if (o.hamiltonian_given) {
     p.sys = check_typed_hamiltonian(o, o.hamiltonian, o, "--tableau", p.q0, p.p0, p.study);
   } else if (o.potential_given) {

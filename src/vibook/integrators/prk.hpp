@@ -39,6 +39,7 @@
 #include "vibook/core/newton.hpp"
 #include "vibook/core/scalar.hpp"
 #include "vibook/core/types.hpp"
+#include "vibook/integrators/rkn.hpp"
 
 namespace vibook {
 
@@ -94,6 +95,22 @@ class PartitionedRkMethod {
     }
   }
 
+  /// The Runge–Kutta–Nyström method of an RKN tableau (rkn.hpp): the same stage system with
+  /// M = ā and c̃ = c, then q1 = q0 + h p0 + h² Σ b̄_i f(Q_i), p1 = p0 + h Σ b_i f(Q_i). It has
+  /// no momenta stages, so action() is NaN (no discrete Lagrangian is formed).
+  PartitionedRkMethod(Problem P, const RknTableauT<T>& t, NewtonOptions options = {})
+      : P_(std::move(P)), options_(options), s_(t.stages()), rkn_(true) {
+    const auto n = static_cast<std::size_t>(s_);
+    if ((fixed && s_ != S) || s_ < 1 || t.c.size() != n || t.bbar.size() != n || t.abar.size() != n)
+      throw std::invalid_argument("PartitionedRkMethod: the RKN tableau must have S stages");
+    for (const auto& r : t.abar)
+      if (r.size() != n) throw std::invalid_argument("PartitionedRkMethod: abar must be S x S");
+    M_ = t.abar;
+    c_ = t.c;
+    t_.b = t.b;
+    rkn_bbar_ = t.bbar;
+  }
+
   SolveReport step(Vec<T, N>& q, Vec<T, N>& p, const T& h) {
     const int ns = s_;
     const Vec<T, N> q0 = q, p0 = p;
@@ -133,6 +150,21 @@ class PartitionedRkMethod {
     T action(0);
     for (int k = 0; k < ns; ++k)
       g[k] = P_.gradient(Vec<T, N>(q0 + h * w.template segment<N>(k * N)));
+    if (rkn_) {  // q1 = q0 + h p0 − h² Σ b̄_i ∇U(Q_i), p1 = p0 − h Σ b_i ∇U(Q_i)
+      Vec<T, N> dq = p0, dp = Vec<T, N>::Zero();
+      for (int i = 0; i < ns; ++i) {
+        dq -= h * rkn_bbar_[static_cast<std::size_t>(i)] * g[i];
+        dp -= t_.b[static_cast<std::size_t>(i)] * g[i];
+      }
+      const Vec<T, N> q1 = q0 + h * dq, p1 = p0 + h * dp;
+      if (!std::isfinite(to_double(T(q1.template lpNorm<Eigen::Infinity>()))) ||
+          !std::isfinite(to_double(T(p1.template lpNorm<Eigen::Infinity>()))))
+        throw SolveError("Runge-Kutta-Nystrom step: non-finite state", rep);
+      q = q1;
+      p = p1;
+      action_ = T(std::numeric_limits<double>::quiet_NaN());
+      return rep;
+    }
     Vec<T, N> dq = Vec<T, N>::Zero(), dp = Vec<T, N>::Zero();
     for (int i = 0; i < ns; ++i) {
       Pst[i] = p0;
@@ -172,6 +204,8 @@ class PartitionedRkMethod {
   std::vector<std::vector<T>> M_;  ///< M_ij = Σ_k a_ik â_kj
   std::vector<T> c_;               ///< c̃_i = Σ_j a_ij
   T action_ = T(0);
+  bool rkn_ = false;         ///< an RKN tableau's method (its own constructor)
+  std::vector<T> rkn_bbar_;  ///< its b̄
 };
 
 /// The method of the same tableau on any Hamiltonian H(q, p) (Hairer, Lubich and Wanner, §II.2.2,

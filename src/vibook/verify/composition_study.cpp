@@ -132,36 +132,6 @@ GeneratingStep generating_composition(const std::string& b, const P& prob,
   return composed_generating<N>(vi2, vi2, c, adj);
 }
 
-// The verdict line of order conditions (a composition's or a splitting's): the order they give
-// against the expected one, the first weight that fails, and whether a residual below 1e-8
-// points to inexact coefficients rather than a lower order; the same in the JSON
-// (order_conditions, the caller adds what describes its algebra). True when they reach it.
-bool conditions_verdict(const comp::OrderConditions& oc, const comp::OrderConditions& visible,
-                        double expected, const std::string& expected_from, MapMeasurement& rep) {
-  const bool ok = oc.order >= int(std::floor(expected + 1e-9));
-  std::string text = fmt::format(
-      "order {} by the conditions (each weight's residual <= {:.0e}); expected {:g} ({}): {}",
-      oc.order, kConditionTol, expected, expected_from, ok ? "yes" : "NO");
-  if (!ok && oc.order < oc.max_weight)
-    text += fmt::format(" -- weight {} fails by {:.2e} at the word {}", oc.order + 1,
-                        oc.residual[static_cast<std::size_t>(oc.order)],
-                        oc.worst_word[static_cast<std::size_t>(oc.order)]);
-  if (!ok && visible.order >= int(std::floor(expected + 1e-9)))
-    text += " (a residual below 1e-8: inexact coefficients rather than a lower order)";
-  rep.line("", text);
-  rep.js["order_conditions"] = {{"digits", kCompositionDigits},
-                                {"residual_by_weight", oc.residual},
-                                {"worst_word", oc.worst_word},
-                                {"tolerance", kConditionTol},
-                                {"order", oc.order},
-                                {"visible_tolerance", kVisibleTol},
-                                {"visible_order", visible.order},
-                                {"expected", expected},
-                                {"expected_from", expected_from},
-                                {"passed", ok}};
-  return ok;
-}
-
 // --- splittings (splitting_sequence.hpp) -----------------------------------------------------
 
 // A coefficient typed as an exact ratio of decimals ("7/24", "-0.25", "3"), as a rational; none
@@ -203,6 +173,37 @@ std::optional<boost::multiprecision::cpp_rational> exact_ratio(std::string t) {
 }
 
 }  // namespace
+
+// The verdict line of order conditions (a composition's, a splitting's or an RKN tableau's): the
+// order they give against the expected one, the first weight that fails, and whether a residual
+// below 1e-8 points to inexact coefficients rather than a lower order; the same in the JSON
+// (order_conditions, the caller adds what describes its algebra). True when they reach it.
+bool conditions_verdict(const comp::OrderConditions& oc, const comp::OrderConditions& visible,
+                        double expected, const std::string& expected_from, MapMeasurement& rep,
+                        const char* weight, const char* word) {
+  const bool ok = oc.order >= int(std::floor(expected + 1e-9));
+  std::string text = fmt::format(
+      "order {} by the conditions (each {}'s residual <= {:.0e}); expected {:g} ({}): {}", oc.order,
+      weight, kConditionTol, expected, expected_from, ok ? "yes" : "NO");
+  if (!ok && oc.order < oc.max_weight)
+    text += fmt::format(" -- {} {} fails by {:.2e} at the {} {}", weight, oc.order + 1,
+                        oc.residual[static_cast<std::size_t>(oc.order)], word,
+                        oc.worst_word[static_cast<std::size_t>(oc.order)]);
+  if (!ok && visible.order >= int(std::floor(expected + 1e-9)))
+    text += " (a residual below 1e-8: inexact coefficients rather than a lower order)";
+  rep.line("", text);
+  rep.js["order_conditions"] = {{"digits", kCompositionDigits},
+                                {"residual_by_weight", oc.residual},
+                                {"worst_word", oc.worst_word},
+                                {"tolerance", kConditionTol},
+                                {"order", oc.order},
+                                {"visible_tolerance", kVisibleTol},
+                                {"visible_order", visible.order},
+                                {"expected", expected},
+                                {"expected_from", expected_from},
+                                {"passed", ok}};
+  return ok;
+}
 
 CompositionSpec splitting_spec(const std::string& arg, const std::string& seq) {
   CompositionSpec spec;

@@ -61,6 +61,18 @@ struct CompositionSpec {
 /// the sequence has no equivalent composition (its drifts and kicks sum to different totals).
 CompositionSpec splitting_spec(const std::string& arg, const std::string& seq);
 
+/// The verdict line of exact order conditions (a composition's, a splitting's, an RKN
+/// tableau's): the order they give at 1e-12 against `expected`, the first weight (order) that
+/// fails and at which word (tree), and whether the conditions hold at 1e-8 (`visible`: inexact
+/// coefficients rather than a lower order); the same in rep.js["order_conditions"]. True when
+/// they reach the expected order.
+/// `weight` and `word` name the grading and the condition in the failure text ("order" and
+/// "tree" for an RKN tableau).
+bool conditions_verdict(const composition::OrderConditions& oc,
+                        const composition::OrderConditions& visible, double expected,
+                        const std::string& expected_from, MapMeasurement& rep,
+                        const char* weight = "weight", const char* word = "word");
+
 /// Measure the composition on `problem` from (q0, p0) with the settings of `study` (its step,
 /// state, field, energy, expected order and reversibility are set here); appended to `rep`.
 void measure_composition(const CompositionSpec& spec, const TestProblem& problem,

@@ -11,6 +11,7 @@
 #include <memory>
 #include <sstream>
 #include <string>
+#include <tuple>
 #include <vector>
 
 #include <fmt/format.h>
@@ -22,6 +23,7 @@
 #include "vibook/integrators/composition.hpp"
 #include "vibook/kepler/kepler.hpp"
 #include "vibook/problems/problems.hpp"
+#include "vibook/verify/composition_study.hpp"
 #include "vibook/verify/tableau_study_impl.hpp"
 
 namespace vibook::verify {
@@ -99,6 +101,50 @@ std::vector<double> to_doubles(const std::vector<mpfr_real>& v) {
   return d;
 }
 
+// A Runge–Kutta–Nyström tableau's entries and its conditions at 120 digits (rkn.hpp), into
+// `t` (whose file, name, source, order and symmetry are read).
+void read_rkn(const std::string& path, const json& j, std::size_t s, TableauSpec& t) {
+  RknTableauT<mpfr_real> r;
+  r.c = row(path, j["c"], "c", s);
+  r.abar = matrix(path, j["abar"], "abar", s);
+  r.bbar = row(path, j["bbar"], "bbar", s);
+  r.b = row(path, j["b"], "b", s);
+  auto absd = [](const mpfr_real& x) { return static_cast<double>(x < 0 ? mpfr_real(-x) : x); };
+  mpfr_real sb = 0, sbb = 0;
+  for (std::size_t i = 0; i < s; ++i) {
+    sb += r.b[i];
+    sbb += r.bbar[i];
+  }
+  t.rkn = true;
+  t.weights_residual = std::max(absd(mpfr_real(sb - 1)), absd(mpfr_real(sbb - mpfr_real(0.5))));
+  std::tie(t.bhat_residual, t.symplectic_residual) = rkn_symplectic_residuals(r, absd);
+  t.symplectic_conditions =
+      t.bhat_residual <= kConditionTol && t.symplectic_residual <= kConditionTol;
+  const RknConditions<mpfr_real> rc = rkn_conditions(r, kRknConditionsOrder);
+  auto oc = [&](double tol) {
+    return composition::conditions_from(
+        rc.value, kRknConditionsOrder, false, tol,
+        [&rc](int w) { return rc.order[static_cast<std::size_t>(w)]; },
+        [&rc](int w) { return rc.name[static_cast<std::size_t>(w)]; });
+  };
+  t.rkn_conditions = oc(kConditionTol);
+  t.rkn_visible = oc(1e-8);
+  t.rkn_tableau.c = to_doubles(r.c);
+  t.rkn_tableau.bbar = to_doubles(r.bbar);
+  t.rkn_tableau.b = to_doubles(r.b);
+  t.rkn_tableau_dd.c = to_dds(r.c);
+  t.rkn_tableau_dd.bbar = to_dds(r.bbar);
+  t.rkn_tableau_dd.b = to_dds(r.b);
+  for (std::size_t i = 0; i < s; ++i) {
+    t.rkn_tableau.abar.push_back(to_doubles(r.abar[i]));
+    t.rkn_tableau_dd.abar.push_back(to_dds(r.abar[i]));
+  }
+  if (t.documented_order) {
+    t.expected = *t.documented_order;
+    t.expected_from = "the file's 'order'";
+  }
+}
+
 }  // namespace
 
 TableauSpec read_tableau(const std::string& path) {
@@ -126,14 +172,30 @@ TableauSpec read_tableau(const std::string& path) {
   if (!j.is_object()) bad(path, "must hold a JSON object with 'a' and 'b'");
   for (const auto& [key, value] : j.items())
     if (key != "name" && key != "source" && key != "order" && key != "symmetric" && key != "a" &&
-        key != "b" && key != "ahat" && key != "bhat" && key != "c")
-      bad(path, "unknown key '" + key + "' (name, source, order, symmetric, a, b, ahat, bhat, c)");
+        key != "b" && key != "ahat" && key != "bhat" && key != "c" && key != "abar" &&
+        key != "bbar")
+      bad(path, "unknown key '" + key +
+                    "' (name, source, order, symmetric, a, b, ahat, bhat, c; or for a "
+                    "Runge-Kutta-Nystrom tableau c, abar, bbar, b)");
   if (!j.contains("b") || !j["b"].is_array() || j["b"].empty())
     bad(path, "needs 'b', the list of weights");
   const std::size_t s = j["b"].size();
   if (s > static_cast<std::size_t>(kMaxTableauStages))
     bad(path, fmt::format("has {} stages; at most {}", s, kMaxTableauStages));
-  if (!j.contains("a")) bad(path, "needs 'a', the s x s matrix of the positions' stages");
+  const bool rkn = j.contains("abar") || j.contains("bbar");
+  if (rkn) {
+    for (const char* k : {"a", "ahat", "bhat"})
+      if (j.contains(k))
+        bad(path, std::string("mixes '") + k +
+                      "' with 'abar'/'bbar': a Runge-Kutta-Nystrom tableau has c, abar, bbar, b");
+    for (const char* k : {"abar", "bbar", "c"})
+      if (!j.contains(k))
+        bad(path, std::string("needs '") + k +
+                      "' (a Runge-Kutta-Nystrom tableau has c, abar, "
+                      "bbar, b)");
+  } else if (!j.contains("a")) {
+    bad(path, "needs 'a', the s x s matrix of the positions' stages");
+  }
 
   TableauSpec t;
   t.file = path;
@@ -152,6 +214,10 @@ TableauSpec read_tableau(const std::string& path) {
   }
 
   const MpfrDigits digits(kDigits);
+  if (rkn) {
+    read_rkn(path, j, s, t);
+    return t;
+  }
   const auto b = row(path, j["b"], "b", s);
   const auto a = matrix(path, j["a"], "a", s);
   const auto bhat = j.contains("bhat") ? row(path, j["bhat"], "bhat", s) : b;
@@ -212,6 +278,80 @@ std::string list(const std::vector<double>& v) {
 
 namespace tableau_detail {
 
+// The RKN tableau's lines (its entries, its conditions at 120 digits, the order its Nyström
+// trees give), then the measurement; no variational order (the method has no momenta stages
+// to form its discrete Lagrangian from).
+void measure_rkn(const TableauSpec& spec, int N, const StudySystem& system, MapStudy& s,
+                 MapMeasurement& rep, std::pair<Step, GeneratingStep> steps) {
+  const RknTableauT<double>& t = spec.rkn_tableau;
+  const int S = t.stages();
+  s.exact_symplectic_from = fmt::format(
+      "bbar_i = b_i (1 - c_i) and b_i (bbar_j - abar_ij) = b_j (bbar_i - abar_ji) at {} digits",
+      kDigits);
+  s.conditions_order = spec.rkn_conditions.order;
+  rep.line("tableau",
+           fmt::format("{} ({} stages, Runge-Kutta-Nystrom), from {}", spec.name, S, spec.file));
+  rep.line("  source", spec.source);
+  for (int i = 0; i < S; ++i)
+    rep.line(i == 0 ? "  c | abar" : "",
+             fmt::format("{:.12g} | ", t.c[static_cast<std::size_t>(i)]) +
+                 list(t.abar[static_cast<std::size_t>(i)]));
+  rep.line("  bbar | b", list(t.bbar) + " | " + list(t.b));
+  rep.line("  solved by", fmt::format("Newton's method on the {} position stages ({} unknowns), "
+                                      "the Hessian of the potential by AutoDiff",
+                                      S, S * N));
+  rep.line("conditions", fmt::format("at {} digits from the entries as written: b sums to 1 and "
+                                     "bbar to 1/2 within {:.1e}",
+                                     kDigits, spec.weights_residual));
+  rep.line("", fmt::format("symplectic (bbar_i = b_i (1 - c_i) within {:.1e}; b_i (bbar_j - "
+                           "abar_ij) = b_j (bbar_i - abar_ji) within {:.1e}; each <= {:.0e}): {}",
+                           spec.bhat_residual, spec.symplectic_residual, kConditionTol,
+                           spec.symplectic_conditions ? "yes" : "NO"));
+  std::vector<std::string> by_order;
+  for (std::size_t k = 0; k < spec.rkn_conditions.residual.size(); ++k)
+    by_order.push_back(fmt::format("{}: {:.1e}", k + 1, spec.rkn_conditions.residual[k]));
+  rep.line("order conditions", fmt::format("Nystrom trees, residual by order (120 digits) {}",
+                                           fmt::join(by_order, ", ")));
+  rep.required.push_back("order conditions");
+  if (!conditions_verdict(spec.rkn_conditions, spec.rkn_visible, spec.expected, spec.expected_from,
+                          rep, "order", "tree"))
+    rep.failed.push_back("order conditions");
+  rep.js["order_conditions"]["trees"] = "Nystrom trees of order up to " +
+                                        std::to_string(kRknConditionsOrder + 1) +
+                                        " (HNW I, Sec. II.14)";
+  rep.line("expected order", fmt::format("{:g} ({})", spec.expected, spec.expected_from));
+  rep.line("problem", system.line);
+  rep.js["tableau"] = {
+      {"file", spec.file},
+      {"name", spec.name},
+      {"source", spec.source},
+      {"form", "Runge-Kutta-Nystrom"},
+      {"stages", S},
+      {"c", t.c},
+      {"abar", t.abar},
+      {"bbar", t.bbar},
+      {"b", t.b},
+      {"documented_order", spec.documented_order ? json(*spec.documented_order) : json(nullptr)},
+      {"symmetric", spec.symmetric_documented}};
+  rep.js["conditions"] = {{"digits", kDigits},
+                          {"weights_residual", spec.weights_residual},
+                          {"bbar_residual", spec.bhat_residual},
+                          {"symplectic_residual", spec.symplectic_residual},
+                          {"tolerance", kConditionTol},
+                          {"symplectic", spec.symplectic_conditions}};
+  rep.js["problem"] = system.js;
+  (void)steps;
+  measure_map(s, rep);
+  const std::string reason =
+      spec.symplectic_conditions
+          ? "not measured: vibook forms no discrete Lagrangian for an RKN tableau (it has no "
+            "momenta stages)"
+          : "not defined: the tableau does not satisfy the symplecticity conditions, so the "
+            "method has no discrete Lagrangian";
+  rep.line("variational order", reason);
+  rep.js["variational_order"] = {{"derived", false}, {"measured", false}, {"reason", reason}};
+}
+
 void measure(const TableauSpec& spec, int N, const StudySystem& system, const MapStudy& study,
              bool symmetric_claimed, MapMeasurement& rep, std::pair<Step, GeneratingStep> steps,
              bool general_h) {
@@ -219,7 +359,7 @@ void measure(const TableauSpec& spec, int N, const StudySystem& system, const Ma
   s.step = std::move(steps.first);
   system.set(s);
   s.expected = spec.expected;
-  s.substeps = spec.tableau.stages();
+  s.substeps = spec.rkn ? spec.rkn_tableau.stages() : spec.tableau.stages();
   s.max_substeps = 1e6;
   s.symmetric_claimed = symmetric_claimed || spec.symmetric_documented;
   s.symmetric_note = " (reported only: not said to be symmetric)";
@@ -227,6 +367,7 @@ void measure(const TableauSpec& spec, int N, const StudySystem& system, const Ma
   s.exact_symplectic_from =
       fmt::format("b_i ahat_ij + bhat_j a_ji = b_i bhat_j and b = bhat at {} digits", kDigits);
 
+  if (spec.rkn) return measure_rkn(spec, N, system, s, rep, std::move(steps));
   const int S = spec.tableau.stages();
   rep.line("tableau", fmt::format("{} ({} stages), from {}", spec.name, S, spec.file));
   rep.line("  source", spec.source);
@@ -303,16 +444,21 @@ void measure_tableau(const TableauSpec& spec, const TestProblem& problem,
   std::pair<Step, GeneratingStep> steps;
   std::pair<StepDD, GeneratingStepDD> dd;
   MapStudy s = study;
-  if (problem.name == "pendulum") {
-    steps = steps_for(Pendulum{}, spec.tableau);
-    dd = steps_dd_for(Pendulum{}, spec.tableau_dd);
-  } else if (problem.name == "henon-heiles") {
-    steps = steps_for(HenonHeiles{}, spec.tableau);
-    dd = steps_dd_for(HenonHeiles{}, spec.tableau_dd);
-  } else {
-    steps = steps_for(Kepler{}, spec.tableau);
-    dd = steps_dd_for(Kepler{}, spec.tableau_dd);
-  }
+  auto set = [&](const auto& prob) {
+    if (spec.rkn) {
+      steps = tableau_detail::rkn_steps_for(prob, spec.rkn_tableau);
+      dd = tableau_detail::rkn_steps_dd_for(prob, spec.rkn_tableau_dd);
+    } else {
+      steps = steps_for(prob, spec.tableau);
+      dd = steps_dd_for(prob, spec.tableau_dd);
+    }
+  };
+  if (problem.name == "pendulum")
+    set(Pendulum{});
+  else if (problem.name == "henon-heiles")
+    set(HenonHeiles{});
+  else
+    set(Kepler{});
   s.step_dd = std::move(dd.first);
   s.generating_dd = std::move(dd.second);
   tableau_detail::measure(spec, static_cast<int>(q0.size()), test_problem_system(problem, q0, p0),

@@ -20,6 +20,10 @@
 /// defaults to `a` and `bhat` to `b` (a Runge–Kutta method); `c` is optional and checked
 /// against the row sums of `a`; `order`, `symmetric`, `name` and `source` are optional.
 ///
+/// **A Runge–Kutta–Nyström tableau** (integrators/rkn.hpp) has `c`, `abar`, `bbar` and `b`
+/// instead of `a`, `ahat` and `bhat`: its order conditions by Nyström trees and its
+/// symplecticity conditions are evaluated at 120 digits; it runs on the test problems.
+///
 /// Chapter: \ref chapter-verify (section "A method from its tableau").
 #pragma once
 
@@ -28,7 +32,9 @@
 #include <string>
 #include <vector>
 
+#include "vibook/integrators/composition.hpp"
 #include "vibook/integrators/prk.hpp"
+#include "vibook/integrators/rkn.hpp"
 #include "vibook/verify/map_study.hpp"
 
 namespace vibook::verify {
@@ -55,7 +61,18 @@ struct TableauSpec {
   bool symplectic_conditions = false;  ///< both of the last two at most 1e-12
   double expected = 0;
   std::string expected_from;
+  // A Runge–Kutta–Nyström tableau (abar, bbar): then `tableau` is unused, and the residuals
+  // above are those of the RKN conditions (weights: |Σ b_i − 1| and |Σ b̄_i − 1/2|; bhat:
+  // |b̄_i − b_i(1 − c_i)|; symplectic: |b_i(b̄_j − ā_ij) − b_j(b̄_i − ā_ji)|).
+  bool rkn = false;
+  RknTableauT<double> rkn_tableau;
+  RknTableauT<dd_real> rkn_tableau_dd;
+  composition::OrderConditions rkn_conditions;  ///< by Nyström trees, at 1e-12
+  composition::OrderConditions rkn_visible;     ///< the same at 1e-8
 };
+
+/// The orders up to which an RKN tableau's conditions are evaluated (trees of order up to 11).
+constexpr int kRknConditionsOrder = 10;
 
 /// Read and check a tableau file: ArgumentError naming --tableau for a file that cannot be
 /// read, is not JSON, or whose entries are missing, of the wrong shape, not numbers, or more

@@ -59,6 +59,33 @@ std::pair<StepDD, GeneratingStepDD> steps_dd_for(const P& prob, const PrkTableau
           }};
 }
 
+// The Runge–Kutta–Nyström method of an RKN tableau (PartitionedRkMethod's RKN constructor) on
+// a mechanical problem type: its step, and no step with a discrete Lagrangian.
+template <class P>
+std::pair<Step, GeneratingStep> rkn_steps_for(const P& prob, const RknTableauT<double>& t) {
+  if (t.stages() < 1 || t.stages() > 6)
+    throw std::invalid_argument("measure_tableau: 1 to 6 stages");
+  constexpr int N = P::N;
+  auto method = std::make_shared<PartitionedRkMethod<Eigen::Dynamic, P>>(prob, t);
+  return {naming_failures([method](Eigen::VectorXd& z, double h) { step_qp<N>(*method, z, h); }, N),
+          GeneratingStep{}};
+}
+
+// The same in double-double (MapStudy::step_dd).
+template <class P>
+std::pair<StepDD, GeneratingStepDD> rkn_steps_dd_for(const P& prob, const RknTableauT<dd_real>& t) {
+  constexpr int N = P::N;
+  using Method = PartitionedRkMethod<Eigen::Dynamic, P, dd_real>;
+  auto method = std::make_shared<Method>(prob, t);
+  return {[method](VecXdd& z, const dd_real& h) {
+            Vec<dd_real, N> q = z.template head<N>(), p = z.template tail<N>();
+            method->step(q, p, h);
+            z.template head<N>() = q;
+            z.template tail<N>() = p;
+          },
+          GeneratingStepDD{}};
+}
+
 // For a problem type with `hamiltonian` and `gradient` (∇H in (q, p)): the method of the
 // tableau on any H (HamiltonianPrkMethod).
 template <class P>

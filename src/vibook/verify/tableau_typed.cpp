@@ -19,6 +19,9 @@ void measure_tableau_typed(const TableauSpec& spec, const TypedDiscreteLagrangia
                            const MapStudy& study, const std::string& system_line,
                            bool symmetric_claimed, bool general_h, MapMeasurement& rep) {
   using tableau_detail::measure_typed_dim;
+  if (spec.rkn)
+    throw std::invalid_argument(
+        "measure_tableau_typed: a Runge-Kutta-Nystrom tableau runs on the test problems only");
   const StudySystem system = typed_study_system(system_line, q0, p0);
   switch (sys.dim()) {
     case 1:
