@@ -239,6 +239,14 @@ case_ forest-ruth-moved 5 "order conditions,order,energy" 'not a palindrome' \
   -- --splitting "$FR_MOVED" --problem pendulum --expected-order 4
 case_ forest-ruth-flipped 5 "order conditions,consistency" 'weight 1 fails' 'as a composition +none: the drifts sum to 1 and the kicks' \
   -- --splitting "$FR_FLIPPED" --problem pendulum
+# Forest-Ruth typed to 18 digits: its h^3 term in L_d - L_d^E is 8e-20, below the order
+# conditions' tolerance 1e-12, which the engine takes for typed decimals: derived 4, PASS (an
+# exact zero test read it as variational order 2 and failed it).
+FR18='drift:0.675603595979828817,kick:1.351207191959657634,drift:-0.175603595979828817,kick:-1.702414383919315268,drift:-0.175603595979828817,kick:1.351207191959657634,drift:0.675603595979828817'
+case_ forest-ruth-18-digits 0 "" \
+  '^  derived +4 by the engine \(the coefficients as the rationals their decimals spell' \
+  '^verdict +PASS \(order conditions, order, variational order' \
+  -- --splitting "$FR18" --problem kepler
 # On a typed potential (H = |p|^2/2 + V): the flows stepped explicitly through the system's
 # Hamilton equations; the same verdicts.
 HH='x^2/2+y^2/2+x^2*y-y^3/3'

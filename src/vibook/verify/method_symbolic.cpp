@@ -74,6 +74,9 @@ struct Derivation {
   /// says so in the report. Unset: the zero test is exact.
   std::optional<GiNaC::numeric> zero_below;
   std::string precision;
+  /// The coefficients are a catalogue entry's 120-digit values (long numbers: the derivation
+  /// is skipped by default where it would take minutes).
+  bool long_digits = false;
   int stages = 0;      ///< a composition's stages (the cost grows quickly with them)
   bool typed = false;  ///< stages of a typed L_d (--composition ld)
 };
@@ -141,12 +144,12 @@ void install(Derivation d, SymbolicUse use, MapStudy& study) {
           K + 1, d.dim);
     // 120-digit coefficients make every number long: by default only the short compositions
     // on a polynomial Lagrangian (yoshida4 and suzuki4 on Hénon–Heiles: 1.5 and 5.5 s)
-    if (skip.empty() && use == SymbolicUse::automatic && d.zero_below && d.typed)
+    if (skip.empty() && use == SymbolicUse::automatic && d.long_digits && d.typed)
       skip =
           "not derived by default: the stages of a typed L_d with 120-digit coefficients can "
           "take the engine many minutes (yoshida4 on a typed midpoint rule with a "
           "position-dependent mass: over 10 minutes); --symbolic always runs it";
-    else if (skip.empty() && use == SymbolicUse::automatic && d.zero_below &&
+    else if (skip.empty() && use == SymbolicUse::automatic && d.long_digits &&
              (d.stages > 5 || !quick))
       skip = fmt::format(
           "not derived by default: {} stages with 120-digit coefficients{} take the engine "
@@ -318,13 +321,29 @@ GiNaC::numeric rational_of(const mpfr_real& x, int digits) {
 // (Kahan & Li's, as published) has 26 digits, which leaves terms near 1e-27; a coefficient off
 // in its eleventh digit leaves terms near 1e-12 (the field audit's A-WRONG-DIGIT).
 const GiNaC::numeric kZeroBelow = GiNaC::numeric(1) / GiNaC::numeric(10).power(20);
+// Coefficients typed as decimals are the rationals they spell, and the order conditions hold
+// them to 1e-12 (composition_study.cpp, kConditionTol: decimals rounded to double leave
+// 1e-15 to 1e-13, a wrong eleventh digit 1e-11). The engine takes the same tolerance: Forest
+// and Ruth's coefficients typed to 18 digits leave an h^3 term of about 1e-19 in L_d − L_d^E,
+// which an exact zero test would read as variational order 2.
+const GiNaC::numeric kTypedZeroBelow = GiNaC::numeric(1) / GiNaC::numeric(10).power(12);
+
+// Does the text type a decimal (a point between digits, or an exponent)?
+bool types_a_decimal(const std::string& t) {
+  for (std::size_t i = 1; i < t.size(); ++i)
+    if (std::isdigit(static_cast<unsigned char>(t[i - 1])) &&
+        (t[i] == '.' || t[i] == 'e' || t[i] == 'E'))
+      return true;
+  return false;
+}
 
 // The stages as exact rationals: a typed list of exact decimals or ratios, or a catalogue
 // entry (Ruth's exactly; the others at kCompositionDigits digits, `zero_below` and `precision`
 // then set). nullopt, with the reason, otherwise.
 std::optional<ExactStages> exact_stages(const CompositionSpec& spec, std::string& why,
                                         std::optional<GiNaC::numeric>* zero_below = nullptr,
-                                        std::string* precision = nullptr) {
+                                        std::string* precision = nullptr,
+                                        bool* long_digits = nullptr) {
   ExactStages st;
   if (!spec.not_exact.empty()) {
     why = spec.not_exact;
@@ -341,6 +360,7 @@ std::optional<ExactStages> exact_stages(const CompositionSpec& spec, std::string
     }
     for (const auto& [c, adjoint] : catalogue_rationals(n)) st.emplace_back(c, adjoint);
     *zero_below = kZeroBelow;
+    if (long_digits) *long_digits = true;
     *precision = fmt::format(
         "the coefficients of {} to {} digits, a term with every number below 1e-20 counted as "
         "zero",
@@ -368,6 +388,15 @@ std::optional<ExactStages> exact_stages(const CompositionSpec& spec, std::string
     }
     st.emplace_back(*x, adjoint);
     from = comma + 1;
+  }
+  const std::string typed = spec.splitting             ? spec.splitting->flows
+                            : spec.flows_typed.empty() ? spec.coefficients
+                                                       : spec.flows_typed;
+  if (zero_below && precision && !spec.entry && types_a_decimal(typed)) {
+    *zero_below = kTypedZeroBelow;
+    *precision =
+        "the coefficients as the rationals their decimals spell, a term with every number "
+        "below 1e-12 (the order conditions' tolerance) counted as zero";
   }
   return st;
 }
@@ -489,7 +518,7 @@ void derive_composition_variational_order(const CompositionSpec& spec, const std
       "(Marsden & West 2001, Sec. 2.3.1)";
   const std::string base = spec.base->name;
   std::string why;
-  const auto stages = exact_stages(spec, why, &d.zero_below, &d.precision);
+  const auto stages = exact_stages(spec, why, &d.zero_below, &d.precision, &d.long_digits);
   if (stages) d.stages = static_cast<int>(stages->size());
   if (base != "sv" && base != "midpoint" && base != "se" && base != "se-adjoint")
     d.skip = "not derived: the engine composes sv, midpoint, se and se-adjoint (not " + base + ")";
@@ -516,7 +545,7 @@ void derive_composition_variational_order(const CompositionSpec& spec, int dim,
       "L_d - L_d^E along the solutions of the intended L, expanded about the step's midpoint "
       "(Marsden & West 2001, Sec. 2.3.1)";
   std::string why;
-  const auto stages = exact_stages(spec, why, &d.zero_below, &d.precision);
+  const auto stages = exact_stages(spec, why, &d.zero_below, &d.precision, &d.long_digits);
   if (stages) d.stages = static_cast<int>(stages->size());
   d.typed = true;
   if (!d.L)
