@@ -13,6 +13,7 @@
 #include "vibook/core/precision.hpp"
 #include "vibook/integrators/composition.hpp"
 #include "vibook/integrators/kernels.hpp"
+#include "vibook/integrators/rkn.hpp"
 #include "vibook/integrators/splitting_sequence.hpp"
 #include "vibook/problems/problems.hpp"
 #include "vibook/verify/reference.hpp"
@@ -231,12 +232,54 @@ TEST_CASE("splitting: the two-flow order conditions against known orders, and wr
     CHECK(abs(L[static_cast<std::size_t>(comp::TwoLetterAlgebra::index(3, 1u))] - R(1) / 12) <
           R("1e-115"));
   }
-  // Every catalogue entry reaches exactly its documented order (the next weight fails).
+  // Every catalogue entry reaches exactly its documented order (the next weight fails): for two
+  // generic flows, or, for an RKN splitting, by the Nystrom trees of its RKN tableau, its
+  // generic order then lower. Every entry's Nystrom order is at least its generic one.
   for (const auto& e : comp::splitting_catalogue()) {
     INFO(e.name);
-    const auto oc = comp::splitting_order_conditions(
-        comp::parse_sequence<R>("--splitting", e.flows), e.order + 2);
-    CHECK(oc.order == e.order);
+    const auto seq = comp::parse_sequence<R>("--splitting", e.flows);
+    const auto oc = comp::splitting_order_conditions(seq, e.order + 2);
+    const RknConditions<R> rc = rkn_conditions(comp::as_rkn_tableau(seq), e.order + 2);
+    const auto by_trees = comp::conditions_from(
+        rc.value, e.order + 2, false, 1e-12,
+        [&rc](int w) { return rc.order[static_cast<std::size_t>(w)]; },
+        [&rc](int w) { return rc.name[static_cast<std::size_t>(w)]; });
+    CHECK(by_trees.order >= oc.order);
+    if (e.rkn) {
+      CHECK(oc.order < e.order);
+      CHECK(by_trees.order == e.order);
+    } else {
+      CHECK(oc.order == e.order);
+    }
+  }
+  // McLachlan and Atela's method with its flows in the other order (drift first): order 1 by
+  // both algebras, a wrong step structure; and with two digits of its third kick transposed
+  // (0.75623 for 0.75632): the kicks no longer sum to 1, order 0.
+  {
+    std::string f = comp::find_splitting("mclachlan-atela-4")->flows;
+    std::vector<std::string> items;
+    for (std::size_t from = 0; from <= f.size();) {
+      const std::size_t comma = std::min(f.find(',', from), f.size());
+      items.push_back(f.substr(from, comma - from));
+      from = comma + 1;
+    }
+    std::string swapped;
+    for (std::size_t i = 0; i + 1 < items.size(); i += 2)
+      swapped += (i ? "," : "") + items[i + 1] + "," + items[i];
+    auto nystrom_order = [](const std::string& flows) {
+      const RknConditions<R> rc =
+          rkn_conditions(comp::as_rkn_tableau(comp::parse_sequence<R>("--splitting", flows)), 6);
+      return comp::conditions_from(
+                 rc.value, 6, false, 1e-12,
+                 [&rc](int w) { return rc.order[static_cast<std::size_t>(w)]; },
+                 [&rc](int w) { return rc.name[static_cast<std::size_t>(w)]; })
+          .order;
+    };
+    CHECK(nystrom_order(f) == 4);
+    CHECK(nystrom_order(swapped) == 1);
+    std::string typo = f;
+    typo.replace(typo.find("0.7563200005"), 12, "0.7562300005");
+    CHECK(nystrom_order(typo) == 0);
   }
   // The Laskar-Robutel methods' nodes and weights are quadrature rules, Gauss (SABA_n, exact to
   // degree 2n - 1) and Lobatto (SBAB_n, n + 1 nodes, the same degree): the words with a single
