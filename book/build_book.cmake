@@ -162,6 +162,9 @@ vibook_verify_case(verify-splitting-forest-ruth.txt 0 --splitting forest-ruth --
 vibook_verify_case(verify-splitting-moved.txt 5 --splitting
                    "drift:1/(2-2^(1/3)),kick:1/(2-2^(1/3)),drift:(1-2^(1/3))/(2*(2-2^(1/3))),kick:-2^(1/3)/(2-2^(1/3)),drift:(1-2^(1/3))/(2*(2-2^(1/3))),kick:1/(2-2^(1/3))"
                    --problem pendulum --expected-order 4)
+# A Runge-Kutta-Nystrom splitting: order 3 for two generic flows, 4 by its Nystrom trees.
+vibook_verify_case(verify-splitting-mclachlan-atela.txt 0 --splitting mclachlan-atela-4
+                   --problem pendulum)
 
 # A method from its tableau (the chapter's section "A method from its tableau"), run in
 # examples/tableaus so that the report names the file as a reader would type it: Lobatto
@@ -189,6 +192,8 @@ vibook_verify_tableau(verify-tableau-gauss6.txt 0 gauss6.json --problem kepler)
 vibook_verify_tableau(verify-tableau-rkn-gauss3.txt 0 gauss3-rkn.json --problem henon-heiles)
 vibook_verify_tableau(verify-tableau-rkn5.txt 5 rkn5-hnw.json --problem kepler)
 vibook_verify_tableau(verify-tableau-rkn5-three.txt 5 wrong-rkn5-three.json --problem kepler)
+vibook_verify_tableau(verify-tableau-rkn-mclachlan5.txt 0 mclachlan-atela-5-rkn.json
+                      --problem henon-heiles)
 
 # Galerkin variational integrators (the chapter's section "Galerkin variational integrators").
 vibook_verify_case(verify-method-lobatto3.txt 0 --method lobatto:3 --problem kepler)

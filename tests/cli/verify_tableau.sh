@@ -138,6 +138,15 @@ case_ rkn5-hnw 5 "symplectic,energy" 'order 5 by the conditions' \
 case_ rkn5-three 5 "order conditions,order,symplectic,energy" \
   'order 2 by the conditions .*order 3 fails by .* at the tree ' \
   'order +(1\.9|2\.0)[0-9]* over .*expected 5 .*: NO' -- --tableau "$T/wrong-rkn5-three.json" --problem kepler
+# A published symplectic fifth-order RKN method: McLachlan and Atela's, written as a tableau from
+# its splitting by examples/tableaus/splitting_to_rkn.py (Python fractions, independent of
+# vibook's as_rkn_tableau), passes on Henon-Heiles; three kicks changed (sum kept) give order 1.
+case_ rkn-mclachlan-atela-5 0 "" 'order 5 by the conditions' \
+  'symplectic \(bbar_i = b_i \(1 - c_i\) .*: yes' 'order +(4\.9|5\.[01])[0-9]* over .*: yes' \
+  -- --tableau "$T/mclachlan-atela-5-rkn.json" --problem henon-heiles
+case_ rkn-mclachlan-atela-5-three 5 "order conditions,order,energy" \
+  'order 1 by the conditions .*order 2 fails by .* at the tree' \
+  -- --tableau "$T/wrong-mclachlan-atela-5-three.json" --problem henon-heiles
 printf '{"a": [["0"]], "abar": [["0"]], "bbar": ["1/2"], "b": ["1"], "c": ["0"], "order": 1}' >"$tmp/mixed.json"
 printf '{"abar": [["0"]], "bbar": ["1/2"], "b": ["1"], "order": 1}' >"$tmp/no-c.json"
 arg rkn-mixed --tableau --tableau "$tmp/mixed.json"
