@@ -82,6 +82,28 @@ using StepDD = std::function<void(VecXdd& z, const dd_real& h)>;
 /// GeneratingStep in double-double: advances z and returns L_d(q0, q1, h).
 using GeneratingStepDD = std::function<dd_real(VecXdd& z, const dd_real& h)>;
 
+/// A position–momentum method in double-double (anything with `step(Vec<dd_real, N>& q,
+/// Vec<dd_real, N>& p, const dd_real& h)` and, for the second, `action()`, its discrete
+/// Lagrangian along the last step) as a StepDD and a GeneratingStepDD, each on its own instance
+/// from `make()` (a std::shared_ptr); `with_action` false leaves the second empty.
+template <int N, class Make>
+std::pair<StepDD, GeneratingStepDD> dd_steps(Make make, bool with_action = true) {
+  auto advance = [](auto& m, VecXdd& z, const dd_real& h) {
+    Vec<dd_real, N> q = z.template head<N>(), p = z.template tail<N>();
+    m.step(q, p, h);
+    z.template head<N>() = q;
+    z.template tail<N>() = p;
+  };
+  auto stepper = make();
+  StepDD step = [stepper, advance](VecXdd& z, const dd_real& h) { advance(*stepper, z, h); };
+  if (!with_action) return {step, GeneratingStepDD{}};
+  auto generating = make();
+  return {step, [generating, advance](VecXdd& z, const dd_real& h) {
+            advance(*generating, z, h);
+            return generating->action();
+          }};
+}
+
 /// The expected order from which the order study runs in double-double when the method has a
 /// step in it (MapStudy::step_dd): from order 6 on, double's window [1e-12, 1e-6] lies in the
 /// pre-asymptotic range of the test problems (Gauss's method with 4 stages measures 7.5 there).

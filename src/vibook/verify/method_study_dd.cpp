@@ -8,6 +8,7 @@
 #include <memory>
 #include <stdexcept>
 #include <string>
+#include <utility>
 
 #include "vibook/kepler/kepler.hpp"
 #include "vibook/problems/problems.hpp"
@@ -23,19 +24,8 @@ GalerkinDD galerkin_dd_for(const P& prob, const Quadrature& rule) {
   auto L = mechanical_lagrangian(prob);
   using Integrator = GalerkinIntegrator<N, Eigen::Dynamic, decltype(L), dd_real>;
   const QuadratureT<dd_real> r = quadrature_in<dd_real>(rule);
-  auto stepper = std::make_shared<Integrator>(L, r);
-  auto generating = std::make_shared<Integrator>(L, r);
-  auto advance = [](Integrator& m, VecXdd& z, const dd_real& h) {
-    Vec<dd_real, N> q = z.template head<N>(), p = z.template tail<N>();
-    m.step(q, p, h);
-    z.template head<N>() = q;
-    z.template tail<N>() = p;
-  };
-  return {[stepper, advance](VecXdd& z, const dd_real& h) { advance(*stepper, z, h); },
-          [generating, advance](VecXdd& z, const dd_real& h) {
-            advance(*generating, z, h);
-            return generating->action();
-          }};
+  auto steps = dd_steps<N>([&] { return std::make_shared<Integrator>(L, r); });
+  return {std::move(steps.first), std::move(steps.second)};
 }
 
 }  // namespace

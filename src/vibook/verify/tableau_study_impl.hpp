@@ -42,21 +42,8 @@ std::pair<Step, GeneratingStep> steps_for(const P& prob, const PrkTableau& t) {
 // step's discrete Lagrangian (MapStudy::generating_dd, the variational order beyond double).
 template <class P>
 std::pair<StepDD, GeneratingStepDD> steps_dd_for(const P& prob, const PrkTableauT<dd_real>& t) {
-  constexpr int N = P::N;
   using Method = PartitionedRkMethod<Eigen::Dynamic, P, dd_real>;
-  auto method = std::make_shared<Method>(prob, t);
-  auto generating = std::make_shared<Method>(prob, t);
-  auto advance = [](Method& m, VecXdd& z, const dd_real& h) {
-    Vec<dd_real, N> q = z.template head<N>(), p = z.template tail<N>();
-    m.step(q, p, h);
-    z.template head<N>() = q;
-    z.template tail<N>() = p;
-  };
-  return {[method, advance](VecXdd& z, const dd_real& h) { advance(*method, z, h); },
-          [generating, advance](VecXdd& z, const dd_real& h) {
-            advance(*generating, z, h);
-            return generating->action();
-          }};
+  return dd_steps<P::N>([&] { return std::make_shared<Method>(prob, t); });
 }
 
 // The Runge–Kutta–Nyström method of an RKN tableau (PartitionedRkMethod's RKN constructor) on
@@ -74,16 +61,8 @@ std::pair<Step, GeneratingStep> rkn_steps_for(const P& prob, const RknTableauT<d
 // The same in double-double (MapStudy::step_dd).
 template <class P>
 std::pair<StepDD, GeneratingStepDD> rkn_steps_dd_for(const P& prob, const RknTableauT<dd_real>& t) {
-  constexpr int N = P::N;
   using Method = PartitionedRkMethod<Eigen::Dynamic, P, dd_real>;
-  auto method = std::make_shared<Method>(prob, t);
-  return {[method](VecXdd& z, const dd_real& h) {
-            Vec<dd_real, N> q = z.template head<N>(), p = z.template tail<N>();
-            method->step(q, p, h);
-            z.template head<N>() = q;
-            z.template tail<N>() = p;
-          },
-          GeneratingStepDD{}};
+  return dd_steps<P::N>([&] { return std::make_shared<Method>(prob, t); }, false);
 }
 
 // For a problem type with `hamiltonian` and `gradient` (∇H in (q, p)): the method of the
