@@ -38,6 +38,9 @@ using verify::vec_text;
 using verify::euler_lagrange_acceleration;
 using verify::lagrangian_derivatives;
 using verify::largest_symmetric_eigenvalue;
+using verify::set_typed_hamiltonian;
+using verify::set_typed_lagrangian;
+using verify::set_typed_potential;
 using verify::set_typed_system;
 using verify::typed_hamilton_field;
 
@@ -157,28 +160,5 @@ std::unique_ptr<verify::TypedDiscreteLagrangian> check_typed_lagrangian(
 std::unique_ptr<verify::TypedDiscreteLagrangian> check_typed_hamiltonian(
     const TypedPotentialOptions& t, const std::string& hamiltonian, const StudyOptions& o,
     const char* route, std::vector<double>& q0, std::vector<double>& p0, MapStudy& s);
-
-/// The study's system from a typed Hamiltonian (Hamilton's equations of H in double-double,
-/// the energy H, z0); returns the report's line naming it. `sys` must outlive the study.
-std::string set_typed_hamiltonian(MapStudy& s, const verify::TypedDiscreteLagrangian& sys,
-                                  const std::string& hamiltonian, const std::vector<double>& q0,
-                                  const std::vector<double>& p0);
-
-/// The study's system from a typed Lagrangian: the reference (MapStudy::reference) solves its
-/// Euler–Lagrange equations in (q, v) in double-double, v from ∂L/∂v(q0, v) = p0 by Newton's
-/// method at the start and p = ∂L/∂v at the end; the energy is its Legendre transform
-/// H(q, p) = p·v − L(q, v) in double, v by Newton's method at each evaluation. Returns the
-/// report's line naming the system. An ArgumentError naming --lagrangian when the Legendre map
-/// has no solution at (q0, p0) (L not regular there), before any work; later failures are
-/// NumericalErrors. `sys` must outlive the study.
-std::string set_typed_lagrangian(MapStudy& s, const verify::TypedDiscreteLagrangian& sys,
-                                 const std::string& lagrangian, const std::vector<double>& q0,
-                                 const std::vector<double>& p0);
-
-/// The study's system from a typed potential (Hamilton's equations of |p|²/2 + V, the energy,
-/// z0); returns the report's line naming it. `sys` must outlive the study.
-std::string set_typed_potential(MapStudy& s, const verify::TypedDiscreteLagrangian& sys,
-                                const std::string& potential, const std::vector<double>& q0,
-                                const std::vector<double>& p0);
 
 }  // namespace vibook::cli

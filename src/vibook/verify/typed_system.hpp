@@ -5,6 +5,9 @@
 /// system part of a map study. Internal: not installed.
 #pragma once
 
+#include <string>
+#include <vector>
+
 #include <Eigen/Dense>
 
 #include "vibook/core/precision.hpp"
@@ -62,6 +65,29 @@ static_assert(kMaxDim == 6, "VIBOOK_FOR_EACH_DIM lists the dimensions 1..kMaxDim
                                            const Eigen::VectorXd&);
 VIBOOK_FOR_EACH_DIM(VIBOOK_TYPED_SYSTEM)
 #undef VIBOOK_TYPED_SYSTEM
+
+/// The study's system from a typed Hamiltonian (Hamilton's equations of H in double-double,
+/// the energy H, z0); returns the report's line naming it. `sys` must outlive the study.
+std::string set_typed_hamiltonian(MapStudy& s, const TypedDiscreteLagrangian& sys,
+                                  const std::string& hamiltonian, const std::vector<double>& q0,
+                                  const std::vector<double>& p0);
+
+/// The study's system from a typed Lagrangian: the reference (MapStudy::reference) solves its
+/// Euler–Lagrange equations in (q, v) in double-double, v from ∂L/∂v(q0, v) = p0 by Newton's
+/// method at the start and p = ∂L/∂v at the end; the energy is its Legendre transform
+/// H(q, p) = p·v − L(q, v) in double, v by Newton's method at each evaluation. Returns the
+/// report's line naming the system. An ArgumentError naming --lagrangian when the Legendre map
+/// has no solution at (q0, p0) (L not regular there), before any work; later failures are
+/// NumericalErrors. `sys` must outlive the study.
+std::string set_typed_lagrangian(MapStudy& s, const TypedDiscreteLagrangian& sys,
+                                 const std::string& lagrangian, const std::vector<double>& q0,
+                                 const std::vector<double>& p0);
+
+/// The study's system from a typed potential (Hamilton's equations of |p|²/2 + V, the energy,
+/// z0); returns the report's line naming it. `sys` must outlive the study.
+std::string set_typed_potential(MapStudy& s, const TypedDiscreteLagrangian& sys,
+                                const std::string& potential, const std::vector<double>& q0,
+                                const std::vector<double>& p0);
 
 /// The largest eigenvalue of the symmetric matrix H (the stability hint's ω² from V's Hessian):
 /// one instance for every dimension, compiled once.

@@ -1,0 +1,204 @@
+/// \file typed_system_study.cpp
+/// \brief The intended system of a catalogue route (`vibook verify --method`, `--tableau`,
+/// `--composition ld`) from a typed potential, Hamiltonian or Lagrangian, set into a map study
+/// (typed_system.hpp): the reference, the energy and the initial state, with the report line
+/// naming the system.
+#include <algorithm>
+#include <cmath>
+#include <optional>
+#include <type_traits>
+
+#include <fmt/format.h>
+
+#include "vibook/core/errors.hpp"
+#include "vibook/verify/typed_system.hpp"
+
+namespace vibook::verify {
+
+namespace {
+
+template <int N>
+void set_potential_system(MapStudy& s, const verify::TypedDiscreteLagrangian& sys,
+                          const std::vector<double>& q0, const std::vector<double>& p0) {
+  Eigen::VectorXd z0(2 * N);
+  for (int i = 0; i < N; ++i) {
+    z0(i) = q0[static_cast<std::size_t>(i)];
+    z0(N + i) = p0[static_cast<std::size_t>(i)];
+  }
+  set_typed_system<N>(s, sys, z0);
+}
+
+}  // namespace
+
+std::string set_typed_potential(MapStudy& s, const verify::TypedDiscreteLagrangian& sys,
+                                const std::string& potential, const std::vector<double>& q0,
+                                const std::vector<double>& p0) {
+  const int n = sys.dim();
+  if (n == 1) set_potential_system<1>(s, sys, q0, p0);
+  if (n == 2) set_potential_system<2>(s, sys, q0, p0);
+  if (n == 3) set_potential_system<3>(s, sys, q0, p0);
+  return fmt::format(
+      "H = |p|^2/2 + V(q), V = {} (--potential), {} degree{} of freedom; q0 = {}, "
+      "p0 = {}",
+      potential, n, n == 1 ? "" : "s", vec_text(q0), vec_text(p0));
+}
+
+std::string set_typed_hamiltonian(MapStudy& s, const verify::TypedDiscreteLagrangian& sys,
+                                  const std::string& hamiltonian, const std::vector<double>& q0,
+                                  const std::vector<double>& p0) {
+  const int n = sys.dim();
+  if (n == 1) set_potential_system<1>(s, sys, q0, p0);
+  if (n == 2) set_potential_system<2>(s, sys, q0, p0);
+  if (n == 3) set_potential_system<3>(s, sys, q0, p0);
+  return fmt::format("H = {} (--hamiltonian), {} degree{} of freedom; q0 = {}, p0 = {}",
+                     hamiltonian, n, n == 1 ? "" : "s", vec_text(q0), vec_text(p0));
+}
+
+namespace {
+
+// The Legendre map of the typed L at (q, p) in T (double-double for the reference, double for
+// the energy): v with ∂L/∂v(q, v) = p, and there L and ∂L/∂q. Newton's method from v = p on
+// the Hessian ∂²L/∂v², all from one nested AutoDiff evaluation of L in (q, v) per iteration
+// (one AutoDiff type per T: each type the tree is evaluated in is compiled anew); one
+// correction when L is quadratic in v. It stops when the correction is below
+// rel·max(1, |v|) (max norms; rel = 1e-30 in double-double, 1e-14 in double, where H's error
+// is of second order in v's since ∂H/∂v = p − ∂L/∂v = 0), keeping the point it was computed
+// at; nullopt when that does not happen in 60 iterations or a number leaves the finite ones
+// (L not regular there).
+template <int N, class T>
+struct LegendrePoint {
+  Vec<T, N> v, dLdq;
+  T L;
+};
+
+template <int N, class T>
+std::optional<LegendrePoint<N, T>> legendre(const verify::TypedDiscreteLagrangian& sys,
+                                            const Vec<T, N>& q, const Vec<T, N>& p) {
+  const double rel = std::is_same_v<T, double> ? 1e-14 : 1e-30;
+  Vec<T, 2 * N> w;
+  w << q, p;
+  for (int it = 0; it < 60; ++it) {
+    T value;
+    Vec<T, 2 * N> g;
+    Mat<T, 2 * N> H;
+    lagrangian_derivatives<N, T>(sys, w, value, g, H);
+    const Mat<T, N> M = H.template bottomRightCorner<N, N>();
+    const Vec<T, N> dv = M.partialPivLu().solve(Vec<T, N>(g.template tail<N>() - p));
+    double nd = 0, nv = 1;
+    bool finite = std::isfinite(to_double(value));
+    for (int i = 0; i < N; ++i) {
+      const double d = to_double(dv(i)), x = to_double(w(N + i));
+      finite = finite && std::isfinite(d) && std::isfinite(x);
+      nd = std::max(nd, std::abs(d));
+      nv = std::max(nv, std::abs(x));
+    }
+    if (!finite) return std::nullopt;
+    if (nd <= rel * nv)
+      return LegendrePoint<N, T>{w.template tail<N>(), g.template head<N>(), value};
+    w.template tail<N>() -= dv;
+  }
+  return std::nullopt;
+}
+
+template <int N, class T>
+LegendrePoint<N, T> legendre_or_throw(const verify::TypedDiscreteLagrangian& sys,
+                                      const Vec<T, N>& q, const Vec<T, N>& p) {
+  if (auto r = legendre<N, T>(sys, q, p)) return *r;
+  std::vector<double> qd, pd;
+  for (int i = 0; i < N; ++i) {
+    qd.push_back(to_double(q(i)));
+    pd.push_back(to_double(p(i)));
+  }
+  throw NumericalError(
+      "the Legendre map dL/dv(q, v) = p has no solution near v = p at q = " + vec_text(qd) +
+      ", p = " + vec_text(pd) + ": the Lagrangian is not regular there");
+}
+
+template <int N>
+void set_lagrangian_system(MapStudy& s, const verify::TypedDiscreteLagrangian& sys,
+                           const std::vector<double>& q0, const std::vector<double>& p0) {
+  Eigen::VectorXd z0(2 * N);
+  Vec<double, N> q, p;
+  for (int i = 0; i < N; ++i) {
+    z0(i) = q0[static_cast<std::size_t>(i)];
+    z0(N + i) = p0[static_cast<std::size_t>(i)];
+    q(i) = z0(i);
+    p(i) = z0(N + i);
+  }
+  if (!legendre<N, double>(sys, q, p))
+    throw ArgumentError("--lagrangian",
+                        "is not regular at the initial state: dL/dv(q0, v) = p0 has no solution "
+                        "near v = p0 (q0 = " +
+                            vec_text(q0) + ", p0 = " + vec_text(p0) + ")");
+  s.z0 = z0;
+  // The reference (MapStudy::reference; `field` is not used): the Euler–Lagrange equations in
+  // (q, v), M a = ∂L/∂q − B v with the Hessian blocks M = ∂²L/∂v², B = ∂²L/∂v∂q (nested
+  // AutoDiff in double-double), from v of the Legendre map at z0; p = ∂L/∂v formed at the end;
+  // L itself as one more component for the action. No Newton iteration inside the field.
+  s.reference = [&sys](const std::vector<dd_real>& z0d, double t, bool action) {
+    Vec<dd_real, N> qq, pp;
+    for (int i = 0; i < N; ++i) {
+      qq(i) = z0d[static_cast<std::size_t>(i)];
+      pp(i) = z0d[static_cast<std::size_t>(N + i)];
+    }
+    const verify::Field<dd_real> f = [&](const std::vector<dd_real>& y) {
+      Vec<dd_real, 2 * N> w;
+      for (int i = 0; i < 2 * N; ++i) w(i) = y[static_cast<std::size_t>(i)];
+      dd_real value;
+      Vec<dd_real, 2 * N> g;
+      Mat<dd_real, 2 * N> H;
+      lagrangian_derivatives<N, dd_real>(sys, w, value, g, H);
+      const Vec<dd_real, N> acc =
+          euler_lagrange_acceleration<N, dd_real>(g, H, Vec<dd_real, N>(w.template tail<N>()));
+      std::vector<dd_real> r(y.size());
+      for (int i = 0; i < N; ++i) {
+        r[static_cast<std::size_t>(i)] = w(N + i);
+        r[static_cast<std::size_t>(N + i)] = acc(i);
+      }
+      if (action) r.back() = value;
+      return r;
+    };
+    const LegendrePoint<N, dd_real> start = legendre_or_throw<N, dd_real>(sys, qq, pp);
+    std::vector<dd_real> y0(2 * N);
+    for (int i = 0; i < N; ++i) {
+      y0[static_cast<std::size_t>(i)] = qq(i);
+      y0[static_cast<std::size_t>(N + i)] = start.v(i);
+    }
+    if (action) y0.emplace_back(0.0);
+    verify::Reference<dd_real> r = verify::reference_solution<dd_real>(f, y0, t);
+    Vec<dd_real, 2 * N> w;
+    for (int i = 0; i < 2 * N; ++i) w(i) = r.y[static_cast<std::size_t>(i)];
+    dd_real value;
+    Vec<dd_real, 2 * N> g;
+    Mat<dd_real, 2 * N> H;
+    lagrangian_derivatives<N, dd_real>(sys, w, value, g, H);
+    for (int i = 0; i < N; ++i) r.y[static_cast<std::size_t>(N + i)] = g(N + i);  // p = ∂L/∂v
+    return r;
+  };
+  s.equations =
+      "the Euler-Lagrange equations of L in (q, v) (v from dL/dv = p by Newton at "
+      "the start, p = dL/dv at the end)";
+  // H = p·v − L in double
+  s.H = [&sys](const Eigen::VectorXd& z) {
+    const Vec<double, N> qq = z.head<N>(), pp = z.tail<N>();
+    const LegendrePoint<N, double> r = legendre_or_throw<N, double>(sys, qq, pp);
+    return pp.dot(r.v) - r.L;
+  };
+}
+
+}  // namespace
+
+std::string set_typed_lagrangian(MapStudy& s, const verify::TypedDiscreteLagrangian& sys,
+                                 const std::string& lagrangian, const std::vector<double>& q0,
+                                 const std::vector<double>& p0) {
+  const int n = sys.dim();
+  if (n == 1) set_lagrangian_system<1>(s, sys, q0, p0);
+  if (n == 2) set_lagrangian_system<2>(s, sys, q0, p0);
+  if (n == 3) set_lagrangian_system<3>(s, sys, q0, p0);
+  return fmt::format(
+      "L = {} (--lagrangian), {} degree{} of freedom, energy H = p.v - L(q, v); q0 = {}, "
+      "p0 = {} (p = dL/dv)",
+      lagrangian, n, n == 1 ? "" : "s", vec_text(q0), vec_text(p0));
+}
+
+}  // namespace vibook::verify
