@@ -39,7 +39,7 @@
 #include "verify_map.hpp"
 #include "vibook/core/output_file.hpp"
 #include "vibook/modified/engine.hpp"
-#include "vibook/verify/black_box.hpp"
+#include "vibook/verify/black_box_study.hpp"
 #include "vibook/verify/expression.hpp"
 #include "vibook/verify/line_protocol.hpp"
 #include "vibook/verify/stepper_abi.h"
@@ -49,10 +49,6 @@ namespace vibook::cli {
 namespace {
 
 using nlohmann::json;
-
-std::string vec_text(const double* v, int n) {
-  return cli::vec_text(std::vector<double>(v, v + n));
-}
 
 // --- the two kinds of black box: a library (vibook/verify/black_box.hpp) and a command ------
 
@@ -151,113 +147,8 @@ Plan check(const StepperOptions& o) {
   return p;
 }
 
-// --- work against precision, beside two built-in methods (report only) -----------------------
-// The black box's error at T against the independent reference, at five step sizes spread over
-// the range its order was fitted on, beside the classical Runge–Kutta method (order 4, not
-// symplectic) and, when H = |p|²/2 + V, Störmer–Verlet, both stepped on the typed system here.
-// Steps are the work measure every one-step method shares; the wall-clock seconds of each run
-// (the only work measure a black box has) are added with --timings, which makes the report
-// differ from run to run.
-template <int N>
-void work_precision(const StepperOptions& o, const verify::TypedDiscreteLagrangian& sys,
-                    const Plan& p, const MapStudy& s, MapReport& rep) {
-  using Clock = std::chrono::steady_clock;
-  if (!rep.js.contains("reference") || !rep.js.contains("order")) return;
-  const std::vector<double> ref = rep.js["reference"]["state"].get<std::vector<double>>();
-  Eigen::VectorXd zref(2 * N);
-  for (int i = 0; i < 2 * N; ++i) zref(i) = ref[static_cast<std::size_t>(i)];
-  // Five step sizes, log-spaced between the largest and smallest h of the order fit, each
-  // rounded to T/n so that every run ends at T.
-  const auto& jo = rep.js["order"];
-  double hmax = 0, hmin = INFINITY;
-  for (std::size_t i = 0; i < jo["h"].size(); ++i)
-    if (jo["used_in_fit"][i].get<bool>()) {
-      hmax = std::max(hmax, jo["h"][i].get<double>());
-      hmin = std::min(hmin, jo["h"][i].get<double>());
-    }
-  if (!(hmax > 0)) return;
-  std::vector<double> hs;
-  for (int k = 0; k < 5; ++k) {
-    const double h = hmax * std::pow(hmin / hmax, k / 4.0);
-    const double n = std::ceil(s.t_end / h - 1e-9);
-    if (hs.empty() || s.t_end / n < hs.back()) hs.push_back(s.t_end / n);
-  }
-  auto field = [&sys](const Vec<double, N>& q, const Vec<double, N>& pp) {
-    return sys.hamilton_field<N, double>(q, pp);
-  };
-  MapStudy rk4 = s, sv = s;
-  rk4.propagate = nullptr;
-  rk4.step = [field](Eigen::VectorXd& z, double h) {
-    auto f = [&](const Eigen::VectorXd& y) {
-      const Vec<double, 2 * N> r = field(y.head<N>(), y.tail<N>());
-      return Eigen::VectorXd(r);
-    };
-    const Eigen::VectorXd k1 = f(z), k2 = f(z + 0.5 * h * k1), k3 = f(z + 0.5 * h * k2),
-                          k4 = f(z + h * k3);
-    z += h / 6 * (k1 + 2 * k2 + 2 * k3 + k4);
-  };
-  struct Method {
-    std::string name, key;
-    const MapStudy* study;
-  };
-  std::vector<Method> methods = {{"black box", "black_box", &s}, {"RK4", "rk4", &rk4}};
-  // Störmer–Verlet only where H = |p|²/2 + V (the force −∇V is the field's p-part).
-  const bool separable = p.system_from == "--potential" || p.system_from.rfind("--problem", 0) == 0;
-  if (separable) {
-    sv.propagate = nullptr;
-    sv.step = [field](Eigen::VectorXd& z, double h) {
-      Vec<double, N> q = z.head<N>(), pp = z.tail<N>();
-      pp += 0.5 * h * field(q, pp).template tail<N>();
-      q += h * pp;
-      pp += 0.5 * h * field(q, pp).template tail<N>();
-      z << q, pp;
-    };
-    methods.insert(methods.begin() + 1, {"Störmer-Verlet", "stormer_verlet", &sv});
-  }
-  std::vector<double> steps;
-  for (double h : hs) steps.push_back(std::ceil(s.t_end / h - 1e-9));
-  {
-    std::vector<std::string> cells;
-    for (double n : steps) cells.push_back(fmt::format("{:>8.0f}", n));
-    rep.line("work-precision", fmt::format("{:<15}{}", "steps", fmt::join(cells, "  ")));
-  }
-  json jm = json::object();
-  for (const auto& m : methods) {
-    std::vector<double> err, secs;
-    for (double h : hs) {
-      const auto t0 = Clock::now();
-      double e = std::numeric_limits<double>::quiet_NaN();
-      try {
-        e = (run_map(*m.study, s.z0, h, s.t_end) - zref).template lpNorm<Eigen::Infinity>();
-      } catch (const NumericalError&) {
-        // a step size the method cannot take: no point
-      }
-      secs.push_back(std::chrono::duration<double>(Clock::now() - t0).count());
-      err.push_back(e);
-    }
-    jm[m.key] = {{"error", err}};
-    if (o.timings) jm[m.key]["seconds"] = secs;
-    std::vector<std::string> cells;
-    for (std::size_t i = 0; i < hs.size(); ++i)
-      cells.push_back(o.timings ? fmt::format("{:.2e} ({:.3g} s)", err[i], secs[i])
-                                : fmt::format("{:.2e}", err[i]));
-    rep.line("", fmt::format("{:<15}{}", m.name, fmt::join(cells, "  ")));
-  }
-  rep.line("", fmt::format("(error at T = {:g} against the reference; {}; report only)", s.t_end,
-                           o.timings ? "seconds per run in parentheses"
-                                     : "--timings adds the seconds of each run"));
-  rep.js["work_precision"] = {{"h", hs},
-                              {"steps", steps},
-                              {"methods", jm},
-                              {"note",
-                               "error at T against the reference; rk4 and stormer_verlet "
-                               "(when H = |p|^2/2 + V) are stepped by vibook on the same "
-                               "system; report only"}};
-}
-
-template <int N>
-int run_n(const StepperOptions& o, const Plan& p) {
-  const verify::TypedDiscreteLagrangian& sys = *p.system;
+int run(const StepperOptions& o, const Plan& p) {
+  const int N = p.dim;
   MapReport rep;
   Eigen::VectorXd z0(2 * N);
   for (int i = 0; i < N; ++i) {
@@ -274,7 +165,7 @@ int run_n(const StepperOptions& o, const Plan& p) {
     // --stepper-timeout like a command.
     const std::string lib = o.lib, arg = o.arg;
     auto host = std::make_unique<verify::LineProtocolStepper>(
-        [lib, arg] { return verify::serve_stepper_library(lib, arg, N); }, N, p.timeout);
+        [lib, arg, N] { return verify::serve_stepper_library(lib, arg, N); }, N, p.timeout);
     bool ended = false;
     if (const std::string why = host->handshake(ended); !why.empty())
       throw ArgumentError("--stepper-lib", ended ? "could not be loaded: " + why +
@@ -285,80 +176,10 @@ int run_n(const StepperOptions& o, const Plan& p) {
     box = std::move(host);
   } else
     box = std::make_unique<verify::LineProtocolStepper>(o.cmd, N, p.timeout);
-  const std::string which = o.lib_given ? "--stepper-lib" : "--stepper-cmd";
-  auto finite = [](const Eigen::VectorXd& z) { return z.allFinite(); };
-  {
-    Eigen::VectorXd z = z0;
-    try {
-      box->run(p.study.h, 1, z.data(), z.data() + N);
-    } catch (const verify::StepperKilled& e) {
-      // A crash is the method's code failing, not a refusal of the arguments.
-      throw NumericalError(
-          fmt::format("the stepper's first step of h = {:g} from the initial "
-                      "state: {}",
-                      p.study.h, e.what()));
-    } catch (const NumericalError& e) {
-      throw ArgumentError(which, fmt::format("the stepper did not take a first step of h = {:g} "
-                                             "from the initial state: {}",
-                                             p.study.h, e.what()));
-    }
-    if (!finite(z))
-      throw ArgumentError(which, fmt::format("the stepper's first step of h = {:g} from the "
-                                             "initial state returned a non-finite state",
-                                             p.study.h));
-  }
-  BlackBox* raw = box.get();
-  auto where = [](const Eigen::VectorXd& z) {
-    return fmt::format("q = {}, p = {}", vec_text(z.data(), N), vec_text(z.data() + N, N));
-  };
+  verify::check_first_step(*box, z0, p.study.h, N, o.lib_given ? "--stepper-lib" : "--stepper-cmd");
   MapStudy s = p.study;
-  s.step = [raw, where, finite](Eigen::VectorXd& z, double h) {
-    const Eigen::VectorXd start = z;
-    try {
-      raw->run(h, 1, z.data(), z.data() + N);
-    } catch (const NumericalError& e) {
-      throw NumericalError(
-          fmt::format("a step of h = {:g} from {}: {}", h, where(start), e.what()));
-    }
-    if (!finite(z))
-      throw NumericalError(
-          fmt::format("a step of h = {:g} from {} returned a non-finite state", h, where(start)));
-  };
-  // A run of the order study is one request (both routes talk to a child process).
-  s.propagate = [raw, where, finite](Eigen::VectorXd& z, double h, long long n) {
-    const Eigen::VectorXd start = z;
-    try {
-      raw->run(h, n, z.data(), z.data() + N);
-    } catch (const NumericalError& e) {
-      throw NumericalError(
-          fmt::format("{} steps of h = {:g} from {}: {}", n, h, where(start), e.what()));
-    }
-    if (!finite(z))
-      throw NumericalError(
-          fmt::format("{} steps of h = {:g} from {} returned a non-finite "
-                      "state",
-                      n, h, where(start)));
-  };
-  // The energy runs' states, a block of steps a request (a library's host answers them all;
-  // a command, one step a request as before).
-  s.every = [raw, where, finite](Eigen::VectorXd& z, double h, long long n,
-                                 const std::function<void()>& each) {
-    Eigen::VectorXd start = z;
-    try {
-      raw->every(h, n, z.data(), z.data() + N, [&] {
-        if (!finite(z))
-          throw NumericalError(fmt::format("a step of h = {:g} from {} returned a non-finite state",
-                                           h, where(start)));
-        each();
-        start = z;
-      });
-    } catch (const NumericalError& e) {
-      if (!finite(z)) throw;
-      throw NumericalError(
-          fmt::format("a step of h = {:g} from {}: {}", h, where(start), e.what()));
-    }
-  };
-  set_typed_system<N>(s, sys, z0);
+  verify::set_black_box_map(s, *box, N);
+  verify::set_typed_system(s, *p.system, p.q0, p.p0);
   s.expected = p.expected;
   // A command answers a whole run at once, but at the speed of its language: the walk of step
   // counts stops at 1e5 steps a run (a library: 1e6, as for the compositions).
@@ -374,8 +195,7 @@ int run_n(const StepperOptions& o, const Plan& p) {
     rep.line("stepper", fmt::format("command '{}' (line protocol 1)", o.cmd));
   rep.line("system", fmt::format("H = {} ({}), {} degree{} of freedom", p.hamiltonian,
                                  p.system_from, N, N == 1 ? "" : "s"));
-  rep.line("initial state",
-           fmt::format("q0 = {}, p0 = {}", vec_text(z0.data(), N), vec_text(z0.data() + N, N)));
+  rep.line("initial state", fmt::format("q0 = {}, p0 = {}", vec_text(p.q0), vec_text(p.p0)));
   rep.line("expected order", fmt::format("{:g} (--expected-order)", p.expected));
   rep.js["stepper"] = {{"kind", o.lib_given ? "library" : "command"},
                        {"library", o.lib_given ? json(o.lib) : json(nullptr)},
@@ -389,7 +209,9 @@ int run_n(const StepperOptions& o, const Plan& p) {
                       {"q0", p.q0},
                       {"p0", p.p0}};
   measure_map(s, rep);
-  work_precision<N>(o, sys, p, s, rep);
+  // Work against precision beside RK4 and, where H = |p|^2/2 + V, Stormer-Verlet.
+  const bool separable = p.system_from == "--potential" || p.system_from.rfind("--problem", 0) == 0;
+  verify::black_box_work_precision(s, *p.system, separable, o.timings, rep);
   box.reset();  // the child process ends before the report is printed
   rep.variational_order_not_derived(
       "a black-box stepper has no discrete Lagrangian to expand; its order is "
@@ -399,22 +221,6 @@ int run_n(const StepperOptions& o, const Plan& p) {
 
 }  // namespace
 
-int run_stepper(const StepperOptions& o) {
-  const Plan p = check(o);
-  switch (p.dim) {
-    case 1:
-      return run_n<1>(o, p);
-    case 2:
-      return run_n<2>(o, p);
-    case 3:
-      return run_n<3>(o, p);
-    case 4:
-      return run_n<4>(o, p);
-    case 5:
-      return run_n<5>(o, p);
-    default:
-      return run_n<6>(o, p);
-  }
-}
+int run_stepper(const StepperOptions& o) { return run(o, check(o)); }
 
 }  // namespace vibook::cli

@@ -66,6 +66,10 @@ static_assert(kMaxDim == 6, "VIBOOK_FOR_EACH_DIM lists the dimensions 1..kMaxDim
 VIBOOK_FOR_EACH_DIM(VIBOOK_TYPED_SYSTEM)
 #undef VIBOOK_TYPED_SYSTEM
 
+/// set_typed_system<N> at z0 = (q0, p0), for the dimension of `sys` (1..kMaxDim).
+void set_typed_system(MapStudy& s, const TypedDiscreteLagrangian& sys,
+                      const std::vector<double>& q0, const std::vector<double>& p0);
+
 /// The study's system from a typed Hamiltonian (Hamilton's equations of H in double-double,
 /// the energy H, z0); returns the report's line naming it. `sys` must outlive the study.
 std::string set_typed_hamiltonian(MapStudy& s, const TypedDiscreteLagrangian& sys,

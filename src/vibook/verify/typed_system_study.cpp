@@ -30,13 +30,29 @@ void set_potential_system(MapStudy& s, const verify::TypedDiscreteLagrangian& sy
 
 }  // namespace
 
+void set_typed_system(MapStudy& s, const TypedDiscreteLagrangian& sys,
+                      const std::vector<double>& q0, const std::vector<double>& p0) {
+  switch (sys.dim()) {
+    case 1:
+      return set_potential_system<1>(s, sys, q0, p0);
+    case 2:
+      return set_potential_system<2>(s, sys, q0, p0);
+    case 3:
+      return set_potential_system<3>(s, sys, q0, p0);
+    case 4:
+      return set_potential_system<4>(s, sys, q0, p0);
+    case 5:
+      return set_potential_system<5>(s, sys, q0, p0);
+    default:
+      return set_potential_system<6>(s, sys, q0, p0);
+  }
+}
+
 std::string set_typed_potential(MapStudy& s, const verify::TypedDiscreteLagrangian& sys,
                                 const std::string& potential, const std::vector<double>& q0,
                                 const std::vector<double>& p0) {
   const int n = sys.dim();
-  if (n == 1) set_potential_system<1>(s, sys, q0, p0);
-  if (n == 2) set_potential_system<2>(s, sys, q0, p0);
-  if (n == 3) set_potential_system<3>(s, sys, q0, p0);
+  set_typed_system(s, sys, q0, p0);
   return fmt::format(
       "H = |p|^2/2 + V(q), V = {} (--potential), {} degree{} of freedom; q0 = {}, "
       "p0 = {}",
@@ -47,9 +63,7 @@ std::string set_typed_hamiltonian(MapStudy& s, const verify::TypedDiscreteLagran
                                   const std::string& hamiltonian, const std::vector<double>& q0,
                                   const std::vector<double>& p0) {
   const int n = sys.dim();
-  if (n == 1) set_potential_system<1>(s, sys, q0, p0);
-  if (n == 2) set_potential_system<2>(s, sys, q0, p0);
-  if (n == 3) set_potential_system<3>(s, sys, q0, p0);
+  set_typed_system(s, sys, q0, p0);
   return fmt::format("H = {} (--hamiltonian), {} degree{} of freedom; q0 = {}, p0 = {}",
                      hamiltonian, n, n == 1 ? "" : "s", vec_text(q0), vec_text(p0));
 }

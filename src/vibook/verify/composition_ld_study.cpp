@@ -1,0 +1,218 @@
+/// \file composition_ld_study.cpp
+/// \brief A composition built on the user's own typed discrete Lagrangian (`vibook verify
+/// --composition ld --ld EXPR`), measured by the composition study (composition_study.hpp).
+/// The base stage is the discrete Euler–Lagrange step of L_d (through the compiled tape); the
+/// adjoint stage is that of the adjoint discrete Lagrangian L_d*(q0, q1, h) = −L_d(q1, q0, −h)
+/// (nested AutoDiff on the expression tree), so a '*' in the coefficients applies the true
+/// adjoint of the user's method. Whether the base is symmetric (L_d* = L_d), which decides the
+/// order conditions, is computed from the expression: symbolically by the engine, else at random
+/// points. The system is the one typed (--potential or --hamiltonian, the reference Hamilton's
+/// equations in double-double; or --lagrangian, the reference its Euler–Lagrange equations and
+/// the energy its Legendre transform, set_typed_lagrangian).
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <memory>
+#include <mutex>
+#include <random>
+#include <string>
+#include <vector>
+
+#include <fmt/format.h>
+#include <ginac/ginac.h>
+
+#include "vibook/core/precision.hpp"
+#include "vibook/integrators/composition.hpp"
+#include "vibook/mechanics/del_solver.hpp"
+#include "vibook/modified/engine.hpp"
+#include "vibook/modified/series.hpp"
+#include "vibook/verify/composition_ld_study.hpp"
+#include "vibook/verify/expression.hpp"
+#include "vibook/verify/method_symbolic.hpp"
+#include "vibook/verify/tape.hpp"
+#include "vibook/verify/typed_system.hpp"
+
+namespace vibook::verify {
+
+namespace {
+
+namespace comp = vibook::composition;
+
+// Whether L_d is its own adjoint, and how that was decided.
+struct Symmetry {
+  bool symmetric = false;
+  std::string how;
+};
+
+// L_d(q0, q1, h) + L_d(q1, q0, −h) ≡ 0: first on GiNaC symbols (the engine's zero test);
+// where the engine cannot reduce it to zero, at 16 random points in double (relative 1e-13).
+template <int N>
+Symmetry decide_symmetry(const TypedDiscreteLagrangian& dl) {
+  const auto Ld = dl.bind<N>();
+  {
+    std::lock_guard<std::mutex> lock(modified::ginac_mutex());
+    Vec<GiNaC::ex, N> a, b;
+    for (int i = 0; i < N; ++i) {
+      a(i) = GiNaC::symbol(fmt::format("a{}", i + 1));
+      b(i) = GiNaC::symbol(fmt::format("b{}", i + 1));
+    }
+    const GiNaC::ex h = GiNaC::symbol("h");
+    try {
+      const GiNaC::ex d = Ld(a, b, h) + Ld(b, a, GiNaC::ex(-h));
+      if (modified::vanishes(d))
+        return {true, "symmetric: L_d(q0, q1, h) = -L_d(q1, q0, -h), shown by the engine"};
+    } catch (const std::exception&) {
+      // not decided symbolically (e.g. a function the engine does not expand); numerically below
+    }
+  }
+  std::mt19937_64 rng(20261127);
+  std::uniform_real_distribution<double> u(-0.5, 0.5);
+  double worst = 0;
+  for (int k = 0; k < 16; ++k) {
+    Vec<double, N> a, b;
+    for (int i = 0; i < N; ++i) {
+      a(i) = 0.3 + u(rng);
+      b(i) = a(i) + 0.1 * u(rng);
+    }
+    const double h = 0.05 + 0.05 * (u(rng) + 0.5);
+    const double x = Ld(a, b, h), y = Ld(b, a, -h);
+    const double scale = std::max({std::abs(x), std::abs(y), 1e-300});
+    worst = std::max(worst, std::abs(x + y) / scale);
+  }
+  if (worst <= 1e-13)
+    return {true, fmt::format("symmetric: L_d(q0, q1, h) + L_d(q1, q0, -h) = 0 to {:.1e} "
+                              "(relative) at 16 random points; the engine did not reduce it to "
+                              "zero",
+                              worst)};
+  return {false, fmt::format("not symmetric: L_d(q0, q1, h) + L_d(q1, q0, -h) reaches {:.1e} "
+                             "(relative) at random points; its adjoint is -L_d(q1, q0, -h)",
+                             worst)};
+}
+
+template <int N>
+void measure_n(const TypedLdSystem& o, const TypedDiscreteLagrangian& dl, CompositionSpec spec,
+               MapStudy study, SymbolicUse symbolic, MapMeasurement& rep) {
+  const std::vector<double>& q0 = o.q0;
+  const std::vector<double>& p0 = o.p0;
+  const Symmetry sym = decide_symmetry<N>(dl);
+  const CompositionBase base{"ld", sym.symmetric,
+                             "the typed discrete Lagrangian L_d = " + o.ld + "; " + sym.how};
+  spec.base = &base;
+  // The base stage: the DEL step of L_d through the compiled tape; the adjoint stage: the DEL
+  // step of -L_d(q1, q0, -h) by nested AutoDiff. Each stage starts Newton from q + h p (the
+  // stages' steps differ in size and sign, so the last increment is no guess).
+  const auto Ld = dl.bind<N>();
+  std::shared_ptr<DelIntegrator<N, CompiledDiscreteLagrangian<N>>> tape;
+  {
+    std::lock_guard<std::mutex> lock(modified::ginac_mutex());
+    tape = std::make_shared<DelIntegrator<N, CompiledDiscreteLagrangian<N>>>(
+        CompiledDiscreteLagrangian<N>(dl));
+  }
+  auto adjoint_ld = [Ld](const auto& a, const auto& b, const auto& h) -> scalar_t<decltype(h)> {
+    using S = scalar_t<decltype(h)>;
+    return -Ld(b, a, S(-h));
+  };
+  auto adj = std::make_shared<DelIntegrator<N, decltype(adjoint_ld)>>(adjoint_ld);
+  auto stage = [](auto integrator, auto ld) -> CompositionStage {
+    return [integrator, ld](Eigen::VectorXd& z, double h) {
+      Vec<double, N> q = z.head<N>(), p = z.tail<N>();
+      const Vec<double, N> start = q;
+      integrator->reset();
+      integrator->step(q, p, h);
+      z.head<N>() = q;
+      z.tail<N>() = p;
+      return double(ld(start, q, h));
+    };
+  };
+  Eigen::VectorXd z0(2 * N);
+  for (int i = 0; i < N; ++i) {
+    z0(i) = q0[static_cast<std::size_t>(i)];
+    z0(N + i) = p0[static_cast<std::size_t>(i)];
+  }
+  std::string line;
+  if (!o.lagrangian.empty()) {
+    // L typed: the reference and the energy from its Legendre transform (typed_system.hpp)
+    line = set_typed_lagrangian(study, dl, o.lagrangian, q0, p0);
+  } else {
+    set_typed_system<N>(study, dl, z0);
+    const std::string system = o.hamiltonian.empty()
+                                   ? "H = |p|^2/2 + V(q), V = " + o.potential + " (--potential)"
+                                   : "H = " + o.hamiltonian + " (--hamiltonian)";
+    line = fmt::format("{}, {} degree{} of freedom; q0 = {}, p0 = {}", system, N, N == 1 ? "" : "s",
+                       vec_text(q0), vec_text(p0));
+  }
+  // The variational order derived by the engine (method_symbolic.hpp): the typed L_d on its
+  // symbols, composed, against the intended Lagrangian (none for a typed Hamiltonian).
+  const SymbolicStageDl symbolic_ld = [Ld](const std::vector<modified::ex>& a,
+                                           const std::vector<modified::ex>& b,
+                                           const modified::ex& h) {
+    Vec<modified::ex, N> x, y;
+    for (int i = 0; i < N; ++i) {
+      x(i) = a[static_cast<std::size_t>(i)];
+      y(i) = b[static_cast<std::size_t>(i)];
+    }
+    return Ld(x, y, h);
+  };
+  derive_composition_variational_order(
+      spec, N, symbolic_ld,
+      o.hamiltonian.empty() ? typed_lagrangian<N>(&dl) : modified::SymbolicLagrangian{}, symbolic,
+      study);
+  if (!spec.flows.empty()) {
+    // A splitting on H = |p|^2/2 + V (--splitting with --potential): the flows are explicit, so
+    // each stage is stepped as it is defined, with no Newton solve: symplectic Euler drifts
+    // (q += c h p), then kicks (p -= c h grad V(q), from Hamilton's equations of the system);
+    // its adjoint kicks, then drifts. Each stage's L_d is the typed one's (its value only).
+    const Field<dd_real> field = study.field;
+    auto kick = [field](Eigen::VectorXd& z, double c) {
+      std::vector<dd_real> x(2 * N);
+      for (int i = 0; i < 2 * N; ++i) x[static_cast<std::size_t>(i)] = dd_real(z(i));
+      const std::vector<dd_real> f = field(x);
+      for (int i = 0; i < N; ++i) z(N + i) += c * to_double(f[static_cast<std::size_t>(N + i)]);
+    };
+    auto value = [](const auto& ld, const Eigen::VectorXd& from, const Eigen::VectorXd& z,
+                    double h) {
+      const Vec<double, N> a = from.head<N>(), b = z.head<N>();
+      return double(ld(a, b, h));
+    };
+    const CompositionStage se = [kick, value, Ld](Eigen::VectorXd& z, double h) {
+      const Eigen::VectorXd from = z;
+      z.head<N>() += h * z.tail<N>();
+      kick(z, h);
+      return value(Ld, from, z, h);
+    };
+    const CompositionStage se_adjoint = [kick, value, adjoint_ld](Eigen::VectorXd& z, double h) {
+      const Eigen::VectorXd from = z;
+      kick(z, h);
+      z.head<N>() += h * z.tail<N>();
+      return value(adjoint_ld, from, z, h);
+    };
+    measure_composition(spec, se, se_adjoint, line, study, rep);
+  } else {
+    measure_composition(spec, stage(tape, Ld), stage(adj, adjoint_ld), line, study, rep);
+  }
+  rep.js["system"] = {{"ld", o.ld},
+                      {"potential", o.potential},
+                      {"lagrangian", o.lagrangian},
+                      {"hamiltonian", o.hamiltonian},
+                      {"symmetric", sym.symmetric},
+                      {"symmetry", sym.how},
+                      {"q0", q0},
+                      {"p0", p0}};
+}
+
+}  // namespace
+
+void measure_ld_composition(CompositionSpec spec, const TypedDiscreteLagrangian& dl,
+                            const TypedLdSystem& system, const MapStudy& study,
+                            SymbolicUse symbolic, MapMeasurement& rep) {
+  switch (dl.dim()) {
+    case 1:
+      return measure_n<1>(system, dl, std::move(spec), study, symbolic, rep);
+    case 2:
+      return measure_n<2>(system, dl, std::move(spec), study, symbolic, rep);
+    default:
+      return measure_n<3>(system, dl, std::move(spec), study, symbolic, rep);
+  }
+}
+
+}  // namespace vibook::verify

@@ -1,0 +1,36 @@
+/// \file composition_ld_study.hpp
+/// \brief A composition built on the user's own typed discrete Lagrangian (`vibook verify
+/// --composition ld`), measured by the composition study. Internal: not installed.
+///
+/// Chapter: \ref chapter-verify (section "Compositions").
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "vibook/verify/composition_study.hpp"
+#include "vibook/verify/expression.hpp"
+#include "vibook/verify/method_symbolic.hpp"
+
+namespace vibook::verify {
+
+/// The texts of a composition of a typed discrete Lagrangian (`--composition ld`) and the
+/// system it is measured on (--potential, --lagrangian or --hamiltonian, as typed; the report
+/// and the JSON name them), from (q0, p0).
+struct TypedLdSystem {
+  std::string ld, potential, lagrangian, hamiltonian;
+  std::vector<double> q0, p0;
+};
+
+/// Measure the composition `spec` built on the typed discrete Lagrangian `dl` (1 to 3 degrees of
+/// freedom): whether L_d is symmetric (by the engine, else at 16 random points to 1e-13
+/// relative), its variational order derived by the engine where `symbolic` allows, then every
+/// phase of measure_composition on the typed system (the Legendre transform of a typed
+/// Lagrangian, else Hamilton's equations of the typed H). A splitting (spec.flows) is stepped
+/// by its explicit flows on H = |p|²/2 + V. With the settings of `study` (its step and
+/// measurement options); appended to `rep`. `dl` must outlive the call.
+void measure_ld_composition(CompositionSpec spec, const TypedDiscreteLagrangian& dl,
+                            const TypedLdSystem& system, const MapStudy& study,
+                            SymbolicUse symbolic, MapMeasurement& rep);
+
+}  // namespace vibook::verify
