@@ -6,6 +6,7 @@
 // Every part that was computed is printed and written, even when a later part fails.
 #include <unistd.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <iostream>
 #include <memory>
@@ -189,6 +190,106 @@ void set_study_options(StudyOptions& s, const VerifyOptions& o, const CLI::App& 
   s.symmetric = o.symmetric;
 }
 
+// --- the route table -----------------------------------------------------------------------
+// Each route of `vibook verify` is chosen by one option and takes the options every route
+// shares plus its own; any other option given is refused, naming it, before any work. Where an
+// option is refused for a reason worth saying (a Hamiltonian for a Galerkin method, which
+// discretizes a Lagrangian), the route's notes say it.
+struct Route {
+  const char* name;                // the option that chooses it, or its name
+  std::vector<const char*> takes;  // beyond kCommon
+  std::vector<std::pair<const char*, const char*>> notes;  // option, why it does not apply
+};
+
+// The options of every route.
+const std::vector<const char*> kCommon = {
+    "--q0",        "--p0",        "--t-end",       "--h-list",   "--expected-order",
+    "--order-tol", "--floor",     "--h",           "--steps",    "--json-out",
+    "--report",    "--symmetric", "--max-seconds", "--progress", "--timings"};
+
+// The routes, in the order their choosing options are looked for.
+const std::vector<std::pair<std::vector<const char*>, Route>>& routes() {
+  static const std::vector<std::pair<std::vector<const char*>, Route>> table = {
+      {{"--splitting"},
+       {"--splitting",
+        {"--splitting", "--problem", "--potential", "--dim", "--symbolic"},
+        {{"--hamiltonian", "a splitting runs on --problem or on H = |p|^2/2 + V with --potential"},
+         {"--lagrangian",
+          "a splitting runs on --problem or on H = |p|^2/2 + V with --potential"}}}},
+      {{"--tableau"},
+       {"--tableau",
+        {"--tableau", "--problem", "--potential", "--hamiltonian", "--dim"},
+        {{"--lagrangian",
+          "a partitioned Runge-Kutta method runs on Hamilton's equations; type H after "
+          "--hamiltonian (or V after --potential)"},
+         {"--symbolic", "the variational order of a tableau is measured"}}}},
+      {{"--method"},
+       {"--method",
+        {"--method", "--problem", "--potential", "--lagrangian", "--dim", "--symbolic"},
+        {{"--hamiltonian",
+          "a Galerkin method discretizes a Lagrangian; type it after --lagrangian (or V after "
+          "--potential)"}}}},
+      {{"--stepper-lib", "--stepper-cmd"},
+       {"a black-box stepper",
+        {"--stepper-lib", "--stepper-cmd", "--stepper-arg", "--stepper-timeout", "--problem",
+         "--hamiltonian", "--potential", "--dim"},
+        {{"--symbolic", "the variational order of a black box is measured"}}}},
+      {{"--composition"},
+       {"--composition",
+        {"--composition", "--coefficients", "--problem", "--symbolic", "--ld", "--lagrangian",
+         "--hamiltonian", "--potential", "--dim"},
+        {}}},
+  };
+  return table;
+}
+
+// The typed --ld, when no other route is chosen.
+const Route kLd = {"--ld",
+                   {"--ld", "--potential", "--lagrangian", "--hamiltonian", "--dim", "--adaptive",
+                    "--adaptive-steps", "--modified-order", "--format", "--reference"},
+                   {{"--problem",
+                     "the --ld route runs on the system of --potential, "
+                     "--lagrangian or --hamiltonian"},
+                    {"--symbolic", "the variational order of a typed --ld is always derived"}}};
+
+// The route the options choose, every option given checked against it (ArgumentError naming
+// the first option that does not apply).
+const Route& route_of(const VerifyOptions& o, const CLI::App& c) {
+  const Route* chosen = nullptr;
+  const char* by = nullptr;
+  for (const auto& [choosers, route] : routes())
+    for (const char* opt : choosers)
+      if (c.count(opt) > 0) {
+        if (chosen != nullptr && chosen != &route)
+          throw ArgumentError(opt, fmt::format("does not apply to {}: give one method", by));
+        chosen = &route;
+        by = opt;
+      }
+  const Route& r = chosen ? *chosen : kLd;
+  // --composition BASE other than ld runs on --problem only
+  const bool other_base = r.name == std::string("--composition") && o.composition != "ld";
+  for (const CLI::Option* opt : c.get_options()) {
+    const std::string name = opt->get_name();
+    if (opt->count() == 0 || name.rfind("--", 0) != 0) continue;
+    auto in = [&](const std::vector<const char*>& list) {
+      return std::find_if(list.begin(), list.end(), [&](const char* x) { return name == x; }) !=
+             list.end();
+    };
+    if (other_base && (name == "--ld" || name == "--lagrangian" || name == "--hamiltonian" ||
+                       name == "--potential" || name == "--dim"))
+      throw ArgumentError(name,
+                          "applies to --composition ld only (the composition of the --ld "
+                          "typed); the other bases run on --problem");
+    if (in(kCommon) || in(r.takes)) continue;
+    for (const auto& [n, why] : r.notes)
+      if (name == n)
+        throw ArgumentError(name, fmt::format("does not apply to {}: {}", r.name, why));
+    throw ArgumentError(name,
+                        fmt::format("does not apply to {} (see vibook verify --help)", r.name));
+  }
+  return r;
+}
+
 int run(const VerifyOptions& o, const CLI::App& c) {
   double max_seconds = 0;
   if (!o.max_seconds.empty()) {
@@ -214,20 +315,10 @@ int run(const VerifyOptions& o, const CLI::App& c) {
       throw ArgumentError(opt, "is empty");
   // The typed expressions' derivatives are derived symbolically: the limit covers that too.
   const Watchdog watchdog("verify", max_seconds, o.progress);
-  if (c.count("--splitting") > 0) {
+  const Route& r = route_of(o, c);
+  if (r.name == std::string("--splitting")) {
     // A splitting method (verify_composition.cpp): its flows, through its equivalent
-    // composition of symplectic Euler and its adjoint, on --problem.
-    for (const char* opt :
-         {"--method", "--tableau", "--composition", "--stepper-lib", "--stepper-cmd"})
-      if (c.count(opt) > 0)
-        throw ArgumentError(opt, "does not apply to --splitting: give one method");
-    for (const char* opt :
-         {"--coefficients", "--ld", "--lagrangian", "--hamiltonian", "--modified-order", "--format",
-          "--reference", "--adaptive", "--adaptive-steps", "--stepper-arg", "--stepper-timeout"})
-      if (c.count(opt) > 0)
-        throw ArgumentError(opt,
-                            "does not apply to --splitting (its flows give the method; it runs "
-                            "on --problem, or on H = |p|^2/2 + V with --potential)");
+    // composition of symplectic Euler and its adjoint, on --problem or --potential.
     if (c.count("--dim") > 0 && c.count("--potential") == 0)
       throw ArgumentError("--dim", "applies to --splitting only with --potential");
     CompositionOptions co;
@@ -238,25 +329,8 @@ int run(const VerifyOptions& o, const CLI::App& c) {
     co.dim = o.dim;
     return run_composition(co);
   }
-  if (c.count("--symbolic") > 0 && c.count("--method") == 0 && c.count("--composition") == 0)
-    throw ArgumentError("--symbolic",
-                        "applies to --method, --composition and --splitting only (a typed --ld's "
-                        "variational "
-                        "order is always derived; that of a tableau or a black box is measured)");
-  if (c.count("--method") > 0 && c.count("--tableau") > 0)
-    throw ArgumentError("--tableau", "does not apply to --method: give one method");
-  if (c.count("--tableau") > 0) {
+  if (r.name == std::string("--tableau")) {
     // A partitioned Runge-Kutta method from its tableau (verify_tableau.cpp).
-    for (const char* opt : {"--ld", "--modified-order", "--format", "--reference", "--composition",
-                            "--coefficients", "--stepper-lib", "--stepper-cmd", "--stepper-arg",
-                            "--stepper-timeout", "--adaptive", "--adaptive-steps"})
-      if (c.count(opt) > 0)
-        throw ArgumentError(opt, "does not apply to --tableau (see vibook verify --help)");
-    if (c.count("--lagrangian") > 0)
-      throw ArgumentError("--lagrangian",
-                          "does not apply to --tableau: a partitioned Runge-Kutta method runs on "
-                          "Hamilton's equations; type H after --hamiltonian (or V after "
-                          "--potential)");
     TableauOptions to;
     set_study_options(to, o, c);
     to.potential = o.potential;
@@ -267,18 +341,9 @@ int run(const VerifyOptions& o, const CLI::App& c) {
     to.file = o.tableau;
     return run_tableau(to);
   }
-  if (c.count("--method") > 0) {
+  if (r.name == std::string("--method")) {
     // A Galerkin variational integrator from the catalogue (verify_method.cpp), on a test
-    // problem or on the --potential typed.
-    for (const char* opt : {"--ld", "--modified-order", "--format", "--reference", "--composition",
-                            "--coefficients", "--stepper-lib", "--stepper-cmd", "--stepper-arg",
-                            "--stepper-timeout", "--adaptive", "--adaptive-steps"})
-      if (c.count(opt) > 0)
-        throw ArgumentError(opt, "does not apply to --method (see vibook verify --help)");
-    if (c.count("--hamiltonian") > 0)
-      throw ArgumentError("--hamiltonian",
-                          "does not apply to --method: a Galerkin method discretizes a "
-                          "Lagrangian; type it after --lagrangian (or V after --potential)");
+    // problem or on the --potential or --lagrangian typed.
     MethodOptions mo;
     set_study_options(mo, o, c);
     mo.method = o.method;
@@ -290,15 +355,8 @@ int run(const VerifyOptions& o, const CLI::App& c) {
     mo.symbolic = o.symbolic;
     return run_method(mo);
   }
-  const bool stepper = c.count("--stepper-lib") > 0 || c.count("--stepper-cmd") > 0;
-  if (stepper) {
+  if (r.name == std::string("a black-box stepper")) {
     // Another program's stepper as a black box (verify_stepper.cpp).
-    for (const char* opt :
-         {"--ld", "--lagrangian", "--composition", "--coefficients", "--modified-order", "--format",
-          "--reference", "--tableau", "--adaptive", "--adaptive-steps"})
-      if (c.count(opt) > 0)
-        throw ArgumentError(opt,
-                            "does not apply to a black-box stepper (see vibook verify --help)");
     StepperOptions so;
     set_study_options(so, o, c);
     so.lib = o.stepper_lib;
@@ -313,22 +371,9 @@ int run(const VerifyOptions& o, const CLI::App& c) {
     so.timings = o.timings;
     return run_stepper(so);
   }
-  for (const char* opt : {"--stepper-arg", "--stepper-timeout"})
-    if (c.count(opt) > 0)
-      throw ArgumentError(opt, "applies only with --stepper-lib or --stepper-cmd");
-  if (c.count("--composition") > 0) {
+  if (r.name != std::string("--ld")) {
     // A composition method (verify_composition.cpp); with base ld, of the --ld typed
-    // (verify_composition_ld.cpp), on the system of --potential or --hamiltonian.
-    for (const char* opt :
-         {"--modified-order", "--format", "--reference", "--adaptive", "--adaptive-steps"})
-      if (c.count(opt) > 0)
-        throw ArgumentError(opt, "does not apply to --composition (see vibook verify --help)");
-    if (o.composition != "ld")
-      for (const char* opt : {"--ld", "--lagrangian", "--hamiltonian", "--potential", "--dim"})
-        if (c.count(opt) > 0)
-          throw ArgumentError(opt,
-                              "applies to --composition ld only (the composition of the "
-                              "--ld typed); the other bases run on --problem");
+    // (verify_composition_ld.cpp), on the system of --potential, --lagrangian or --hamiltonian.
     CompositionOptions co;
     set_study_options(co, o, c);
     co.base = o.composition;
@@ -343,17 +388,13 @@ int run(const VerifyOptions& o, const CLI::App& c) {
       throw ArgumentError("--ld", "is required with --composition ld");
     return run_composition(co);
   }
-  if (c.count("--coefficients") > 0)
-    throw ArgumentError("--coefficients", "applies only with --composition");
   if (c.count("--adaptive-steps") > 0 && c.count("--adaptive") == 0)
     throw ArgumentError("--adaptive-steps", "applies only with --adaptive epavi");
-  if (c.count("--problem") > 0)
-    throw ArgumentError("--problem",
-                        "applies only with --method, --composition or a black-box stepper");
   if (o.ld.empty() && c.count("--ld") == 0)
     throw ArgumentError("--ld",
                         "is required (or --method NAME:S, --tableau FILE, --composition BASE "
-                        "--coefficients LIST|NAME, --stepper-lib or --stepper-cmd)");
+                        "--coefficients LIST|NAME, --splitting SEQ, --stepper-lib or "
+                        "--stepper-cmd)");
   progress::set_stage("reading the expressions and deriving L_d's derivatives");
   const int dim = o.dim.empty() ? 0 : static_cast<int>(parse_integer("--dim", o.dim));
   if (!o.dim.empty() && (dim < 1 || dim > verify::kMaxDim))
