@@ -567,6 +567,23 @@ void measure(const CompositionSpec& p, const std::vector<double>& q0, const std:
 
   study.step = step;
   set_problem(study, problem, q0, p0);
+  if (!p.flows.empty()) {
+    // A splitting is explicit: its flows in double-double (coefficients rounded from their 120
+    // digits), for the order study where double cannot reach its asymptotic range. A drift
+    // moves q by c h p (T = |p|^2/2), a kick p by -c h grad V(q).
+    std::vector<std::pair<bool, dd_real>> flows;
+    for (const auto& f : p.flows) flows.emplace_back(f.kick, to_dd(f.c));
+    study.step_dd = [prob, flows](VecXdd& z, const dd_real& h) {
+      Vec<dd_real, N> q = z.template head<N>(), pp = z.template tail<N>();
+      for (const auto& [kick, c] : flows) {
+        if (kick)
+          pp -= (c * h) * prob.template gradient<dd_real>(q);
+        else
+          q += (c * h) * pp;
+      }
+      z << q, pp;
+    };
+  }
   study.expected = k.expected;
   study.substeps = double(c.size());
   study.symmetric_claimed = study.symmetric_claimed || symmetric;

@@ -76,6 +76,14 @@ struct MapMeasurement {
 /// composed L_d); for a Galerkin method the quadrature action at the solved polynomial.
 using GeneratingStep = std::function<double(Eigen::VectorXd& z, double h)>;
 
+/// x rounded to double-double: its double, then the double nearest the rest (a coefficient
+/// known to 120 digits, for a step in double-double).
+inline dd_real to_dd(const mpfr_real& x) {
+  const double hi = static_cast<double>(x);
+  const double lo = static_cast<double>(mpfr_real(x - hi));
+  return dd_real(hi, lo);
+}
+
 /// A state in double-double, and one step of a map in that arithmetic.
 using VecXdd = Eigen::Matrix<dd_real, Eigen::Dynamic, 1>;
 using StepDD = std::function<void(VecXdd& z, const dd_real& h)>;

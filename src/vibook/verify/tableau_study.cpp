@@ -82,13 +82,6 @@ std::vector<std::vector<mpfr_real>> matrix(const std::string& path, const json& 
   return m;
 }
 
-// The entry rounded to double-double: its double, then the double nearest the rest.
-dd_real to_dd(const mpfr_real& x) {
-  const double hi = static_cast<double>(x);
-  const double lo = static_cast<double>(mpfr_real(x - hi));
-  return dd_real(hi, lo);
-}
-
 std::vector<dd_real> to_dds(const std::vector<mpfr_real>& v) {
   std::vector<dd_real> r;
   for (const auto& x : v) r.push_back(to_dd(x));
