@@ -21,8 +21,9 @@ case_ odeint-m4-hh 0 "" 'order +(3\.9|4\.0)[0-9]* over .*: yes' \
   -- --stepper-lib "$LIB" --stepper-arg mclachlan4_m4/henon-heiles --problem henon-heiles \
   --expected-order 4
 case_ odeint-euler 0 "" 'order +(1\.0|0\.9)[0-9]* over .*: yes' \
+  '^energy +bounded over 100000 steps of h = 0\.05: no trend' \
   -- --stepper-lib "$LIB" --stepper-arg symplectic_euler/pendulum --problem pendulum \
-  --expected-order 1 --h 0.005
+  --expected-order 1
 case_ odeint-verlet 0 "" 'time-reversible .*: yes' \
   -- --stepper-lib "$LIB" --stepper-arg velocity_verlet/kepler --expected-order 2 --symmetric
 # odeint's header brief calls sb3a_mclachlan "sixth order": the measurement says 4

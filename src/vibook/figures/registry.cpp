@@ -54,8 +54,8 @@ const std::vector<Check>& registry() {
 }
 
 const std::vector<Check>& long_studies() {
-  static const std::vector<Check> all = {checks::sharma_eq29_long(),
-                                         checks::field_audit_galerkin()};
+  static const std::vector<Check> all = {checks::sharma_eq29_long(), checks::field_audit_galerkin(),
+                                         checks::field_audit_splitting()};
   return all;
 }
 

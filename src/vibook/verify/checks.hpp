@@ -17,6 +17,8 @@ using claims::Context;
 Check field_audit();  ///< field-audit: A-YOSHIDA4 … A-RUTH3, A-WRONG-* (field_audit.cpp)
 /// field-audit-odeint: A-ODEINT-*, A-WRONG-EXPLICIT-EULER, A-WRONG-CACHED (field_audit.cpp)
 Check field_audit_odeint();
+/// field-audit-splitting: A-SPLIT-*, A-WRONG-SPLIT-* (field_audit.cpp)
+Check field_audit_splitting();
 /// field-audit-galerkin: A-GAUSS1 … A-LOBATTO5 (long study, field_audit.cpp)
 Check field_audit_galerkin();
 

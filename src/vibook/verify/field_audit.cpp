@@ -21,6 +21,7 @@
 
 #include "vibook/core/precision.hpp"
 #include "vibook/integrators/composition.hpp"
+#include "vibook/integrators/splitting_sequence.hpp"
 #include "vibook/plot/gnuplot.hpp"
 #include "vibook/verify/black_box.hpp"
 #include "vibook/verify/checks.hpp"
@@ -99,6 +100,35 @@ AuditEntry wrong(const std::string& id, const std::string& title, const std::str
   a.coefficients = coefficients;
   a.expected = claimed;
   a.must_flag = std::move(must_flag);
+  return a;
+}
+
+// A splitting of the catalogue (splitting_sequence.hpp) at its documented order.
+AuditEntry published_splitting(const std::string& name) {
+  const comp::SplittingEntry* e = comp::find_splitting(name);
+  if (!e) throw std::logic_error("field audit: no splitting '" + name + "'");
+  const MpfrDigits digits(kCompositionDigits);
+  const bool palindrome =
+      comp::is_palindrome(comp::parse_sequence<mpfr_real>("flows", e->flows), 1e-60);
+  AuditEntry a;
+  a.splitting = name;
+  a.info = {"A-SPLIT-" + upper(name), "A", e->source,
+            fmt::format("{}, a splitting: order {}{}, symplectic", name, e->order,
+                        e->rkn ? " for T = |p|²/2 (Runge–Kutta–Nyström)" : "")};
+  a.statement = fmt::format(
+      "A splitting of H = T(p) + V(q) into the drift and kick flows, {}, with order {}{}; "
+      "symplectic as a product of exact flows{}.",
+      e->flows.size() > 120 ? "as published" : "flows " + e->flows, e->order,
+      e->rkn ? " when T = |p|²/2 (a Runge–Kutta–Nyström method; lower for two generic flows)" : "",
+      palindrome ? ", symmetric as a palindrome" : "");
+  return a;
+}
+
+AuditEntry wrong_splitting(const std::string& id, const std::string& title, const std::string& what,
+                           const std::string& flows, double claimed,
+                           std::vector<std::string> must_flag) {
+  AuditEntry a = wrong(id, title, what, "", "", claimed, std::move(must_flag));
+  a.splitting = flows;
   return a;
 }
 
@@ -255,6 +285,26 @@ Measured measure_row(const AuditEntry& a, const std::string& problem_name) {
                                       study);
     try {
       measure_method(spec, *problem, problem->q0, problem->p0, study, rep);
+    } catch (const std::exception& e) {
+      m.stopped = e.what();
+      m.failed.push_back("measurement");
+      return m;
+    }
+    return read(m, rep);
+  }
+  if (!a.splitting.empty()) {
+    // As `vibook verify --splitting` measures it: the flows' conditions, then every phase of
+    // its equivalent composition of symplectic Euler (in double-double where double's slopes
+    // do not settle).
+    CompositionSpec spec = splitting_spec("--splitting", a.splitting);
+    if (a.expected) {
+      spec.expected = a.expected;
+      spec.expected_from = "the order the row claims";
+    }
+    if (!spec.typed.empty())
+      derive_composition_variational_order(spec, problem_name, SymbolicUse::automatic, study);
+    try {
+      measure_composition(spec, *problem, problem->q0, problem->p0, study, rep);
     } catch (const std::exception& e) {
       m.stopped = e.what();
       m.failed.push_back("measurement");
@@ -454,6 +504,7 @@ claims::ClaimResult judge_audit_entry(const AuditEntry& a) {
                   "--stepper-lib vibook_odeint_steppers.so --stepper-arg {}/PROBLEM "
                   "--expected-order {:g}{}",
                   a.stepper, ms[0].expected, a.symmetric_claimed ? " --symmetric" : "")
+        : !a.splitting.empty() ? "--splitting " + a.splitting
         : a.method.empty()
             ? fmt::format("--composition {} --coefficients {}", a.base, a.coefficients)
             : "--method " + a.method;
@@ -519,9 +570,10 @@ namespace {
 
 // The check that measures a row.
 std::string check_of(const AuditEntry& a) {
-  return !a.method.empty()    ? "field-audit-galerkin"
-         : !a.stepper.empty() ? "field-audit-odeint"
-                              : "field-audit";
+  return !a.method.empty()      ? "field-audit-galerkin"
+         : !a.stepper.empty()   ? "field-audit-odeint"
+         : !a.splitting.empty() ? "field-audit-splitting"
+                                : "field-audit";
 }
 
 std::vector<std::string> ids(const std::string& check) {
@@ -632,6 +684,39 @@ const std::vector<AuditEntry>& audit_entries() {
       a.must_flag = {"order", "symplectic"};
       r.push_back(a);
     }
+    // The splittings of the catalogue with a documented order above 2, and three wrong ones.
+    for (const char* name : {"forest-ruth", "ruth-3", "mclachlan-atela-4", "mclachlan-atela-5"})
+      r.push_back(published_splitting(name));
+    {
+      const std::string t = "(2-2^(1/3))", u = "(2+2^(1/3))";
+      r.push_back(wrong_splitting(
+          "A-WRONG-SPLIT-MOVED", "Forest–Ruth with its last half drift moved to the front: flagged",
+          "Forest and Ruth's seven flows with the last half drift moved to the front, the first "
+          "drift whole: the step structure of a code that merges the half drifts of consecutive "
+          "steps without the half drifts that begin and end the run (not a palindrome).",
+          fmt::format("drift:1/{0},kick:1/{0},drift:(1-2^(1/3))/(2*{0}),kick:-2^(1/3)/{0},"
+                      "drift:(1-2^(1/3))/(2*{0}),kick:1/{0}",
+                      t),
+          4, {"order conditions", "order"}));
+      r.push_back(wrong_splitting(
+          "A-WRONG-SPLIT-THETA", "Forest–Ruth with the sign inside θ flipped: flagged",
+          "Forest and Ruth's method with θ = 1/(2+2^(1/3)) for 1/(2-2^(1/3)): still a consistent "
+          "palindrome, symmetric and symplectic, but of order 2.",
+          fmt::format("drift:1/(2*{0}),kick:1/{0},drift:(1+2^(1/3))/(2*{0}),kick:2^(1/3)/{0},"
+                      "drift:(1+2^(1/3))/(2*{0}),kick:1/{0},drift:1/(2*{0})",
+                      u),
+          4, {"order conditions", "order"}));
+      r.push_back(wrong_splitting(
+          "A-WRONG-SPLIT-DRIFT-FIRST",
+          "McLachlan–Atela's fourth-order RKN method stepped drift first: flagged",
+          "McLachlan and Atela's fourth-order Runge–Kutta–Nyström splitting with each of its "
+          "kick–drift pairs applied drift first: the same coefficients, the two flows of every "
+          "pair in the other order.",
+          "drift:0.5153528374311229364,kick:0.1344961992774310892,drift:-0.085782019412973646,"
+          "kick:-0.2248198030794208058,drift:0.4415830236164665242,kick:0.7563200005156682911,"
+          "drift:0.1288461583653841854,kick:0.3340036032863214255",
+          4, {"order conditions", "order"}));
+    }
     for (int s = 1; s <= 4; ++s) r.push_back(galerkin("gauss", s));
     for (int s = 2; s <= 5; ++s) r.push_back(galerkin("lobatto", s));
     return r;
@@ -658,6 +743,14 @@ Check field_audit_odeint() {
           "Kepler and Hénon–Heiles",
           false, verify::ids("field-audit-odeint"),
           [](const Context&) { return verify::run_rows("field-audit-odeint"); }};
+}
+
+Check field_audit_splitting() {
+  return {"field-audit-splitting",
+          "The field audit: splittings of the catalogue (drift and kick flows) and three wrong "
+          "ones, on Kepler and Hénon–Heiles (long study: about a minute)",
+          false, verify::ids("field-audit-splitting"),
+          [](const Context&) { return verify::run_rows("field-audit-splitting"); }};
 }
 
 Check field_audit_galerkin() {

@@ -24,6 +24,9 @@ struct AuditEntry {
   std::string method;        ///< a Galerkin method "gauss:S" or "lobatto:S" (then base is empty)
   std::string base;          ///< a composition's base method (composition_bases())
   std::string coefficients;  ///< a catalogue name or an exact list, as `--coefficients` takes it
+  /// A splitting (`--splitting`): a catalogue name or its flows "drift:c1,kick:d1,...", or
+  /// empty. Then base and coefficients are empty.
+  std::string splitting;
   /// A Boost.Odeint stepper of examples/black_box/odeint_steppers.cpp, reached through the C
   /// ABI (its METHOD; the module gets METHOD/PROBLEM), or empty.
   std::string stepper;
@@ -41,8 +44,8 @@ struct AuditEntry {
 };
 
 /// The rows, in the book's order: the catalogue's compositions, the wrong ones, Boost.Odeint's
-/// steppers through the C ABI (with two wrong ones), then the Galerkin methods (measured by the
-/// long study field-audit-galerkin).
+/// steppers through the C ABI (with two wrong ones), the splittings of the catalogue (with three
+/// wrong ones), then the Galerkin methods (measured by the long study field-audit-galerkin).
 const std::vector<AuditEntry>& audit_entries();
 
 /// The two problems of the audit.
