@@ -3,9 +3,11 @@
 // Lagrangian), the interior control points eliminated order by order in h.
 #include "vibook/verify/method_symbolic.hpp"
 
+#include <algorithm>
 #include <cctype>
 #include <cmath>
 #include <functional>
+#include <limits>
 #include <memory>
 #include <mutex>
 #include <optional>
@@ -602,6 +604,52 @@ int composition_variational_order(const std::string& base,
   }
   const auto vo = engine.variational_order(modified::exact_rationals(L(x, v)));
   return zero_below ? order_above(vo.defect, *zero_below) : vo.order;
+}
+
+// --- Shen & Sun 2025, Theorem 10, on an RKN tableau --------------------------------------------
+
+NystromTheorem10 nystrom_theorem10(const std::vector<mpfr_real>& c,
+                                   const std::vector<std::vector<mpfr_real>>& abar,
+                                   const std::vector<mpfr_real>& bbar,
+                                   const std::vector<mpfr_real>& b) {
+  using GiNaC::numeric;
+  std::lock_guard<std::mutex> lock(modified::ginac_mutex());
+  const std::size_t s = b.size();
+  modified::NystromTableau tab;
+  for (std::size_t i = 0; i < s; ++i) {
+    tab.c.push_back(rational_of(c[i], kCompositionDigits));
+    tab.bbar.push_back(rational_of(bbar[i], kCompositionDigits));
+    tab.bhat.push_back(rational_of(b[i], kCompositionDigits));
+    tab.abar.emplace_back();
+    for (std::size_t j = 0; j < s; ++j)
+      tab.abar.back().push_back(rational_of(abar[i][j], kCompositionDigits));
+  }
+  auto num = [](const modified::ex& e) { return GiNaC::ex_to<numeric>(e); };
+  numeric alpha = -1, sum1 = 1, sum2 = 1, bsum = 0;
+  for (std::size_t i = 0; i < s; ++i) {
+    const numeric ci = num(tab.c[i]), bi = num(tab.bhat[i]), bbi = num(tab.bbar[i]);
+    alpha += bi * ci + bbi;
+    sum1 += bi * ci * ci + 2 * (bbi - bi) * ci - bbi;
+    sum2 += 2 * bbi * ci - bi * ci - bbi;
+    for (std::size_t j = 0; j < s; ++j)
+      sum2 += 2 * bi * (num(tab.abar[i][j]) - ci * num(tab.bbar[j]));
+    bsum += bi;
+  }
+  const numeric beta1 = numeric(-1, 12) + sum1 / 2, beta2 = numeric(-1, 12) + sum2 / 2;
+  auto J = std::make_shared<modified::JetSpace>(1);
+  const int fam = J->add_family("f", "f");
+  const auto E = modified::nystrom_modified_equation(J, tab, 2);
+  const modified::ex xdot = J->x(1, 0), f = J->derivative(fam, {}), f1 = J->derivative(fam, {0}),
+                     f11 = J->derivative(fam, {0, 0});
+  NystromTheorem10 r;
+  r.alpha = alpha.to_double();
+  r.beta1 = beta1.to_double();
+  r.beta2 = beta2.to_double();
+  r.weights_residual = std::abs((bsum - 1).to_double());
+  r.h1_difference = largest_coefficient(E[1][0] - alpha * f1 * xdot).to_double();
+  r.h2_difference =
+      largest_coefficient(E[2][0] - (beta1 * f11 * xdot * xdot + beta2 * f1 * f)).to_double();
+  return r;
 }
 
 }  // namespace vibook::verify

@@ -66,6 +66,28 @@ int composition_variational_order(const std::string& base,
                                   const std::string& problem, int K,
                                   std::optional<GiNaC::numeric> zero_below);
 
+/// Shen & Sun 2025, Theorem 10, on a Runge–Kutta–Nyström tableau (c, ā, b̄ and the velocity
+/// weights b, their b̂): the first two coefficients of the modified equation
+/// ẍ = f + h f^[1] + h² f^[2] + …, f^[1] = α f'ẋ and f^[2] = β₁ f''⟨ẋ,ẋ⟩ + β₂ f'f, with
+///   α  = −1 + Σ_i (b_i c_i + b̄_i),
+///   β₁ = −1/12 + ½ [1 + Σ_i (b_i c_i² + 2(b̄_i − b_i) c_i − b̄_i)],
+///   β₂ = −1/12 + ½ [1 + Σ_i (2 b̄_i c_i − b_i c_i − b̄_i) + 2 Σ_i Σ_j b_i (ā_ij − c_i b̄_j)],
+/// as the theorem prints them with the weight b_i of the last sum restored (the ledger's
+/// SS-ERR-L421); the theorem assumes Σ b_i = 1. Each is computed exactly on the rationals of
+/// the entries' 120 digits, and compared with the modified equation the engine derives for the
+/// same tableau on a generic force in one degree of freedom (modified::nystrom_modified_equation).
+struct NystromTheorem10 {
+  double alpha = 0, beta1 = 0, beta2 = 0;
+  double weights_residual = 0;  ///< |Σ b_i − 1|
+  /// The largest coefficient of (engine − theorem) in the h and h² terms (0: they agree
+  /// exactly, as every number is a rational).
+  double h1_difference = 0, h2_difference = 0;
+};
+NystromTheorem10 nystrom_theorem10(const std::vector<mpfr_real>& c,
+                                   const std::vector<std::vector<mpfr_real>>& abar,
+                                   const std::vector<mpfr_real>& bbar,
+                                   const std::vector<mpfr_real>& b);
+
 /// A discrete Lagrangian L_d(q0, q1, h) on the engine's symbols (positions as vectors of
 /// expressions).
 using SymbolicStageDl = std::function<modified::ex(

@@ -3,8 +3,10 @@
 // threshold below which a term of L_d − L_d^E counts as zero.
 #include <doctest/doctest.h>
 
+#include <cmath>
 #include <optional>
 
+#include "vibook/core/precision.hpp"
 #include "vibook/verify/method_symbolic.hpp"
 
 TEST_CASE(
@@ -24,4 +26,39 @@ TEST_CASE(
   wrong[2].first += delta;
   wrong[1].first -= 2 * delta;
   CHECK(composition_variational_order("sv", wrong, "pendulum", 4, composition_zero_below()) == 2);
+}
+
+TEST_CASE(
+    "Shen & Sun's Theorem 10 on an RKN tableau: velocity Verlet and RKN4 agree with the engine, "
+    "and a tableau outside the theorem's assumption does not") {
+  using namespace vibook;
+  using verify::nystrom_theorem10;
+  const vibook::MpfrDigits digits(120);
+  using R = mpfr_real;
+  // velocity Verlet: c = (0, 1), abar = [[0, 0], [1/2, 0]], bbar = (1/2, 0), b = (1/2, 1/2).
+  // Symmetric: no h term; f^[2] = -(f''<x',x'> + f'f)/12, the Stormer-Verlet modified equation.
+  const auto vv = nystrom_theorem10({R(0), R(1)}, {{R(0), R(0)}, {R("0.5"), R(0)}},
+                                    {R("0.5"), R(0)}, {R("0.5"), R("0.5")});
+  CHECK(vv.alpha == 0);
+  CHECK(std::abs(vv.beta1 + 1.0 / 12) <= 1e-15);
+  CHECK(std::abs(vv.beta2 + 1.0 / 12) <= 1e-15);
+  CHECK(vv.h1_difference == 0);
+  CHECK(vv.h2_difference == 0);
+  // The classical RKN4 (Hairer, Norsett & Wanner I, Table II.14.3): order 4, so no h or h^2
+  // term at all, by the theorem and by the engine.
+  const R sixth = R(1) / 6, third = R(1) / 3;
+  const auto rkn4 =
+      nystrom_theorem10({R(0), R("0.5"), R(1)},
+                        {{R(0), R(0), R(0)}, {R("0.125"), R(0), R(0)}, {R(0), R("0.5"), R(0)}},
+                        {sixth, third, R(0)}, {sixth, R(2) * third, sixth});
+  CHECK(std::abs(rkn4.alpha) <= 1e-100);
+  CHECK(std::abs(rkn4.beta1) <= 1e-100);
+  CHECK(std::abs(rkn4.beta2) <= 1e-100);
+  CHECK(rkn4.h1_difference <= 1e-100);
+  CHECK(rkn4.h2_difference <= 1e-100);
+  // Explicit Euler-Nystrom with its velocity weight doubled (sum b = 2): the theorem assumes
+  // sum b = 1, and the comparison with the engine must see it.
+  const auto bad = nystrom_theorem10({R(0)}, {{R(0)}}, {R(0)}, {R(2)});
+  CHECK(bad.weights_residual == 1.0);
+  CHECK(bad.h1_difference + bad.h2_difference > 1e-3);
 }

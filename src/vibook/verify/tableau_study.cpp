@@ -3,6 +3,7 @@
 // integrators/prk.hpp on the problem, and the measurements of map_study.hpp. `vibook verify
 // --tableau` prints it.
 #include "vibook/verify/tableau_study.hpp"
+#include "vibook/verify/method_symbolic.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -122,6 +123,7 @@ void read_rkn(const std::string& path, const json& j, std::size_t s, TableauSpec
   };
   t.rkn_conditions = oc(kConditionTol);
   t.rkn_visible = oc(1e-8);
+  t.rkn_exact = r;
   t.rkn_tableau.c = to_doubles(r.c);
   t.rkn_tableau.bbar = to_doubles(r.bbar);
   t.rkn_tableau.b = to_doubles(r.b);
@@ -312,6 +314,42 @@ void measure_rkn(const TableauSpec& spec, int N, const StudySystem& system, MapS
   rep.js["order_conditions"]["trees"] = "Nystrom trees of order up to " +
                                         std::to_string(kRknConditionsOrder + 1) +
                                         " (HNW I, Sec. II.14)";
+  // Shen & Sun's Theorem 10 on this tableau, beside the engine's modified equation (reported).
+  {
+    const RknTableauT<mpfr_real>& x = spec.rkn_exact;
+    const NystromTheorem10 th = nystrom_theorem10(x.c, x.abar, x.bbar, x.b);
+    // Every number is the rational of an entry's 120 digits: the theorem and the engine agree
+    // to that rounding (1e-100 leaves twenty digits of room), and a wrong formula differs by a
+    // polynomial in the entries, far above it.
+    constexpr double kAgree = 1e-100;
+    // A coefficient at the entries' rounding is 0 (to 1e-100).
+    auto coefficient = [&](double x) {
+      return std::abs(x) <= kAgree ? std::string("0") : fmt::format("{:.10g}", x);
+    };
+    const bool same = th.h1_difference <= kAgree && th.h2_difference <= kAgree;
+    rep.line("modified equation",
+             fmt::format("Shen & Sun, Theorem 10 (the weight b_i of its last sum restored, "
+                         "erratum SS-ERR-L421): f^[1] = a f' x', f^[2] = b1 f''<x',x'> + b2 f' f "
+                         "with a = {}, b1 = {}, b2 = {}",
+                         coefficient(th.alpha), coefficient(th.beta1), coefficient(th.beta2)));
+    rep.line("", fmt::format("the engine's modified equation of this tableau (one degree of "
+                             "freedom, a generic force f), h and h^2 terms: {}{} (reported only)",
+                             same ? fmt::format("the same to {:.0e}", kAgree)
+                                  : fmt::format("DIFFERENT by {:.1e} (h) and {:.1e} (h^2)",
+                                                th.h1_difference, th.h2_difference),
+                             th.weights_residual > kAgree
+                                 ? fmt::format("; the theorem assumes sum b_i = 1, here |sum b_i - "
+                                               "1| = {:.1e}",
+                                               th.weights_residual)
+                                 : std::string()));
+    rep.js["theorem10"] = {{"alpha", th.alpha},
+                           {"beta1", th.beta1},
+                           {"beta2", th.beta2},
+                           {"h1_difference", th.h1_difference},
+                           {"h2_difference", th.h2_difference},
+                           {"weights_residual", th.weights_residual},
+                           {"agrees_with_engine", same}};
+  }
   rep.line("expected order", fmt::format("{:g} ({})", spec.expected, spec.expected_from));
   rep.line("problem", system.line);
   rep.js["tableau"] = {

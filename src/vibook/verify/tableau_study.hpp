@@ -69,6 +69,7 @@ struct TableauSpec {
   RknTableauT<dd_real> rkn_tableau_dd;
   composition::OrderConditions rkn_conditions;  ///< by Nyström trees, at 1e-12
   composition::OrderConditions rkn_visible;     ///< the same at 1e-8
+  RknTableauT<mpfr_real> rkn_exact;             ///< the entries at 120 digits (Theorem 10)
 };
 
 /// The orders up to which an RKN tableau's conditions are evaluated (trees of order up to 11).
