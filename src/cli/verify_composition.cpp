@@ -127,15 +127,8 @@ int run_composition(const CompositionOptions& o) {
     check_coefficients(o, spec);
     return run_composition_ld(o, std::move(spec));
   }
-  for (const auto& [opt, text] : {std::pair{"--ld", &o.ld},
-                                  {"--potential", &o.potential},
-                                  {"--lagrangian", &o.lagrangian},
-                                  {"--hamiltonian", &o.hamiltonian},
-                                  {"--dim", &o.dim}})
-    if (!text->empty())
-      throw ArgumentError(opt,
-                          "applies to --composition ld only (the composition of the --ld "
-                          "typed); the other bases run on --problem");
+  // (--ld, --potential, --lagrangian, --hamiltonian and --dim with another base are refused by
+  // the route table of verify.cpp.)
   Plan p = check(o);
   if (o.splitting.empty() || !p.spec.typed.empty())
     verify::derive_composition_variational_order(p.spec, p.problem->name, p.symbolic, p.study);

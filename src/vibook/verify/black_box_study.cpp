@@ -15,6 +15,7 @@
 
 #include "vibook/core/errors.hpp"
 #include "vibook/verify/line_protocol.hpp"
+#include "vibook/verify/typed_system.hpp"
 
 namespace vibook::verify {
 
@@ -212,20 +213,8 @@ void work_precision(const MapStudy& s, const TypedDiscreteLagrangian& sys, bool 
 
 void black_box_work_precision(const MapStudy& s, const TypedDiscreteLagrangian& sys, bool separable,
                               bool timings, MapMeasurement& rep) {
-  switch (sys.dim()) {
-    case 1:
-      return work_precision<1>(s, sys, separable, timings, rep);
-    case 2:
-      return work_precision<2>(s, sys, separable, timings, rep);
-    case 3:
-      return work_precision<3>(s, sys, separable, timings, rep);
-    case 4:
-      return work_precision<4>(s, sys, separable, timings, rep);
-    case 5:
-      return work_precision<5>(s, sys, separable, timings, rep);
-    default:
-      return work_precision<6>(s, sys, separable, timings, rep);
-  }
+  with_dim(sys.dim(),
+           [&](auto n) { work_precision<decltype(n)::value>(s, sys, separable, timings, rep); });
 }
 
 }  // namespace vibook::verify

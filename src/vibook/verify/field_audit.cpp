@@ -292,31 +292,18 @@ Measured measure_row(const AuditEntry& a, const std::string& problem_name) {
     }
     return read(m, rep);
   }
-  if (!a.splitting.empty()) {
-    // As `vibook verify --splitting` measures it: the flows' conditions, then every phase of
-    // its equivalent composition of symplectic Euler (in double-double where double's slopes
-    // do not settle).
-    CompositionSpec spec = splitting_spec("--splitting", a.splitting);
-    if (a.expected) {
-      spec.expected = a.expected;
-      spec.expected_from = "the order the row claims";
-    }
-    if (!spec.typed.empty())
-      derive_composition_variational_order(spec, problem_name, SymbolicUse::automatic, study);
-    try {
-      measure_composition(spec, *problem, problem->q0, problem->p0, study, rep);
-    } catch (const std::exception& e) {
-      m.stopped = e.what();
-      m.failed.push_back("measurement");
-      return m;
-    }
-    return read(m, rep);
-  }
+  // A composition, or a splitting as `vibook verify --splitting` measures it: the flows'
+  // conditions, then every phase of its equivalent composition of symplectic Euler (in
+  // double-double where double's slopes do not settle).
   CompositionSpec spec;
-  spec.base = &base_named(a.base);
-  spec.coefficients = a.coefficients;
-  spec.entry = comp::find_entry(a.coefficients);
-  if (!spec.entry) {
+  if (!a.splitting.empty()) {
+    spec = splitting_spec("--splitting", a.splitting);
+  } else {
+    spec.base = &base_named(a.base);
+    spec.coefficients = a.coefficients;
+    spec.entry = comp::find_entry(a.coefficients);
+  }
+  if (a.splitting.empty() && !spec.entry) {
     const MpfrDigits digits(kCompositionDigits);
     std::string item;
     for (std::size_t i = 0; i <= a.coefficients.size(); ++i) {
@@ -332,7 +319,8 @@ Measured measure_row(const AuditEntry& a, const std::string& problem_name) {
     spec.expected = a.expected;
     spec.expected_from = "the order the row claims";
   }
-  derive_composition_variational_order(spec, problem_name, SymbolicUse::automatic, study);
+  if (a.splitting.empty() || !spec.typed.empty())
+    derive_composition_variational_order(spec, problem_name, SymbolicUse::automatic, study);
   try {
     measure_composition(spec, *problem, problem->q0, problem->p0, study, rep);
   } catch (const std::exception& e) {

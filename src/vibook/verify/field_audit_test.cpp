@@ -11,6 +11,19 @@
 
 using namespace vibook;
 
+namespace {
+
+// The audit's row with this ID (the test fails when there is none).
+verify::AuditEntry find(const std::string& id) {
+  const auto& entries = verify::audit_entries();
+  for (const auto& a : entries)
+    if (a.info.id == id) return a;
+  FAIL("no audit entry " << id);
+  return entries.front();
+}
+
+}  // namespace
+
 TEST_CASE("field audit: every published composition passes, every wrong one is flagged") {
   std::vector<claims::ClaimResult> results;
   for (const char* id : {"field-audit", "field-audit-odeint"}) {
@@ -57,13 +70,6 @@ TEST_CASE("field audit: every published composition passes, every wrong one is f
 TEST_CASE(
     "field audit: the judgement fails a wrong method presented as published, and a correct "
     "method presented as wrong") {
-  const auto& entries = verify::audit_entries();
-  auto find = [&](const std::string& id) {
-    for (const auto& a : entries)
-      if (a.info.id == id) return a;
-    FAIL("no audit entry " << id);
-    return entries.front();
-  };
   // The perturbed sixth-order method held to order 6 as if it were published: not reproduced,
   // and the headline names the order conditions.
   verify::AuditEntry digit = find("A-WRONG-DIGIT");
@@ -108,13 +114,6 @@ TEST_CASE(
   // The splitting rows are a long study (field-audit-splitting); Forest-Ruth and the variant
   // with the sign inside theta flipped have coefficients with radicals, which the engine does not
   // expand, so they are judged here in a fraction of a second, on both problems.
-  const auto& entries = verify::audit_entries();
-  auto find = [&](const std::string& id) {
-    for (const auto& a : entries)
-      if (a.info.id == id) return a;
-    FAIL("no audit entry " << id);
-    return entries.front();
-  };
   const verify::AuditEntry fr = find("A-SPLIT-FOREST-RUTH");
   const auto r = verify::judge_audit_entry(fr);
   INFO(r.note);

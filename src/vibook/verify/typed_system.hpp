@@ -6,6 +6,7 @@
 #pragma once
 
 #include <string>
+#include <type_traits>
 #include <vector>
 
 #include <Eigen/Dense>
@@ -16,6 +17,27 @@
 #include "vibook/verify/reference.hpp"
 
 namespace vibook::verify {
+
+/// f(std::integral_constant<int, N>{}) for N = n, 1 ≤ n ≤ kMaxDim (a larger n: kMaxDim): the
+/// one dispatch from a run-time dimension to the code compiled for it.
+template <class F>
+decltype(auto) with_dim(int n, F&& f) {
+  static_assert(kMaxDim == 6, "with_dim lists the dimensions 1..kMaxDim");
+  switch (n) {
+    case 1:
+      return f(std::integral_constant<int, 1>{});
+    case 2:
+      return f(std::integral_constant<int, 2>{});
+    case 3:
+      return f(std::integral_constant<int, 3>{});
+    case 4:
+      return f(std::integral_constant<int, 4>{});
+    case 5:
+      return f(std::integral_constant<int, 5>{});
+    default:
+      return f(std::integral_constant<int, 6>{});
+  }
+}
 
 /// The typed Lagrangian of `sys` (`--lagrangian`, in q and v) at w = (q, v): its value, gradient
 /// and Hessian in the 2N variables, by nested forward AutoDiff in T on the expression tree.

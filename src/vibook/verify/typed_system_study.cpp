@@ -32,20 +32,7 @@ void set_potential_system(MapStudy& s, const verify::TypedDiscreteLagrangian& sy
 
 void set_typed_system(MapStudy& s, const TypedDiscreteLagrangian& sys,
                       const std::vector<double>& q0, const std::vector<double>& p0) {
-  switch (sys.dim()) {
-    case 1:
-      return set_potential_system<1>(s, sys, q0, p0);
-    case 2:
-      return set_potential_system<2>(s, sys, q0, p0);
-    case 3:
-      return set_potential_system<3>(s, sys, q0, p0);
-    case 4:
-      return set_potential_system<4>(s, sys, q0, p0);
-    case 5:
-      return set_potential_system<5>(s, sys, q0, p0);
-    default:
-      return set_potential_system<6>(s, sys, q0, p0);
-  }
+  with_dim(sys.dim(), [&](auto n) { set_potential_system<decltype(n)::value>(s, sys, q0, p0); });
 }
 
 std::string set_typed_potential(MapStudy& s, const verify::TypedDiscreteLagrangian& sys,
