@@ -265,6 +265,12 @@ case_ mclachlan-atela-5-kepler 0 "" 'order 5 by the conditions' \
   'order +(4\.8|4\.9|5\.[01])[0-9]* over .*: yes' \
   'runs in double-double \(in double the local slopes did not settle\)' \
   -- --splitting mclachlan-atela-5 --problem kepler --symbolic never
+# The same on Kepler typed as a potential (the flows in double-double on the typed system's
+# field): the same order from the same points, 4.908.
+case_ mclachlan-atela-5-typed-kepler 0 "" '^order +4\.908 over 15 step sizes' \
+  'runs in double-double \(in double the local slopes did not settle\)' \
+  -- --splitting mclachlan-atela-5 --potential '-1/sqrt(x^2+y^2)' --q0 0.5,0 \
+  --p0 0,1.7320508075688772 --symbolic never
 # ...and the rerun in double-double does not rescue a wrong method: 1e-11 moved from the third
 # kick to the first (still consistent, order 1 by the conditions) leaves a floor near 1e-13 there,
 # the slopes do not settle, and the order fails with the conditions.
