@@ -71,6 +71,67 @@ std::string str(const numeric& n) {
 
 std::string latex(const ex& e) { return modified::canonical_string(e, modified::Format::latex); }
 
+// Our side of a comparison, for the reader: the expanded expression with its terms grouped by
+// their non-polynomial part (a power of a sum with an exponent that is not a positive integer,
+// a function), each group printed as that part times the sum of its polynomial cofactors,
+// factored over the rationals where that prints shorter. The groups are keyed by their
+// canonical text and every sum and product prints in canonical order, and a factorization is
+// unique up to the signs the printer fixes, so the text is the same in every run. Kept only
+// when it is shorter than the expanded form.
+std::string readable_latex(const ex& e) {
+  const ex x = GiNaC::expand(e);
+  const std::string expanded = latex(x);
+  if (!GiNaC::is_a<GiNaC::add>(x) || x.nops() > 400) return expanded;
+  auto polynomial_factor = [](const ex& f) {
+    if (GiNaC::is_a<GiNaC::numeric>(f) || GiNaC::is_a<GiNaC::symbol>(f)) return true;
+    return GiNaC::is_a<GiNaC::power>(f) && GiNaC::is_a<GiNaC::symbol>(f.op(0)) &&
+           GiNaC::is_a<GiNaC::numeric>(f.op(1)) &&
+           GiNaC::ex_to<GiNaC::numeric>(f.op(1)).is_pos_integer();
+  };
+  std::map<std::string, std::pair<ex, ex>> groups;  // key -> (non-polynomial part, cofactor)
+  for (std::size_t k = 0; k < x.nops(); ++k) {
+    const ex t = x.op(k);
+    ex poly = 1, rest = 1;
+    if (GiNaC::is_a<GiNaC::mul>(t)) {
+      for (std::size_t j = 0; j < t.nops(); ++j)
+        (polynomial_factor(t.op(j)) ? poly : rest) *= t.op(j);
+    } else {
+      (polynomial_factor(t) ? poly : rest) = t;
+    }
+    auto& g = groups[latex(rest)];
+    g.first = rest;
+    g.second += poly;
+  }
+  if (groups.size() == x.nops()) return expanded;  // nothing shared
+  ex grouped = 0;
+  for (const auto& [key, g] : groups) {
+    ex cofactor = g.second;
+    if (GiNaC::is_a<GiNaC::add>(cofactor) && cofactor.nops() <= 100) {
+      try {
+        // GiNaC returns each factor in a recursive form that follows the order the symbols were
+        // made in; expanded, each irreducible factor is one canonical polynomial.
+        auto expanded_factor = [](const ex& y) {
+          return GiNaC::is_a<GiNaC::power>(y) ? GiNaC::pow(GiNaC::expand(y.op(0)), y.op(1))
+                                              : GiNaC::expand(y);
+        };
+        const ex raw = GiNaC::factor(cofactor);
+        ex f = 1;
+        if (GiNaC::is_a<GiNaC::mul>(raw)) {
+          for (std::size_t j = 0; j < raw.nops(); ++j) f *= expanded_factor(raw.op(j));
+        } else {
+          f = expanded_factor(raw);
+        }
+        if (latex(f).size() < latex(cofactor).size()) cofactor = f;
+      } catch (const std::exception&) {
+        // not a polynomial GiNaC factors: the sum as it is
+      }
+    }
+    grouped += g.first * cofactor;
+  }
+  const std::string text = latex(grouped);
+  return text.size() < expanded.size() ? text : expanded;
+}
+
 // Where printed and ours differ, in a form a reader can take in: both sides when they are
 // short; else their difference when that is short; else both evaluated at one point (every
 // symbol a distinct small rational) when they are numbers there; else only their sizes.
@@ -530,7 +591,7 @@ claims::FormulaComparison compare(const Spec& spec, const std::vector<Case>& cas
     const Target& t = cases[0].target;
     std::vector<std::string> comps;
     if (t.series.empty()) {
-      for (const auto& e : t.exact) comps.push_back(latex(GiNaC::expand(e)));
+      for (const auto& e : t.exact) comps.push_back(readable_latex(e));
       out.through = "exactly";
     } else {
       const auto& J = cases[0].notation->jets();
