@@ -619,8 +619,18 @@ claims::FormulaComparison compare(const Spec& spec, const std::vector<Case>& cas
           out.ours = vn->vector_series(field);
         }
       }
-      for (const auto& c : series)
-        comps.push_back(modified::format_series(c, J.h(), modified::Format::latex));
+      // Each power of h as format_series prints it, its coefficient by readable_latex.
+      for (const auto& c : series) {
+        std::string text;
+        for (std::size_t k = 0; k < c.size(); ++k) {
+          if (c[k].is_zero()) continue;
+          if (!text.empty()) text += " + ";
+          if (k > 0) text += k == 1 ? std::string("h") : fmt::format("h^{{{}}}", k);
+          text += "\\Bigl(" + readable_latex(c[k]) + "\\Bigr)";
+        }
+        comps.push_back((text.empty() ? std::string("0") : text) +
+                        fmt::format(" + \\mathcal{{O}}(h^{{{}}})", c.size()));
+      }
     }
     if (out.ours.empty())
       out.ours = comps.size() == 1
