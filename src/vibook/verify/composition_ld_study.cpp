@@ -163,20 +163,9 @@ void measure_n(const TypedLdSystem& o, const TypedDiscreteLagrangian& dl, Compos
     // (q += c h p), then kicks (p -= c h grad V(q), from Hamilton's equations of the system);
     // its adjoint kicks, then drifts. Each stage's L_d is the typed one's (its value only).
     const Field<dd_real> field = study.field;
-    // The same flows in double-double (coefficients rounded from their 120 digits), for the
-    // order study where double's local slopes do not settle (map_study.cpp).
-    std::vector<std::pair<bool, dd_real>> flows;
-    for (const auto& f : spec.flows) flows.emplace_back(f.kick, to_dd(f.c));
-    study.step_dd = [field, flows](VecXdd& z, const dd_real& h) {
-      for (const auto& [is_kick, c] : flows) {
-        if (is_kick) {
-          const std::vector<dd_real> f = field(std::vector<dd_real>(z.data(), z.data() + 2 * N));
-          for (int i = 0; i < N; ++i) z(N + i) += c * h * f[static_cast<std::size_t>(N + i)];
-        } else {
-          for (int i = 0; i < N; ++i) z(i) += c * h * z(N + i);
-        }
-      }
-    };
+    // The same flows in double-double, for the order study where double's local slopes do
+    // not settle (map_study.cpp).
+    study.step_dd = splitting_step_dd(spec.flows, field, N);
     auto kick = [field](Eigen::VectorXd& z, double c) {
       std::vector<dd_real> x(2 * N);
       for (int i = 0; i < 2 * N; ++i) x[static_cast<std::size_t>(i)] = dd_real(z(i));

@@ -567,23 +567,8 @@ void measure(const CompositionSpec& p, const std::vector<double>& q0, const std:
 
   study.step = step;
   set_problem(study, problem, q0, p0);
-  if (!p.flows.empty()) {
-    // A splitting is explicit: its flows in double-double (coefficients rounded from their 120
-    // digits), for the order study where double cannot reach its asymptotic range. A drift
-    // moves q by c h p (T = |p|^2/2), a kick p by -c h grad V(q).
-    std::vector<std::pair<bool, dd_real>> flows;
-    for (const auto& f : p.flows) flows.emplace_back(f.kick, to_dd(f.c));
-    study.step_dd = [prob, flows](VecXdd& z, const dd_real& h) {
-      Vec<dd_real, N> q = z.template head<N>(), pp = z.template tail<N>();
-      for (const auto& [kick, c] : flows) {
-        if (kick)
-          pp -= (c * h) * prob.template gradient<dd_real>(q);
-        else
-          q += (c * h) * pp;
-      }
-      z << q, pp;
-    };
-  }
+  // A splitting is explicit: its flows in double-double too.
+  if (!p.flows.empty()) study.step_dd = splitting_step_dd(p.flows, study.field, N);
   study.expected = k.expected;
   study.substeps = double(c.size());
   study.symmetric_claimed = study.symmetric_claimed || symmetric;
@@ -633,6 +618,22 @@ void measure_composition(const CompositionSpec& spec, const TestProblem& problem
   if (problem.name == "henon-heiles")
     return measure(spec, q0, p0, problem, study, rep, HenonHeiles{});
   return measure(spec, q0, p0, problem, study, rep, Kepler{});
+}
+
+StepDD splitting_step_dd(const composition::Sequence<mpfr_real>& flows, Field<dd_real> field,
+                         int n) {
+  std::vector<std::pair<bool, dd_real>> dd;
+  for (const auto& f : flows) dd.emplace_back(f.kick, to_dd(f.c));
+  return [field = std::move(field), dd, n](VecXdd& z, const dd_real& h) {
+    for (const auto& [kick, c] : dd) {
+      if (kick) {
+        const std::vector<dd_real> f = field(std::vector<dd_real>(z.data(), z.data() + 2 * n));
+        for (int i = 0; i < n; ++i) z(n + i) += c * h * f[static_cast<std::size_t>(n + i)];
+      } else {
+        for (int i = 0; i < n; ++i) z(i) += c * h * z(n + i);
+      }
+    }
+  };
 }
 
 }  // namespace vibook::verify

@@ -17,6 +17,7 @@
 #include "vibook/integrators/composition.hpp"
 #include "vibook/integrators/splitting_sequence.hpp"
 #include "vibook/verify/map_study.hpp"
+#include "vibook/verify/reference.hpp"
 
 namespace vibook::verify {
 
@@ -54,6 +55,13 @@ struct CompositionSpec {
   /// Why the coefficients cannot be given to the symbolic engine exactly (empty when they can).
   std::string not_exact;
 };
+
+/// A splitting's flows as one step in double-double on the system whose Hamilton equations are
+/// `field` (in double-double, (q, p) stacked, `n` degrees of freedom, T = |p|²/2): a drift moves
+/// q by c h p, a kick p by c h times the field's p-part; the coefficients are rounded from their
+/// 120 digits (to_dd). For the order study where double cannot reach the asymptotic range.
+StepDD splitting_step_dd(const composition::Sequence<mpfr_real>& flows, Field<dd_real> field,
+                         int n);
 
 /// The spec of a splitting: `seq` is a catalogue name or flows "drift:c1,kick:d1,…"; the base
 /// is se and the stages its equivalent composition (exact ratios in `coefficients` when every
