@@ -88,7 +88,8 @@ void odeint_step(Stepper& s, const Force& force, double h, State& q, State& p) {
 
 extern "C" {
 
-int vibook_stepper_abi_version(void) { return VIBOOK_STEPPER_ABI_VERSION; }
+// Version 1: the systems here are autonomous, and version 2's time argument is not needed.
+int vibook_stepper_abi_version(void) { return 1; }
 
 void* vibook_stepper_create(int dof, const char* arg) {
   const std::string a = arg ? arg : "";

@@ -190,6 +190,18 @@ void set_study_options(StudyOptions& s, const VerifyOptions& o, const CLI::App& 
   s.symmetric = o.symmetric;
 }
 
+// The options of a route on a typed L_d and system (--composition, a time-dependent --ld).
+CompositionOptions typed_options(const VerifyOptions& o, const CLI::App& c) {
+  CompositionOptions co;
+  set_study_options(co, o, c);
+  co.ld = o.ld;
+  co.potential = o.potential;
+  co.lagrangian = o.lagrangian;
+  co.hamiltonian = o.hamiltonian;
+  co.dim = o.dim;
+  return co;
+}
+
 // --- the route table -----------------------------------------------------------------------
 // Each route of `vibook verify` is chosen by one option and takes the options every route
 // shares plus its own; any other option given is refused, naming it, before any work. Where an
@@ -231,8 +243,8 @@ const std::vector<std::pair<std::vector<const char*>, Route>>& routes() {
           "--potential)"}}}},
       {{"--stepper-lib", "--stepper-cmd"},
        {"a black-box stepper",
-        {"--stepper-lib", "--stepper-cmd", "--stepper-arg", "--stepper-timeout", "--problem",
-         "--hamiltonian", "--potential", "--dim"},
+        {"--stepper-lib", "--stepper-cmd", "--stepper-arg", "--stepper-timeout",
+         "--stepper-protocol", "--problem", "--hamiltonian", "--potential", "--dim"},
         {{"--symbolic", "the variational order of a black box is measured"}}}},
       {{"--composition"},
        {"--composition",
@@ -363,6 +375,8 @@ int run(const VerifyOptions& o, const CLI::App& c) {
     so.cmd = o.stepper_cmd;
     so.arg = o.stepper_arg;
     so.timeout = o.stepper_timeout;
+    so.protocol = o.stepper_protocol;
+    so.protocol_given = c.count("--stepper-protocol") > 0;
     so.hamiltonian = o.hamiltonian;
     so.potential = o.potential;
     so.dim = o.dim;
@@ -374,15 +388,9 @@ int run(const VerifyOptions& o, const CLI::App& c) {
   if (r.name != std::string("--ld")) {
     // A composition method (verify_composition.cpp); with base ld, of the --ld typed
     // (verify_composition_ld.cpp), on the system of --potential, --lagrangian or --hamiltonian.
-    CompositionOptions co;
-    set_study_options(co, o, c);
+    CompositionOptions co = typed_options(o, c);
     co.base = o.composition;
     co.coefficients = o.coefficients;
-    co.ld = o.ld;
-    co.potential = o.potential;
-    co.lagrangian = o.lagrangian;
-    co.hamiltonian = o.hamiltonian;
-    co.dim = o.dim;
     co.symbolic = o.symbolic;
     if (co.base == "ld" && c.count("--ld") == 0)
       throw ArgumentError("--ld", "is required with --composition ld");
@@ -402,8 +410,21 @@ int run(const VerifyOptions& o, const CLI::App& c) {
   std::unique_ptr<verify::TypedDiscreteLagrangian> dl;
   {
     std::lock_guard<std::mutex> lock(modified::ginac_mutex());
-    dl = std::make_unique<verify::TypedDiscreteLagrangian>(
-        verify::TypedTexts{o.ld, o.potential, o.lagrangian, o.hamiltonian, dim});
+    verify::TypedTexts texts{o.ld, o.potential, o.lagrangian, o.hamiltonian, dim};
+    texts.allow_time = true;
+    dl = std::make_unique<verify::TypedDiscreteLagrangian>(texts);
+  }
+  if (dl->time_dependent() || dl->ld_uses_t()) {
+    // A time-dependent system: the DEL step with the clock, in the map study; the phases of the
+    // autonomous --ld route that assume a conserved energy or an autonomous L_d are refused.
+    for (const char* opt :
+         {"--adaptive", "--adaptive-steps", "--modified-order", "--format", "--reference"})
+      if (c.count(opt) > 0)
+        throw ArgumentError(opt,
+                            "applies to an autonomous --ld only (the system here depends on "
+                            "t: the EpAVI conserves an energy it does not have, and the "
+                            "modified equation and the compiled tape are autonomous)");
+    return run_timed_ld(typed_options(o, c));
   }
   return run_typed(o, *dl, check(o, *dl));
 }
@@ -475,6 +496,10 @@ std::function<int()> add_verify_command(CLI::App& app) {
                 "--hamiltonian)");
   c->add_option("--stepper-arg", o->stepper_arg,
                 "with --stepper-lib: the text passed to vibook_stepper_create (e.g. which method)");
+  c->add_option("--stepper-protocol", o->stepper_protocol,
+                "with --stepper-cmd: the line protocol's version, 1 (default; requests 'H N q.. "
+                "p..') or 2 (requests 'T H N q.. p..', T the start time: needed for a "
+                "time-dependent system, t in --hamiltonian or --potential)");
   c->add_option("--stepper-timeout", o->stepper_timeout,
                 "with --stepper-cmd or --stepper-lib: seconds to wait for one answer (default "
                 "60)");

@@ -27,4 +27,9 @@ int run_composition(const CompositionOptions& o);
 /// parsed coefficients (its base is set there).
 int run_composition_ld(const CompositionOptions& o, verify::CompositionSpec spec);
 
+/// `vibook verify --ld` for a time-dependent system (t in a text): the DEL step of L_d(t, q0,
+/// q1, h) measured by the map study (verify::measure_timed_ld), the report printed; the options
+/// checked before any work (ArgumentError naming one).
+int run_timed_ld(const CompositionOptions& o);
+
 }  // namespace vibook::cli

@@ -64,4 +64,47 @@ int run_composition_ld(const CompositionOptions& t, verify::CompositionSpec spec
   return rep.finish(o);
 }
 
+int run_timed_ld(const CompositionOptions& o) {
+  if (!o.lagrangian.empty() && !o.hamiltonian.empty())
+    throw ArgumentError("--hamiltonian",
+                        "give the system once: --lagrangian or --hamiltonian, not both");
+  const std::string hamiltonian = !o.lagrangian.empty()   ? ""
+                                  : o.hamiltonian.empty() ? "p^2/2 + V(q)"
+                                                          : o.hamiltonian;
+  int dim = 0;
+  if (!o.dim.empty()) {
+    dim = static_cast<int>(parse_integer("--dim", o.dim));
+    if (dim < 1 || dim > 3)
+      throw ArgumentError("--dim", "must lie in 1..3 for a time-dependent --ld");
+  }
+  std::unique_ptr<verify::TypedDiscreteLagrangian> dl;
+  {
+    std::lock_guard<std::mutex> lock(modified::ginac_mutex());
+    verify::TypedTexts texts{o.ld, o.potential, o.lagrangian, hamiltonian, dim};
+    texts.allow_time = true;
+    dl = std::make_unique<verify::TypedDiscreteLagrangian>(texts);
+  }
+  if (dl->dim() > 3)
+    throw ArgumentError("--ld", fmt::format("is {}-dimensional; a time-dependent --ld runs in 1 to "
+                                            "3 dimensions",
+                                            dl->dim()));
+  if (!dl->time_dependent())
+    throw ArgumentError("--ld",
+                        "uses the time t, but the system (--potential, --lagrangian or "
+                        "--hamiltonian) does not: give the system's own time dependence");
+  std::vector<double> q0, p0;
+  MapStudy study;
+  check_typed_initial_state(o, dl->dim(), q0, p0, study);
+  check_study_options(o, study);
+  study.expected = parse_number("--expected-order", o.expected);
+  if (!(study.expected > 0 && study.expected <= verify::kMaxOrder))
+    throw ArgumentError("--expected-order",
+                        fmt::format("must lie in (0, {:g}]", verify::kMaxOrder));
+  if (o.json_given) check_output_path(o.json_out, "--json-out", true);
+  MapReport rep;
+  verify::measure_timed_ld(*dl, {o.ld, o.potential, o.lagrangian, o.hamiltonian, q0, p0}, study,
+                           rep);
+  return rep.finish(o);
+}
+
 }  // namespace vibook::cli

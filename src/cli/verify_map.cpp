@@ -13,12 +13,17 @@
 #include "verify_typed.hpp"
 #include "vibook/core/output_file.hpp"
 #include "vibook/modified/engine.hpp"
+#include "vibook/verify/constrained.hpp"
 #include "vibook/verify/report_page.hpp"
 
 namespace vibook::cli {
 
 const TestProblem& find_test_problem(const std::string& name) {
   if (const TestProblem* p = verify::find_problem(name)) return *p;
+  if (verify::find_constrained_problem(name))
+    throw ArgumentError("--problem", "'" + name +
+                                         "' has constraints: --method rattle steps it (the other "
+                                         "methods and routes are not constrained)");
   throw ArgumentError("--problem", "unknown problem '" +
                                        (name.empty() ? std::string("kepler") : name) +
                                        "' (kepler, pendulum or henon-heiles)");
@@ -33,7 +38,8 @@ namespace {
 std::unique_ptr<verify::TypedDiscreteLagrangian> check_typed_system(
     const char* option, const std::string& text, const std::string& lagrangian,
     const std::string& hamiltonian, const TypedPotentialOptions& t, const StudyOptions& o,
-    const char* route, std::vector<double>& q0, std::vector<double>& p0, MapStudy& s) {
+    const char* route, std::vector<double>& q0, std::vector<double>& p0, MapStudy& s,
+    bool allow_time) {
   if (text.empty()) throw ArgumentError(option, "is empty");
   if (!o.problem.empty())
     throw ArgumentError(option,
@@ -50,6 +56,7 @@ std::unique_ptr<verify::TypedDiscreteLagrangian> check_typed_system(
     std::lock_guard<std::mutex> lock(modified::ginac_mutex());
     verify::TypedTexts texts{"", t.potential, lagrangian, hamiltonian, dim};
     texts.system_only = true;
+    texts.allow_time = allow_time;
     sys = std::make_unique<verify::TypedDiscreteLagrangian>(texts);
   }
   if (sys->dim() > 3)
@@ -63,20 +70,24 @@ std::unique_ptr<verify::TypedDiscreteLagrangian> check_typed_system(
 
 std::unique_ptr<verify::TypedDiscreteLagrangian> check_typed_potential(
     const TypedPotentialOptions& t, const StudyOptions& o, const char* route,
-    std::vector<double>& q0, std::vector<double>& p0, MapStudy& s) {
-  return check_typed_system("--potential", t.potential, "", "p^2/2 + V(q)", t, o, route, q0, p0, s);
+    std::vector<double>& q0, std::vector<double>& p0, MapStudy& s, bool allow_time) {
+  return check_typed_system("--potential", t.potential, "", "p^2/2 + V(q)", t, o, route, q0, p0, s,
+                            allow_time);
 }
 
 std::unique_ptr<verify::TypedDiscreteLagrangian> check_typed_lagrangian(
     const TypedPotentialOptions& t, const StudyOptions& o, const char* route,
-    std::vector<double>& q0, std::vector<double>& p0, MapStudy& s) {
-  return check_typed_system("--lagrangian", t.lagrangian, t.lagrangian, "", t, o, route, q0, p0, s);
+    std::vector<double>& q0, std::vector<double>& p0, MapStudy& s, bool allow_time) {
+  return check_typed_system("--lagrangian", t.lagrangian, t.lagrangian, "", t, o, route, q0, p0, s,
+                            allow_time);
 }
 
 std::unique_ptr<verify::TypedDiscreteLagrangian> check_typed_hamiltonian(
     const TypedPotentialOptions& t, const std::string& hamiltonian, const StudyOptions& o,
-    const char* route, std::vector<double>& q0, std::vector<double>& p0, MapStudy& s) {
-  return check_typed_system("--hamiltonian", hamiltonian, "", hamiltonian, t, o, route, q0, p0, s);
+    const char* route, std::vector<double>& q0, std::vector<double>& p0, MapStudy& s,
+    bool allow_time) {
+  return check_typed_system("--hamiltonian", hamiltonian, "", hamiltonian, t, o, route, q0, p0, s,
+                            allow_time);
 }
 
 void MapReport::variational_order_not_derived(const std::string& reason) {

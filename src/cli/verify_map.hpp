@@ -141,9 +141,11 @@ void check_typed_initial_state(const Options& o, int n, std::vector<double>& q0,
 /// before any work: the typed system, whose Hamiltonian |p|²/2 + V(q) gives the reference and
 /// the energy, in 1 to 3 dimensions; then --q0, --p0 (default 0.1 each) and --t-end. An
 /// ArgumentError names --potential, --problem, --dim, --q0, --p0 or --t-end.
+/// `allow_time`: the route steps a time-dependent system (the time t in the texts); otherwise a
+/// text with t is refused by name.
 std::unique_ptr<verify::TypedDiscreteLagrangian> check_typed_potential(
     const TypedPotentialOptions& t, const StudyOptions& o, const char* route,
-    std::vector<double>& q0, std::vector<double>& p0, MapStudy& s);
+    std::vector<double>& q0, std::vector<double>& p0, MapStudy& s, bool allow_time = false);
 
 /// --lagrangian (with --potential for a V it calls, and --dim) of `vibook verify --method`,
 /// checked before any work: the typed L(q, v) in 1 to 3 dimensions, then --q0, --p0 (default
@@ -151,7 +153,7 @@ std::unique_ptr<verify::TypedDiscreteLagrangian> check_typed_potential(
 /// --lagrangian, --potential, --problem, --dim, --q0, --p0 or --t-end.
 std::unique_ptr<verify::TypedDiscreteLagrangian> check_typed_lagrangian(
     const TypedPotentialOptions& t, const StudyOptions& o, const char* route,
-    std::vector<double>& q0, std::vector<double>& p0, MapStudy& s);
+    std::vector<double>& q0, std::vector<double>& p0, MapStudy& s, bool allow_time = false);
 
 /// --hamiltonian `hamiltonian` (with --potential for a V it calls, and --dim) of a catalogue
 /// route, checked before any work: the typed H(q, p) in 1 to 3 dimensions, then --q0, --p0
@@ -159,6 +161,7 @@ std::unique_ptr<verify::TypedDiscreteLagrangian> check_typed_lagrangian(
 /// --dim, --q0, --p0 or --t-end.
 std::unique_ptr<verify::TypedDiscreteLagrangian> check_typed_hamiltonian(
     const TypedPotentialOptions& t, const std::string& hamiltonian, const StudyOptions& o,
-    const char* route, std::vector<double>& q0, std::vector<double>& p0, MapStudy& s);
+    const char* route, std::vector<double>& q0, std::vector<double>& p0, MapStudy& s,
+    bool allow_time = false);
 
 }  // namespace vibook::cli

@@ -5,6 +5,7 @@
 // Gauss, 2S − 2 for Lobatto) printed.
 #include "verify_method.hpp"
 
+#include <cmath>
 #include <memory>
 #include <string>
 #include <vector>
@@ -16,6 +17,7 @@
 #include "verify_map.hpp"
 #include "vibook/core/output_file.hpp"
 #include "vibook/modified/ginac_eigen.hpp"
+#include "vibook/verify/constrained.hpp"
 #include "vibook/verify/expression.hpp"
 #include "vibook/verify/method_study.hpp"
 #include "vibook/verify/method_symbolic.hpp"
@@ -35,16 +37,67 @@ struct Plan {
   std::vector<double> q0, p0;
   MapStudy study;  // the measurement settings
   verify::SymbolicUse symbolic = verify::SymbolicUse::automatic;
+  // --method rattle|shake: the constrained problem, and whether the momentum is projected
+  const verify::ConstrainedProblem* constrained = nullptr;
+  bool project_velocity = true;
 };
 
+// --method rattle (or its deliberately wrong variant shake) on a constrained test problem.
+Plan check_constrained(const MethodOptions& o) {
+  Plan p;
+  p.project_velocity = o.method == "rattle";
+  if (o.lagrangian_given || o.potential_given || !o.dim.empty())
+    throw ArgumentError(o.lagrangian_given  ? "--lagrangian"
+                        : o.potential_given ? "--potential"
+                                            : "--dim",
+                        "does not apply to --method " + o.method +
+                            ": it runs on a constrained test problem (--problem "
+                            "spherical-pendulum or double-pendulum)");
+  const std::string name = o.problem.empty() ? "spherical-pendulum" : o.problem;
+  p.constrained = verify::find_constrained_problem(name);
+  if (!p.constrained)
+    throw ArgumentError("--problem", "'" + name + "' has no constraints; --method " + o.method +
+                                         " runs on spherical-pendulum or double-pendulum");
+  const std::size_t n = p.constrained->q0.size();
+  auto vector_or = [&](const std::string& arg, const std::string& text,
+                       const std::vector<double>& dflt) {
+    std::vector<double> v = text.empty() ? dflt : parse_list(arg, text);
+    if (v.size() != n)
+      throw ArgumentError(
+          arg, fmt::format("has {} components; {} has {} coordinates", v.size(), name, n));
+    for (double x : v)
+      if (!std::isfinite(x)) throw ArgumentError(arg, "must be finite");
+    return v;
+  };
+  p.q0 = vector_or("--q0", o.q0, p.constrained->q0);
+  p.p0 = vector_or("--p0", o.p0, p.constrained->p0);
+  if (o.t_end_given) {
+    p.study.t_end = parse_number("--t-end", o.t_end);
+    if (!(p.study.t_end > 0) || p.study.t_end > 1e4)
+      throw ArgumentError("--t-end", "must lie in (0, 1e4]");
+  }
+  p.study.expected = 2;
+  if (o.expected_given) {
+    p.study.expected = parse_number("--expected-order", o.expected);
+    if (!(p.study.expected > 0 && p.study.expected <= verify::kMaxOrder))
+      throw ArgumentError("--expected-order",
+                          fmt::format("must lie in (0, {:g}]", verify::kMaxOrder));
+  }
+  check_study_options(o, p.study);
+  if (o.json_given) check_output_path(o.json_out, "--json-out", true);
+  return p;
+}
+
 Plan check(const MethodOptions& o) {
+  if (o.method == "rattle" || o.method == "shake") return check_constrained(o);
   Plan p;
   const auto colon = o.method.find(':');
   const std::string family = o.method.substr(0, colon);
   if (family != "gauss" && family != "lobatto")
     throw ArgumentError("--method", "unknown method '" + o.method + "' (gauss:S, S = 1.." +
                                         std::to_string(kMaxGauss) + ", or lobatto:S, S = 2.." +
-                                        std::to_string(kMaxLobatto) + ": S stages)");
+                                        std::to_string(kMaxLobatto) +
+                                        ": S stages; rattle on a constrained problem)");
   if (colon == std::string::npos)
     throw ArgumentError("--method",
                         "'" + o.method + "' needs the number of stages, e.g. " + family + ":3");
@@ -57,9 +110,9 @@ Plan check(const MethodOptions& o) {
   p.spec.stages = static_cast<int>(s);
   p.spec.rule = quadrature_rule(family, p.spec.stages);
   if (o.lagrangian_given) {
-    p.sys = check_typed_lagrangian(o, o, "--method", p.q0, p.p0, p.study);
+    p.sys = check_typed_lagrangian(o, o, "--method", p.q0, p.p0, p.study, true);
   } else if (o.potential_given) {
-    p.sys = check_typed_potential(o, o, "--method", p.q0, p.p0, p.study);
+    p.sys = check_typed_potential(o, o, "--method", p.q0, p.p0, p.study, true);
   } else {
     if (!o.dim.empty())
       throw ArgumentError("--dim", "applies to --method with --potential or --lagrangian only");
@@ -86,6 +139,10 @@ Plan check(const MethodOptions& o) {
 int run_method(const MethodOptions& o) {
   Plan p = check(o);
   MapReport rep;
+  if (p.constrained) {
+    verify::measure_constrained(*p.constrained, p.project_velocity, p.q0, p.p0, p.study, rep);
+    return rep.finish(o);
+  }
   const int n = static_cast<int>(p.q0.size());
   const modified::SymbolicLagrangian L = !p.sys   ? verify::test_problem_lagrangian(p.problem->name)
                                          : n == 1 ? verify::typed_lagrangian<1>(p.sys.get())

@@ -59,7 +59,7 @@ using verify::BlackBox;
 struct Plan {
   std::unique_ptr<verify::TypedDiscreteLagrangian> system;
   std::string hamiltonian, system_from;
-  int dim = 0;
+  int dim = 0, protocol = 1;
   std::vector<double> q0, p0;
   double expected = 0, timeout = 60;
   MapStudy study;  // the measurement settings (--t-end, --h-list, --h, --steps, …)
@@ -96,13 +96,31 @@ Plan check(const StepperOptions& o) {
     if (dim < 1 || dim > verify::kMaxDim)
       throw ArgumentError("--dim", fmt::format("must lie in 1..{}", verify::kMaxDim));
   }
+  if (o.protocol_given) {
+    if (!o.cmd_given)
+      throw ArgumentError("--stepper-protocol",
+                          "applies only to --stepper-cmd (a library speaks the C ABI)");
+    if (o.protocol != "1" && o.protocol != "2")
+      throw ArgumentError("--stepper-protocol", "must be 1 or 2, got '" + o.protocol + "'");
+    p.protocol = o.protocol == "2" ? 2 : 1;
+  }
   {
     std::lock_guard<std::mutex> lock(modified::ginac_mutex());
     verify::TypedTexts t{"", o.potential, "", p.hamiltonian, dim};
     t.system_only = true;
+    t.allow_time = true;
     p.system = std::make_unique<verify::TypedDiscreteLagrangian>(t);
   }
   p.dim = p.system->dim();
+  // A time-dependent system needs a stepper that is told the time (a library: checked when it
+  // is loaded, by its ABI version).
+  if (p.system->time_dependent()) {
+    if (o.cmd_given && p.protocol != 2)
+      throw ArgumentError("--stepper-protocol",
+                          "the system depends on t: line protocol 1 carries no time; a stepper "
+                          "that takes requests 'T H N q.. p..' is given with --stepper-protocol "
+                          "2");
+  }
   if (dq0.empty()) {
     dq0.assign(static_cast<std::size_t>(p.dim), 0.1);
     dp0.assign(static_cast<std::size_t>(p.dim), 0.1);
@@ -159,6 +177,7 @@ int run(const StepperOptions& o, const Plan& p) {
   // The black box, and a first step from the initial state: a stepper that cannot take it is
   // refused as an argument, before any measurement.
   std::unique_ptr<BlackBox> box;
+  int abi = 0;  // a library's ABI version
   if (o.lib_given) {
     // The library runs in a child process of its own (forked, the protocol of --stepper-cmd
     // inside): an abort() or a crash in it ends the child, never vibook, and it is held to
@@ -173,9 +192,17 @@ int run(const StepperOptions& o, const Plan& p) {
                                                        "can load, or one that crashed "
                                                        "while loading)"
                                                  : why);
+    if (p.system->time_dependent() && !host->takes_time())
+      throw ArgumentError("--stepper-lib",
+                          fmt::format("implements stepper ABI version {}, which has no time "
+                                      "argument, and the system depends on t: a library for a "
+                                      "time-dependent system implements version 2 "
+                                      "(vibook_stepper_step_t, vibook/verify/stepper_abi.h)",
+                                      host->abi_version()));
+    abi = host->abi_version();
     box = std::move(host);
   } else
-    box = std::make_unique<verify::LineProtocolStepper>(o.cmd, N, p.timeout);
+    box = std::make_unique<verify::LineProtocolStepper>(o.cmd, N, p.timeout, p.protocol);
   verify::check_first_step(*box, z0, p.study.h, N, o.lib_given ? "--stepper-lib" : "--stepper-cmd");
   MapStudy s = p.study;
   verify::set_black_box_map(s, *box, N);
@@ -188,11 +215,10 @@ int run(const StepperOptions& o, const Plan& p) {
   s.symmetric_note = " (reported only: --symmetric makes it part of the verdict)";
 
   if (o.lib_given)
-    rep.line("stepper",
-             fmt::format("library {} (vibook stepper ABI {}){}", o.lib, VIBOOK_STEPPER_ABI_VERSION,
-                         o.arg.empty() ? "" : ", --stepper-arg '" + o.arg + "'"));
+    rep.line("stepper", fmt::format("library {} (vibook stepper ABI {}){}", o.lib, abi,
+                                    o.arg.empty() ? "" : ", --stepper-arg '" + o.arg + "'"));
   else
-    rep.line("stepper", fmt::format("command '{}' (line protocol 1)", o.cmd));
+    rep.line("stepper", fmt::format("command '{}' (line protocol {})", o.cmd, p.protocol));
   rep.line("system", fmt::format("H = {} ({}), {} degree{} of freedom", p.hamiltonian,
                                  p.system_from, N, N == 1 ? "" : "s"));
   rep.line("initial state", fmt::format("q0 = {}, p0 = {}", vec_text(p.q0), vec_text(p.p0)));
@@ -201,8 +227,9 @@ int run(const StepperOptions& o, const Plan& p) {
                        {"library", o.lib_given ? json(o.lib) : json(nullptr)},
                        {"command", o.cmd_given ? json(o.cmd) : json(nullptr)},
                        {"arg", o.arg},
-                       {"abi_version", VIBOOK_STEPPER_ABI_VERSION},
+                       {"abi_version", o.lib_given ? json(abi) : json(nullptr)},
                        {"dof", N}};
+  if (p.protocol == 2) rep.js["stepper"]["line_protocol"] = 2;
   rep.js["system"] = {{"hamiltonian", p.hamiltonian},
                       {"from", p.system_from},
                       {"potential", o.potential},

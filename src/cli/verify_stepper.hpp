@@ -11,8 +11,8 @@ namespace vibook::cli {
 
 /// The options of a black-box verification, as typed; `given` flags say which the user set.
 struct StepperOptions : StudyOptions {
-  std::string lib, cmd, arg, timeout, hamiltonian, potential, dim;
-  bool lib_given = false, cmd_given = false;
+  std::string lib, cmd, arg, timeout, hamiltonian, potential, dim, protocol;
+  bool lib_given = false, cmd_given = false, protocol_given = false;
   bool timings = false;  ///< --timings: the seconds of each work-precision run
 };
 

@@ -124,7 +124,7 @@ arg lobatto-one --method --method lobatto:1
 arg stages-text --method --method gauss:two
 arg with-ld --ld --method gauss:2 --ld 'h*((q1-q0)^2/(2*h^2))' --potential x
 arg with-composition --composition --method gauss:2 --composition sv --coefficients yoshida4
-arg problem --problem --method gauss:2 --problem double-pendulum
+arg problem --problem --method gauss:2 --problem triple-pendulum
 arg q0 --q0 --method gauss:2 --q0 1
 arg typed-and-problem --potential --method gauss:2 --potential x^2 --problem pendulum
 arg typed-dim --dim --method gauss:2 --potential x^2 --dim 4
@@ -140,6 +140,23 @@ arg lagrangian-dim --dim --method gauss:2 --lagrangian 'v^2/2' --dim 4
 # dL/dv = q: not regular, refused before any work
 arg lagrangian-singular --lagrangian --method gauss:2 --lagrangian 'q*v - q^2/2'
 arg lagrangian-p0 --p0 --method gauss:2 --lagrangian 'v[1]^2/2+v[2]^2/2' --p0 1
+
+# #52: constraints. RATTLE on the spherical and the double pendulum (Cartesian coordinates):
+# order 2, both constraints kept to round-off, symplectic on the constraint manifold; without
+# its velocity projection (shake) the momentum leaves the hidden constraint and it fails there.
+case_ rattle-spherical 0 "" 'order +(1\.9|2\.0)[0-9]* over .*: yes' \
+  '^symplectic +on the constraint manifold.*: yes' '^position constraint .*: yes' \
+  '^hidden constraint .*: yes' -- --method rattle --problem spherical-pendulum
+case_ rattle-double 0 "" 'order +(1\.9|2\.0)[0-9]* over .*: yes' '^hidden constraint .*: yes' \
+  -- --method rattle --problem double-pendulum
+case_ shake-spherical 5 "order,symmetric,time-reversible,hidden constraint" \
+  '^position constraint .*: yes' '^hidden constraint .*h = 0\.05: [0-9.]+e-0[12].*: NO' \
+  -- --method shake --problem spherical-pendulum
+arg rattle-off-manifold --q0 --method rattle --q0 1,0,0.1
+arg rattle-not-tangent --p0 --method rattle --q0 1,0,0 --p0 1,0,0
+arg rattle-unconstrained --problem --method rattle --problem kepler
+arg rattle-potential --potential --method rattle --potential 'x^2'
+arg gauss-on-constrained --problem --method gauss:2 --problem spherical-pendulum
 
 echo "verify_method: $pass passed, $fail failed"
 [ "$fail" = 0 ]

@@ -6,6 +6,8 @@
 #error "vibook must not be compiled with -ffast-math: its tests measure round-off."
 #endif
 
+#include <type_traits>
+
 #include <Eigen/Dense>
 
 namespace vibook {
@@ -26,6 +28,19 @@ template <class S>
 S constant(double x) {
   if constexpr (requires { typename S::DerType; }) {
     return S(constant<typename S::Scalar>(x));
+  } else {
+    return S(x);
+  }
+}
+
+/// The value x of the scalar T as a constant of S, S being T or (nested) AutoDiff over it:
+/// no derivatives.
+template <class S, class T>
+S constant_of(const T& x) {
+  if constexpr (std::is_same_v<S, T>) {
+    return x;
+  } else if constexpr (requires { typename S::DerType; }) {
+    return S(constant_of<typename S::Scalar>(x));
   } else {
     return S(x);
   }

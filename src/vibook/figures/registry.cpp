@@ -55,7 +55,8 @@ const std::vector<Check>& registry() {
 
 const std::vector<Check>& long_studies() {
   static const std::vector<Check> all = {checks::sharma_eq29_long(), checks::field_audit_galerkin(),
-                                         checks::field_audit_splitting()};
+                                         checks::field_audit_splitting(),
+                                         checks::field_audit_systems()};
   return all;
 }
 

@@ -234,6 +234,11 @@ class GalerkinIntegrator {
 
   const QuadratureT<T>& rule() const { return rule_; }
 
+  /// The start time t of the next step, for a time-dependent Lagrangian: one callable as
+  /// L(q, v, t) is evaluated at node i at the time t + c_i h (Marsden & West 2001, §4.1: the
+  /// quadrature of ∫ L(q, q', t) dt over the step). An autonomous L(q, v) ignores it.
+  void set_time(T t) { t_ = t; }
+
   /// One step. The control points are carried as increments, Q^ν = q0 + h W_ν (W_0 = 0), and
   /// the action over h as Φ(q0, W) = A/h = Σ_i b_i L(q0 + h Σ_ν ℓ_ν(c_i) W_ν,
   /// Σ_ν ℓ'_ν(c_i) W_ν): since Σ_ν ℓ'_ν = 0 the velocities are sums of W, not differences of
@@ -286,8 +291,19 @@ class GalerkinIntegrator {
           Y(k).derivatives()(k) = In(T(1));
         }
         const Vec<Out, N> qq = Y.template head<N>(), vv = Y.template tail<N>();
-        static_assert(ad::returns_scalar<decltype(L_(qq, vv)), Out>, VIBOOK_RETURNS_SCALAR_MESSAGE);
-        const Out l = L_(qq, vv);
+        const Out l = [&] {
+          if constexpr (std::is_invocable_v<const Lagrangian&, const Vec<Out, N>&,
+                                            const Vec<Out, N>&, const Out&>) {
+            const Out ti = constant_of<Out>(T(t_ + rule_.c[static_cast<std::size_t>(i)] * h));
+            static_assert(ad::returns_scalar<decltype(L_(qq, vv, ti)), Out>,
+                          VIBOOK_RETURNS_SCALAR_MESSAGE);
+            return L_(qq, vv, ti);
+          } else {
+            static_assert(ad::returns_scalar<decltype(L_(qq, vv)), Out>,
+                          VIBOOK_RETURNS_SCALAR_MESSAGE);
+            return L_(qq, vv);
+          }
+        }();
         const Vec<T, K> g = l.value().derivatives();
         Mat<T, K> Hl;
         for (int j = 0; j < K; ++j) Hl.col(j) = l.derivatives()(j).derivatives();
@@ -358,6 +374,7 @@ class GalerkinIntegrator {
   int s_;  ///< the number of stages (S when S is fixed)
   std::vector<T> ell_, dell_;
   T action_ = T(0);
+  T t_ = T(0);  ///< the start time of the next step (set_time)
 };
 
 /// The partitioned Runge–Kutta method HLW Theorem VI.6.4 pairs with the Galerkin integrator on

@@ -40,14 +40,19 @@ StepperLibrary::StepperLibrary(const std::string& path, const std::string& arg, 
     return s;
   };
   auto version = reinterpret_cast<int (*)()>(need("vibook_stepper_abi_version"));
+  version_ = version();
+  if (version_ != 1 && version_ != 2)
+    throw ArgumentError("--stepper-lib", fmt::format("'{}' implements stepper ABI version {}; "
+                                                     "this vibook speaks versions 1 and {}",
+                                                     path, version_, VIBOOK_STEPPER_ABI_VERSION));
   auto create = reinterpret_cast<void* (*)(int, const char*)>(need("vibook_stepper_create"));
-  step_ = reinterpret_cast<int (*)(void*, double, double*, double*)>(need("vibook_stepper_step"));
+  if (version_ == 1)
+    step_ = reinterpret_cast<int (*)(void*, double, double*, double*)>(need("vibook_stepper_step"));
+  else
+    step_t_ = reinterpret_cast<int (*)(void*, double, double, double*, double*)>(
+        need("vibook_stepper_step_t"));
   destroy_ = reinterpret_cast<void (*)(void*)>(need("vibook_stepper_destroy"));
   message_ = reinterpret_cast<const char* (*)(void*)>(::dlsym(handle_, "vibook_stepper_message"));
-  if (const int v = version(); v != VIBOOK_STEPPER_ABI_VERSION)
-    throw ArgumentError("--stepper-lib", fmt::format("'{}' implements stepper ABI version {}; "
-                                                     "this vibook speaks version {}",
-                                                     path, v, VIBOOK_STEPPER_ABI_VERSION));
   context_ = create(dof, arg.c_str());
   if (!context_)
     throw ArgumentError("--stepper-lib",
@@ -61,10 +66,17 @@ StepperLibrary::~StepperLibrary() {
 }
 
 void StepperLibrary::run(double h, long long n, double* q, double* p) {
-  for (long long k = 0; k < n; ++k)
+  for (long long k = 0; k < n; ++k) {
+    if (step_t_) {  // version 2: the step's start time, t_ + k h
+      if (const int status = step_t_(context_, t_ + double(k) * h, h, q, p); status != 0)
+        throw NumericalError(
+            fmt::format("vibook_stepper_step_t returned {}{}", status, reason(context_)));
+      continue;
+    }
     if (const int status = step_(context_, h, q, p); status != 0)
       throw NumericalError(
           fmt::format("vibook_stepper_step returned {}{}", status, reason(context_)));
+  }
 }
 
 std::string StepperLibrary::reason(void* context) const {
@@ -105,7 +117,7 @@ int serve_stepper_library(const std::string& path, const std::string& arg, int d
     write_fd(answers, "error " + why + "\n");
     return 2;
   }
-  if (!write_fd(answers, "ready\n")) return 0;
+  if (!write_fd(answers, fmt::format("ready abi {}\n", lib->abi_version()))) return 0;
   std::string buf;
   std::vector<double> q(static_cast<std::size_t>(dof)), p(static_cast<std::size_t>(dof));
   char chunk[4096];
@@ -125,6 +137,12 @@ int serve_stepper_library(const std::string& path, const std::string& arg, int d
     const bool every = line.rfind("every ", 0) == 0;
     const char* s = line.c_str() + (every ? 6 : 0);
     char* end = nullptr;
+    double t0 = 0;
+    if (lib->takes_time()) {  // protocol 2: the start time first
+      t0 = std::strtod(s, &end);
+      lib->set_time(t0);
+      s = end;
+    }
     const double h = std::strtod(s, &end);
     s = end;
     const long long n = std::strtoll(s, &end, 10);
@@ -164,6 +182,7 @@ int serve_stepper_library(const std::string& path, const std::string& arg, int d
     for (long long k = 0; k < n; ++k) {
       bool ok = true;
       try {
+        lib->set_time(t0 + double(k) * h);
         lib->run(h, 1, q.data(), p.data());
         state();
       } catch (const std::exception& e) {

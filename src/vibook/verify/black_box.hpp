@@ -28,6 +28,10 @@ class BlackBox {
       each();
     }
   }
+  /// The stepper takes the time (line protocol 2): it can step a time-dependent system.
+  virtual bool takes_time() const { return false; }
+  /// The start time of the next run (or of the next `every`), for a stepper that takes_time().
+  virtual void set_time(double /*t*/) {}
 };
 
 /// A library behind the C ABI (stepper_abi.h), loaded into this process. The constructor
@@ -40,19 +44,28 @@ class StepperLibrary final : public BlackBox {
   StepperLibrary(const StepperLibrary&) = delete;
   StepperLibrary& operator=(const StepperLibrary&) = delete;
   void run(double h, long long n, double* q, double* p) override;
+  /// The ABI version the library implements (1 or 2).
+  int abi_version() const { return version_; }
+  bool takes_time() const override { return version_ >= 2; }
+  void set_time(double t) override { t_ = t; }
 
  private:
   std::string reason(void* context) const;
   void* handle_ = nullptr;
   void* context_ = nullptr;
+  int version_ = 1;
+  double t_ = 0;  ///< version 2: the start time of the next run
   int (*step_)(void*, double, double*, double*) = nullptr;
+  int (*step_t_)(void*, double, double, double*, double*) = nullptr;
   void (*destroy_)(void*) = nullptr;
   const char* (*message_)(void*) = nullptr;
 };
 
 /// The child's side of an isolated library (`vibook verify --stepper-lib`): load it, announce
-/// `ready` (or `error REASON` when it cannot be loaded), then answer the line protocol's
-/// requests on file descriptors 0 and `answers`, numbers in 17 significant digits (exact).
+/// `ready abi V` (V the library's ABI version; `error REASON` when it cannot be loaded), then
+/// answer the line protocol's requests on file descriptors 0 and `answers`, numbers in 17
+/// significant digits (exact): protocol 1 for a library of version 1, protocol 2 (the start
+/// time first) for one of version 2.
 /// Anything the library prints on its standard output goes to the captured standard error.
 /// Returns the child's exit status: 0 at the end of its input, 2 when the library did not load.
 int serve_stepper_library(const std::string& path, const std::string& arg, int dof);

@@ -57,10 +57,15 @@ void check_first_step(BlackBox& box, const Eigen::VectorXd& z0, double h, int do
 void set_black_box_map(MapStudy& s, BlackBox& box, int dof) {
   BlackBox* raw = &box;
   const int N = dof;
+  // A time-dependent system's state carries the clock last (MapStudy::timed): the stepper is
+  // told the start time of each request, and the clock advances by the steps taken.
   s.step = [raw, N](Eigen::VectorXd& z, double h) {
     const Eigen::VectorXd start = z;
+    const bool timed = z.size() == 2 * N + 1;
+    if (timed) raw->set_time(z(2 * N));
     try {
       raw->run(h, 1, z.data(), z.data() + N);
+      if (timed) z(2 * N) += h;
     } catch (const NumericalError& e) {
       throw NumericalError(
           fmt::format("a step of h = {:g} from {}: {}", h, where(start, N), e.what()));
@@ -72,8 +77,11 @@ void set_black_box_map(MapStudy& s, BlackBox& box, int dof) {
   // A run of the order study is one request (both kinds talk to a child process).
   s.propagate = [raw, N](Eigen::VectorXd& z, double h, long long n) {
     const Eigen::VectorXd start = z;
+    const bool timed = z.size() == 2 * N + 1;
+    if (timed) raw->set_time(z(2 * N));
     try {
       raw->run(h, n, z.data(), z.data() + N);
+      if (timed) z(2 * N) = start(2 * N) + double(n) * h;
     } catch (const NumericalError& e) {
       throw NumericalError(
           fmt::format("{} steps of h = {:g} from {}: {}", n, h, where(start, N), e.what()));
@@ -88,11 +96,16 @@ void set_black_box_map(MapStudy& s, BlackBox& box, int dof) {
   // a command, one step a request).
   s.every = [raw, N](Eigen::VectorXd& z, double h, long long n, const std::function<void()>& each) {
     Eigen::VectorXd start = z;
+    const bool timed = z.size() == 2 * N + 1;
+    const double t0 = timed ? z(2 * N) : 0.0;
+    long long k = 0;
+    if (timed) raw->set_time(t0);
     try {
       raw->every(h, n, z.data(), z.data() + N, [&] {
         if (!finite(z))
           throw NumericalError(fmt::format("a step of h = {:g} from {} returned a non-finite state",
                                            h, where(start, N)));
+        if (timed) z(2 * N) = t0 + double(++k) * h;
         each();
         start = z;
       });
@@ -213,6 +226,12 @@ void work_precision(const MapStudy& s, const TypedDiscreteLagrangian& sys, bool 
 
 void black_box_work_precision(const MapStudy& s, const TypedDiscreteLagrangian& sys, bool separable,
                               bool timings, MapMeasurement& rep) {
+  if (s.timed) {
+    // The two peers are stepped here on an autonomous field; a time-dependent system would
+    // need their stage times too.
+    rep.line("work-precision", "not run: the peers are stepped for autonomous systems only");
+    return;
+  }
   with_dim(sys.dim(),
            [&](auto n) { work_precision<decltype(n)::value>(s, sys, separable, timings, rep); });
 }

@@ -21,5 +21,7 @@ Check field_audit_odeint();
 Check field_audit_splitting();
 /// field-audit-galerkin: A-GAUSS1 … A-LOBATTO5 (long study, field_audit.cpp)
 Check field_audit_galerkin();
+/// field-audit-systems: A-RATTLE, A-WRONG-SHAKE, A-FORCED-* (long study, field_audit.cpp)
+Check field_audit_systems();
 
 }  // namespace vibook::checks

@@ -205,6 +205,81 @@ void measure_n(const TypedLdSystem& o, const TypedDiscreteLagrangian& dl, Compos
 
 }  // namespace
 
+namespace {
+
+// The time-dependent --ld (measure_timed_ld) in N dimensions.
+template <int N>
+void measure_timed_ld_n(const TypedDiscreteLagrangian& dl, const TypedLdSystem& o, MapStudy study,
+                        MapMeasurement& rep) {
+  // L_d(t, q0, q1, h) at the clock's time, on whatever scalar the DEL solver asks for; the step
+  // sets the clock from the state before solving.
+  auto clock = std::make_shared<double>(0.0);
+  const TypedDiscreteLagrangian* d = &dl;
+  auto ld = [d, clock](const auto& a, const auto& b, const auto& h) -> scalar_t<decltype(h)> {
+    using S = scalar_t<decltype(h)>;
+    return d->evaluate<N, S>(Vec<S, N>(a), Vec<S, N>(b), S(h), constant_of<S>(*clock));
+  };
+  auto del = std::make_shared<DelIntegrator<N, decltype(ld)>>(ld);
+  study.step = naming_failures(
+      [del, clock](Eigen::VectorXd& z, double h) {
+        Vec<double, N> q = z.head<N>(), p = z.segment<N>(N);
+        *clock = z(2 * N);
+        del->reset();
+        del->step(q, p, h);
+        z.head<N>() = q;
+        z.segment<N>(N) = p;
+        z(2 * N) += h;
+      },
+      N);
+  Eigen::VectorXd z0(2 * N);
+  for (int i = 0; i < N; ++i) {
+    z0(i) = o.q0[static_cast<std::size_t>(i)];
+    z0(N + i) = o.p0[static_cast<std::size_t>(i)];
+  }
+  std::string line;
+  if (!o.lagrangian.empty()) {
+    line = set_typed_lagrangian(study, dl, o.lagrangian, o.q0, o.p0);
+  } else {
+    set_typed_system<N>(study, dl, z0);
+    line = fmt::format("{}, {} degree{} of freedom; q0 = {}, p0 = {}",
+                       o.hamiltonian.empty()
+                           ? "H = |p|^2/2 + V(q, t), V = " + o.potential + " (--potential)"
+                           : "H = " + o.hamiltonian + " (--hamiltonian)",
+                       N, N == 1 ? "" : "s", vec_text(o.q0), vec_text(o.p0));
+  }
+  rep.line("discrete Lagrangian",
+           fmt::format("L_d(t, q0, q1, h) = {} (--ld; t the step's start time)", o.ld));
+  rep.line("", "stepped by its discrete Euler-Lagrange equations, Newton on nested AutoDiff");
+  rep.line("system", line);
+  rep.line("expected order", fmt::format("{:g}", study.expected));
+  rep.js["system"] = {{"ld", o.ld},
+                      {"potential", o.potential},
+                      {"lagrangian", o.lagrangian},
+                      {"hamiltonian", o.hamiltonian},
+                      {"q0", o.q0},
+                      {"p0", o.p0},
+                      {"time_dependent", true}};
+  measure_map(study, rep);
+}
+
+}  // namespace
+
+void measure_timed_ld(const TypedDiscreteLagrangian& dl, const TypedLdSystem& system,
+                      const MapStudy& study, MapMeasurement& rep) {
+  if (!dl.time_dependent())
+    throw ArgumentError("--ld",
+                        "uses the time t, but the system (--potential, --lagrangian or "
+                        "--hamiltonian) does not: give the system's own time dependence");
+  switch (dl.dim()) {
+    case 1:
+      return measure_timed_ld_n<1>(dl, system, study, rep);
+    case 2:
+      return measure_timed_ld_n<2>(dl, system, study, rep);
+    default:
+      return measure_timed_ld_n<3>(dl, system, study, rep);
+  }
+}
+
 void measure_ld_composition(CompositionSpec spec, const TypedDiscreteLagrangian& dl,
                             const TypedLdSystem& system, const MapStudy& study,
                             SymbolicUse symbolic, MapMeasurement& rep) {

@@ -33,4 +33,15 @@ void measure_ld_composition(CompositionSpec spec, const TypedDiscreteLagrangian&
                             const TypedLdSystem& system, const MapStudy& study,
                             SymbolicUse symbolic, MapMeasurement& rep);
 
+/// A typed discrete Lagrangian of a time-dependent system, L_d(t, q0, q1, h) with t the step's
+/// start time (`vibook verify --ld` when a text uses t; chapter "Verify your own integrator",
+/// section "Time-dependent systems"): its discrete Euler–Lagrange step p0 = −D1 L_d(t, q0, q1,
+/// h), p1 = D2 L_d(t, q0, q1, h) (Newton on nested AutoDiff of the tree) as the map of a study
+/// whose state carries the clock (MapStudy::timed), measured by measure_map against the typed
+/// system (Hamilton's equations of H(q, p, t), or the Euler–Lagrange equations of L(q, v, t)).
+/// `dl` must have a Hamiltonian or a Lagrangian (not only a potential) and a time-dependent
+/// system (an ArgumentError naming --ld when only L_d uses t). Appended to `rep`.
+void measure_timed_ld(const TypedDiscreteLagrangian& dl, const TypedLdSystem& system,
+                      const MapStudy& study, MapMeasurement& rep);
+
 }  // namespace vibook::verify

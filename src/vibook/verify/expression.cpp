@@ -85,13 +85,16 @@ class TypedDiscreteLagrangian::Parser {
     return nullptr;
   }
 
+  /// `scalar_vars`: every vector variable is its first component (the one-dimensional reading,
+  /// in which `q*cos(t)` is a number).
   Parser(TypedDiscreteLagrangian& owner, const std::string& text, std::string argument, Kind kind,
-         bool have_potential)
+         bool have_potential, bool scalar_vars = false)
       : o_(owner),
         text_(text),
         arg_(std::move(argument)),
         kind_(kind),
-        have_potential_(have_potential) {}
+        have_potential_(have_potential),
+        scalar_vars_(scalar_vars) {}
 
   int parse() {
     if (text_.find_first_not_of(" \t") == std::string::npos) throw ArgumentError(arg_, "is empty");
@@ -112,6 +115,10 @@ class TypedDiscreteLagrangian::Parser {
   /// The lengths of the vectors written out.
   const std::vector<int>& literal_lengths() const { return literals_; }
   bool uses_slot(int slot) const { return slots_used_[static_cast<std::size_t>(slot)]; }
+  /// The text uses the time t.
+  bool uses_t() const { return uses_t_; }
+  /// The text calls V(...) or grad(V)(...).
+  bool calls_potential() const { return calls_potential_; }
 
  private:
   using Op = TypedDiscreteLagrangian::Op;
@@ -370,16 +377,16 @@ class TypedDiscreteLagrangian::Parser {
   std::string symbols() const {
     switch (kind_) {
       case Kind::potential:
-        return "the potential is a function of x, y, z, or of the vector q and its components "
-               "q[1], q[2], …";
+        return "the potential is a function of x, y, z (or of the vector q, q[1], q[2], …) and "
+               "of the time t";
       case Kind::ld:
-        return "the discrete Lagrangian is a function of q0, q1 (and q0[1], …), h, V(...) and "
-               "grad(V)(...)";
+        return "the discrete Lagrangian is a function of q0, q1 (and q0[1], …), h, the step's "
+               "start time t, V(...) and grad(V)(...)";
       case Kind::lagrangian:
-        return "the Lagrangian is a function of q, v (and q[1], v[1], …), V(...) and "
+        return "the Lagrangian is a function of q, v (and q[1], v[1], …), t, V(...) and "
                "grad(V)(...)";
       case Kind::hamiltonian:
-        return "the Hamiltonian is a function of q, p (and q[1], p[1], …), V(...) and "
+        return "the Hamiltonian is a function of q, p (and q[1], p[1], …), t, V(...) and "
                "grad(V)(...)";
     }
     return {};
@@ -389,6 +396,14 @@ class TypedDiscreteLagrangian::Parser {
   int vector_argument(const std::string& what, std::size_t start) {
     const int a = expr();
     if (!eat(')')) fail("expected ')' after the argument of " + what);
+    if (!node(a).vector && scalar_vars_) {  // one dimension: the number is the vector [a]
+      Node n;
+      n.op = Op::literal;
+      n.vector = true;
+      n.items.push_back(a);
+      literals_.push_back(1);
+      return o_.add_node(n);
+    }
     if (!node(a).vector) {
       pos_ = start;
       fail(what + " takes a vector (q0, q1, (q0+q1)/2, …)");
@@ -423,6 +438,7 @@ class TypedDiscreteLagrangian::Parser {
       }
       need_potential("grad(V)", start);
       const int a = vector_argument("grad(V)", start);
+      calls_potential_ = true;
       return make(Op::gradient_call, a, -1, true);
     }
     if (eat('(')) {
@@ -438,6 +454,7 @@ class TypedDiscreteLagrangian::Parser {
       if (id == "V") {
         need_potential("V", start);
         const int a = vector_argument("V", start);
+        calls_potential_ = true;
         return make(Op::potential_call, a, -1, false);
       }
       const int a = expr();
@@ -477,6 +494,12 @@ class TypedDiscreteLagrangian::Parser {
         n.slot = slot;
         n.index = index - 1;
         needs_ = std::max(needs_, index);
+      } else if (scalar_vars_) {
+        pos_ = after;
+        n.op = Op::component;
+        n.slot = slot;
+        n.index = 0;
+        needs_ = std::max(needs_, 1);
       } else {
         pos_ = after;
         n.op = Op::var;
@@ -494,11 +517,8 @@ class TypedDiscreteLagrangian::Parser {
       n.index = id == "x" ? 0 : id == "y" ? 1 : 2;
       needs_ = std::max(needs_, n.index + 1);
     } else if (id == "t") {
-      pos_ = start;
-      fail(
-          "time t: a time-dependent system is not supported yet (the integrator and the "
-          "reference are autonomous); " +
-          symbols() + " are known");
+      n.op = Op::t;
+      uses_t_ = true;
     } else {
       pos_ = start;
       fail("unknown symbol '" + id + "' (" + symbols() + ")");
@@ -511,11 +531,13 @@ class TypedDiscreteLagrangian::Parser {
   std::string arg_;
   Kind kind_;
   bool have_potential_;
+  bool scalar_vars_ = false;
   std::size_t pos_ = 0;
   int depth_ = 0;  ///< the levels of nesting open (Deeper)
   int needs_ = 0;
   std::vector<int> literals_;
   std::array<bool, kVars> slots_used_{};
+  bool uses_t_ = false, calls_potential_ = false;
 };
 
 TypedDiscreteLagrangian::TypedDiscreteLagrangian(const std::string& ld,
@@ -525,6 +547,29 @@ TypedDiscreteLagrangian::TypedDiscreteLagrangian(const std::string& ld,
 TypedDiscreteLagrangian::TypedDiscreteLagrangian(const TypedTexts& t) { finish(t); }
 
 void TypedDiscreteLagrangian::finish(const TypedTexts& t) {
+  // A text that mixes a vector variable with numbers (`q*cos(t)` added to a scalar) is not
+  // vector algebra, but in one dimension a vector is a number: read it again so, and keep that
+  // reading when the system is then one-dimensional; otherwise the first error stands.
+  try {
+    finish_pass(t, false);
+  } catch (const ArgumentError& first) {
+    if (t.dim > 1) throw;
+    nodes_.clear();
+    params_.clear();
+    ld_root_ = potential_root_ = lagrangian_root_ = hamiltonian_root_ = -1;
+    system_uses_t_ = ld_uses_t_ = false;
+    dim_ = 0;
+    try {
+      finish_pass(t, true);
+    } catch (const ArgumentError&) {
+      if (dim_ == 1) throw;  // read as one-dimensional, then refused for another reason
+      throw first;
+    }
+    if (dim_ != 1) throw first;
+  }
+}
+
+void TypedDiscreteLagrangian::finish_pass(const TypedTexts& t, bool scalar_vars) {
   if (t.dim < 0 || t.dim > kMaxDim)
     throw ArgumentError(
         "--dim", "must lie in 1.." + std::to_string(kMaxDim) + ", got " + std::to_string(t.dim));
@@ -557,7 +602,7 @@ void TypedDiscreteLagrangian::finish(const TypedTexts& t) {
   int needs = 0;
   std::vector<std::pair<std::string, int>> literals;  // argument, length
   auto parse = [&](const std::string& text, const char* arg, Parser::Kind kind) {
-    Parser p(*this, text, arg, kind, have_potential);
+    Parser p(*this, text, arg, kind, have_potential, scalar_vars);
     const int root = p.parse();
     needs = std::max(needs, p.needs());
     for (int n : p.literal_lengths()) literals.emplace_back(arg, n);
@@ -565,24 +610,41 @@ void TypedDiscreteLagrangian::finish(const TypedTexts& t) {
       throw ArgumentError(arg, "is a vector, not a scalar (write u^2 for |u|^2)");
     return std::pair{root, std::move(p)};
   };
-  if (have_potential)
-    potential_root_ = parse(t.potential, "--potential", Parser::Kind::potential).first;
+  // The time: the system depends on t when its Lagrangian or Hamiltonian does, or the potential
+  // does and the system uses it (the default L = |v|²/2 − V, or V(...) inside L or H).
+  bool potential_t = false, system_calls_v = t.lagrangian.empty() && t.hamiltonian.empty();
+  if (have_potential) {
+    auto [root, p] = parse(t.potential, "--potential", Parser::Kind::potential);
+    potential_root_ = root;
+    potential_t = p.uses_t();
+  }
   if (!(t.system_only && t.ld.empty())) {
     auto [root, p] = parse(t.ld, "--ld", Parser::Kind::ld);
     ld_root_ = root;
     if (!p.uses_slot(kQ0) || !p.uses_slot(kQ1))
       throw ArgumentError("--ld", "must depend on both q0 and q1");
+    ld_uses_t_ = p.uses_t();
+    if (t.allow_time && potential_t && p.calls_potential())
+      throw ArgumentError("--ld",
+                          "calls V(...) of a time-dependent --potential, and inside --ld V has no "
+                          "time of its own: write the potential out in --ld with t (the step's "
+                          "start time) and h where the rule evaluates it");
   }
   if (!t.lagrangian.empty()) {
     auto [root, p] = parse(t.lagrangian, "--lagrangian", Parser::Kind::lagrangian);
     lagrangian_root_ = root;
     if (!p.uses_slot(kV)) throw ArgumentError("--lagrangian", "must depend on the velocity v");
+    system_uses_t_ = p.uses_t();
+    system_calls_v = p.calls_potential();
   }
   if (!t.hamiltonian.empty()) {
     auto [root, p] = parse(t.hamiltonian, "--hamiltonian", Parser::Kind::hamiltonian);
     hamiltonian_root_ = root;
     if (!p.uses_slot(kP)) throw ArgumentError("--hamiltonian", "must depend on the momentum p");
+    system_uses_t_ = p.uses_t();
+    system_calls_v = p.calls_potential();
   }
+  system_uses_t_ = system_uses_t_ || (potential_t && system_calls_v);
   int dim = std::max(1, needs);
   for (const auto& [arg, n] : literals) dim = std::max(dim, n);
   if (t.dim != 0) {
@@ -597,6 +659,17 @@ void TypedDiscreteLagrangian::finish(const TypedTexts& t) {
                                    " components; the system is " + std::to_string(dim) +
                                    "-dimensional");
   dim_ = dim;
+  if (!t.allow_time && (system_uses_t_ || ld_uses_t_ || potential_t)) {
+    const char* arg = potential_t             ? "--potential"
+                      : ld_uses_t_            ? "--ld"
+                      : !t.lagrangian.empty() ? "--lagrangian"
+                                              : "--hamiltonian";
+    throw ArgumentError(arg,
+                        "uses the time t: this command does not step a time-dependent system "
+                        "(vibook verify does, with --method, --ld and a black-box stepper; see "
+                        "the chapter \"Verify your own integrator\", section \"Time-dependent "
+                        "systems\")");
+  }
 }
 
 }  // namespace vibook::verify

@@ -13,7 +13,7 @@
 ///
 /// The language (`^` is a power, binding tighter than unary minus: -x^2 = −(x²)):
 /// - the discrete Lagrangian (`--ld`) in vibook's scaling L_d ≈ h·L, in the vectors `q0`,
-///   `q1` and the step `h`;
+///   `q1`, the step `h` and the step's start time `t` (L_d(t, q0, q1, h));
 /// - the intended Lagrangian (`--lagrangian`) in the vectors `q` and `v`, or the intended
 ///   Hamiltonian (`--hamiltonian`) in `q` and `p`; by default L = |v|²/2 − V(q);
 /// - the potential (`--potential`) in the coordinates `x`, `y`, `z`, or in the vector `q`;
@@ -23,6 +23,8 @@
 ///   of two vector factors is their dot product;
 /// - functions `sin cos exp log sqrt` of scalars; `u^(1/2)`-type half-integer powers of
 ///   scalars;
+/// - the time `t` in any of them (a time-dependent system, chapter "Verify your own
+///   integrator", section "Time-dependent systems");
 /// - numbers are exact: `1/6` is 1/6, and a decimal such as `0.1` is the fraction 1/10 it
 ///   denotes (not the binary64 number nearest to it).
 ///
@@ -81,6 +83,10 @@ struct TypedTexts {
   /// Only the intended system, no discrete Lagrangian (`ld` empty): a black-box stepper's
   /// Hamiltonian. evaluate() and bind() are then not available.
   bool system_only = false;
+  /// The caller steps time-dependent systems (the time t in any text). Without it a text that
+  /// uses t is an ArgumentError naming it: a route that has not been taught the time would
+  /// otherwise evaluate every text at t = 0.
+  bool allow_time = false;
 };
 
 class TypedDiscreteLagrangian {
@@ -102,11 +108,22 @@ class TypedDiscreteLagrangian {
   /// The intended system is given as a Hamiltonian (`--hamiltonian`).
   bool has_hamiltonian() const { return hamiltonian_root_ >= 0; }
   bool has_potential() const { return potential_root_ >= 0; }
+  /// The intended system depends on the time t explicitly (its Lagrangian, Hamiltonian or
+  /// potential uses t).
+  bool time_dependent() const { return system_uses_t_; }
+  /// The discrete Lagrangian uses the step's start time t.
+  bool ld_uses_t() const { return ld_uses_t_; }
 
   /// L_d(q0, q1, h) on scalars of type S (q0, q1 of dimension N == dim()).
   template <int N, class S>
   S evaluate(const Vec<S, N>& q0, const Vec<S, N>& q1, const S& h) const {
+    return evaluate<N, S>(q0, q1, h, S(lift_integer<S>(0)));
+  }
+  /// L_d(t, q0, q1, h), t the step's start time.
+  template <int N, class S>
+  S evaluate(const Vec<S, N>& q0, const Vec<S, N>& q1, const S& h, const S& t) const {
     Inputs<S, N> in;
+    in.t = t;
     for (int i = 0; i < N; ++i) {
       in.var[kQ0][i] = q0(i);
       in.var[kQ1][i] = q1(i);
@@ -117,8 +134,14 @@ class TypedDiscreteLagrangian {
   /// V(q) on scalars of type S (0 when no potential was given).
   template <int N, class S>
   S potential(const Vec<S, N>& q) const {
+    return potential<N, S>(q, S(lift_integer<S>(0)));
+  }
+  /// V(q, t).
+  template <int N, class S>
+  S potential(const Vec<S, N>& q, const S& t) const {
     if (potential_root_ < 0) return S(lift_integer<S>(0));
     Inputs<S, N> in;
+    in.t = t;
     for (int i = 0; i < N; ++i) in.var[kX][i] = q(i);
     return scalar<S, N, 0>(potential_root_, in);
   }
@@ -126,14 +149,20 @@ class TypedDiscreteLagrangian {
   /// available when the system was given as a Hamiltonian (std::logic_error).
   template <int N, class S>
   S lagrangian(const Vec<S, N>& q, const Vec<S, N>& v) const {
+    return lagrangian<N, S>(q, v, S(lift_integer<S>(0)));
+  }
+  /// L(q, v, t).
+  template <int N, class S>
+  S lagrangian(const Vec<S, N>& q, const Vec<S, N>& v, const S& t) const {
     if (hamiltonian_root_ >= 0)
       throw std::logic_error("TypedDiscreteLagrangian: the system is given as a Hamiltonian");
     if (lagrangian_root_ < 0) {
       S k = v(0) * v(0);
       for (int i = 1; i < N; ++i) k = k + v(i) * v(i);
-      return S(k / lift_integer<S>(2) - potential<N, S>(q));
+      return S(k / lift_integer<S>(2) - potential<N, S>(q, t));
     }
     Inputs<S, N> in;
+    in.t = t;
     for (int i = 0; i < N; ++i) {
       in.var[kQ][i] = q(i);
       in.var[kV][i] = v(i);
@@ -143,9 +172,15 @@ class TypedDiscreteLagrangian {
   /// The intended Hamiltonian H(q, p), when typed (std::logic_error otherwise).
   template <int N, class S>
   S hamiltonian(const Vec<S, N>& q, const Vec<S, N>& p) const {
+    return hamiltonian<N, S>(q, p, S(lift_integer<S>(0)));
+  }
+  /// H(q, p, t).
+  template <int N, class S>
+  S hamiltonian(const Vec<S, N>& q, const Vec<S, N>& p, const S& t) const {
     if (hamiltonian_root_ < 0)
       throw std::logic_error("TypedDiscreteLagrangian: no Hamiltonian was typed");
     Inputs<S, N> in;
+    in.t = t;
     for (int i = 0; i < N; ++i) {
       in.var[kQ][i] = q(i);
       in.var[kP][i] = p(i);
@@ -156,14 +191,14 @@ class TypedDiscreteLagrangian {
   /// Hamilton's equations of the typed H at (q, p): (∂H/∂p, −∂H/∂q), the gradient by forward
   /// AutoDiff on scalars of type T (double-double for the reference solution).
   template <int N, class T>
-  Vec<T, 2 * N> hamilton_field(const Vec<T, N>& q, const Vec<T, N>& p) const {
+  Vec<T, 2 * N> hamilton_field(const Vec<T, N>& q, const Vec<T, N>& p, const T& t = T(0.0)) const {
     using D = ad::Dual<2 * N, T>;
     Vec<D, N> Q, P;
     for (int i = 0; i < N; ++i) {
       Q(i) = D(q(i), 2 * N, i);
       P(i) = D(p(i), 2 * N, N + i);
     }
-    const Vec<T, 2 * N> g = hamiltonian<N, D>(Q, P).derivatives();
+    const Vec<T, 2 * N> g = hamiltonian<N, D>(Q, P, D(t)).derivatives();
     Vec<T, 2 * N> r;
     for (int i = 0; i < N; ++i) {
       r(i) = g(N + i);
@@ -194,6 +229,7 @@ class TypedDiscreteLagrangian {
     var,        ///< a vector variable (slot)
     component,  ///< one component of a vector variable (slot, index)
     h,
+    t,        ///< the time (in --ld: the step's start time)
     literal,  ///< a vector written out, [a, b, …] (items)
     add,
     sub,
@@ -226,6 +262,7 @@ class TypedDiscreteLagrangian {
   struct Inputs {
     std::array<std::array<S, N>, kVars> var{};
     S h{};
+    S t{};
   };
   class Parser;
   friend class Parser;
@@ -345,6 +382,8 @@ class TypedDiscreteLagrangian {
         return lift<S>(n);
       case Op::h:
         return in.h;
+      case Op::t:
+        return in.t;
       case Op::param:
         return param_value<S>(n.index);
       case Op::component:
@@ -385,6 +424,7 @@ class TypedDiscreteLagrangian {
       case Op::potential_call: {
         Inputs<S, N> at;
         at.var[kX] = vec<S, N, Depth>(n.a, in);
+        at.t = in.t;
         return scalar<S, N, Depth>(potential_root_, at);
       }
       default:
@@ -438,6 +478,7 @@ class TypedDiscreteLagrangian {
           return S::template gradient<N>(u, [&](const std::array<S, N>& x) {
             Inputs<S, N> at;
             at.var[kX] = x;
+            at.t = in.t;
             return scalar<S, N, 1>(potential_root_, at);
           });
         } else if constexpr (Depth == 0 && std::is_constructible_v<S, int>) {
@@ -445,6 +486,7 @@ class TypedDiscreteLagrangian {
           using A = Eigen::AutoDiffScalar<Eigen::Matrix<S, N, 1>>;
           const std::array<S, N> u = vec<S, N, Depth>(n.a, in);
           Inputs<A, N> at;
+          at.t = A(in.t);
           for (int j = 0; j < N; ++j) {
             Eigen::Matrix<S, N, 1> seed;
             for (int k = 0; k < N; ++k) seed(k) = lift_integer<S>(k == j ? 1 : 0);
@@ -466,11 +508,13 @@ class TypedDiscreteLagrangian {
   }
 
   void finish(const TypedTexts& t);
+  void finish_pass(const TypedTexts& t, bool scalar_vars);
 
   int dim_ = 0;
   std::vector<Node> nodes_;
   std::vector<GiNaC::symbol> params_;  ///< the symbolic parameters, in the order given
   int ld_root_ = -1, potential_root_ = -1, lagrangian_root_ = -1, hamiltonian_root_ = -1;
+  bool system_uses_t_ = false, ld_uses_t_ = false;
 };
 
 }  // namespace vibook::verify

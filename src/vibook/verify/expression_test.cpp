@@ -98,6 +98,33 @@ TEST_CASE("typed discrete Lagrangian: numbers are exact, decimals are the fracti
   CHECK(verify::parse_rational("-3/9", "--x") == GiNaC::numeric(-1, 3));
 }
 
+TEST_CASE("typed texts with the time t, and a vector read as a number in one dimension") {
+  verify::TypedTexts t{"h*((q1-q0)/h)^2/2 - h*((q0+q1)/2)^2/2 + h*(q0+q1)/2*cos(t+h/2)",
+                       "x^2/2 - x*cos(t)", "", "", 0};
+  t.allow_time = true;
+  const verify::TypedDiscreteLagrangian d(t);
+  CHECK(d.dim() == 1);  // q0 + a number: read as the one-dimensional q0[1]
+  CHECK(d.time_dependent());
+  CHECK(d.ld_uses_t());
+  const double q0 = 0.3, q1 = 0.35, h = 0.1, t0 = 0.7, m = (q0 + q1) / 2;
+  const double want =
+      h * ((q1 - q0) / h) * ((q1 - q0) / h) / 2 - h * m * m / 2 + h * m * std::cos(t0 + h / 2);
+  const double got = d.evaluate<1, double>(Vec<double, 1>(q0), Vec<double, 1>(q1), h, t0);
+  CHECK(got == doctest::Approx(want).epsilon(1e-15).scale(0));
+  CHECK(d.potential<1, double>(Vec<double, 1>(q0), t0) ==
+        doctest::Approx(q0 * q0 / 2 - q0 * std::cos(t0)).epsilon(1e-15));
+  // V(...) inside --ld has no time of its own: refused when the potential depends on t
+  t.ld = "h*((q1-q0)/h)^2/2 - h*V(q0)";
+  CHECK_THROWS_WITH_AS(verify::TypedDiscreteLagrangian{t},
+                       doctest::Contains("calls V(...) of a time-dependent --potential"),
+                       ArgumentError);
+  // in two dimensions a vector added to a number stays an error
+  verify::TypedTexts two{"h*((q1-q0)/h)^2/2 + q0*t", "x^2 + y^2", "", "", 0};
+  two.allow_time = true;
+  CHECK_THROWS_WITH_AS(verify::TypedDiscreteLagrangian{two},
+                       doctest::Contains("adds a vector and a scalar"), ArgumentError);
+}
+
 TEST_CASE("typed discrete Lagrangian: every malformed text is refused, naming its option") {
   refused("h*(q1-q0)^2/(2*h^2", kHenonHeiles, 0, "--ld", "expected ')'");
   refused("h*(q1-q0)^2/(2*h^2))", kHenonHeiles, 0, "--ld", "unexpected ')'");
@@ -112,8 +139,9 @@ TEST_CASE("typed discrete Lagrangian: every malformed text is refused, naming it
   refused("(q1-q0)^2/h - V(q0)", "x^2 + 1e400", 0, "--potential", "range of double");
   refused("h*(q1-q0)^2/h - w", kHenonHeiles, 0, "--ld", "unknown symbol 'w'");
   refused("(q1-q0)^2/h - W(q0)", kHenonHeiles, 0, "--ld", "unknown function 'W'");
+  // t is refused unless the caller steps time-dependent systems (TypedTexts::allow_time)
   refused("(q1-q0)^2/h - h*V(q0)", "x^2 + t", 0, "--potential",
-          "time-dependent system is not supported");
+          "uses the time t: this command does not step a time-dependent system");
   refused("(q1-q0)^2/h + q0", kHenonHeiles, 0, "--ld", "adds a vector and a scalar");
   refused("(q1-q0)/h", kHenonHeiles, 0, "--ld", "is a vector");
   refused("(q1-q0)^2/h - V(h)", kHenonHeiles, 0, "--ld", "V takes a vector");

@@ -25,10 +25,14 @@
 #include "vibook/plot/gnuplot.hpp"
 #include "vibook/verify/black_box.hpp"
 #include "vibook/verify/checks.hpp"
+#include "vibook/verify/composition_ld_study.hpp"
 #include "vibook/verify/composition_study.hpp"
+#include "vibook/verify/constrained.hpp"
+#include "vibook/verify/expression.hpp"
 #include "vibook/verify/map_study.hpp"
 #include "vibook/verify/method_study.hpp"
 #include "vibook/verify/method_symbolic.hpp"
+#include "vibook/verify/typed_system.hpp"
 
 namespace vibook::verify {
 
@@ -231,14 +235,79 @@ struct Measured {
   std::string brief;  // a stepper's Doxygen brief, quoted
   std::string energy_verdict;
   json conditions, composition;
-  std::string stopped;  // a measurement that threw: why
+  std::string stopped;                                      // a measurement that threw: why
+  std::vector<std::pair<std::string, double>> constraints;  // a constrained row's residuals
 };
 
 Measured read(Measured m, const MapMeasurement& rep);
 
+// A forced system of the audit, typed: L(q, v, t), V(x, t) and the midpoint L_d with the forcing
+// at the time `time`.
+struct ForcedSystem {
+  std::string lagrangian, potential, midpoint;
+};
+
+ForcedSystem forced_system(const std::string& name, const std::string& time) {
+  if (name == "forced-oscillator")
+    return {"v^2/2 - q^2/2 + q*cos(t)", "x^2/2 - x*cos(t)",
+            "h*(((q1-q0)/h)^2/2 - ((q0+q1)/2)^2/2 + (q0+q1)/2*cos(" + time + "))"};
+  if (name == "forced-pendulum")
+    return {"v^2/2 + cos(q) + q*cos(t)/2", "-cos(x) - x*cos(t)/2",
+            "h*(((q1-q0)/h)^2/2 + cos((q0+q1)/2) + (q0+q1)/2*cos(" + time + ")/2)"};
+  throw std::logic_error("field audit: no forced system '" + name + "'");
+}
+
+// A row on the forced systems: a Galerkin method on the typed L(q, v, t), or the midpoint L_d.
+void measure_forced(const AuditEntry& a, const std::string& problem_name, MapStudy study,
+                    MapMeasurement& rep) {
+  const ForcedSystem f = forced_system(problem_name, a.forced_time);
+  const std::vector<double> q0{0.5}, p0{0.0};
+  if (!a.method.empty()) {
+    TypedTexts t{"", "", f.lagrangian, "", 0};
+    t.system_only = true;
+    t.allow_time = true;
+    const TypedDiscreteLagrangian sys(t);
+    const auto colon = a.method.find(':');
+    MethodSpec spec;
+    spec.name = a.method;
+    spec.stages = std::stoi(a.method.substr(colon + 1));
+    spec.rule = quadrature_rule(a.method.substr(0, colon), spec.stages);
+    spec.expected = spec.rule.order;
+    const std::string line = set_typed_lagrangian(study, sys, f.lagrangian, q0, p0);
+    measure_method_typed(spec, sys, q0, p0, study, line, rep);
+    return;
+  }
+  TypedTexts t{f.midpoint, f.potential, "", "p^2/2 + V(q)", 0};
+  t.allow_time = true;
+  const TypedDiscreteLagrangian dl(t);
+  study.expected = a.expected.value_or(2);
+  study.symmetric_claimed = true;
+  measure_timed_ld(dl, {f.midpoint, f.potential, "", "", q0, p0}, study, rep);
+}
+
 Measured measure_row(const AuditEntry& a, const std::string& problem_name) {
   Measured m;
   m.problem = problem_name;
+  if (!a.constrained.empty() || a.forced) {
+    MapMeasurement rep;
+    MapStudy study;
+    try {
+      if (a.forced) {
+        measure_forced(a, problem_name, study, rep);
+      } else {
+        const ConstrainedProblem* p = find_constrained_problem(problem_name);
+        if (!p)
+          throw std::logic_error("field audit: no constrained problem '" + problem_name + "'");
+        study.expected = a.expected.value_or(2);
+        measure_constrained(*p, a.constrained == "rattle", p->q0, p->p0, study, rep);
+      }
+    } catch (const NumericalError& e) {
+      m.stopped = e.what();
+      m.failed.push_back("measurement");
+      return m;
+    }
+    return read(m, rep);
+  }
   const TestProblem* problem = find_problem(problem_name);
   if (!problem) throw std::logic_error("field audit: no test problem '" + problem_name + "'");
   MapMeasurement rep;
@@ -364,17 +433,27 @@ Measured read(Measured m, const MapMeasurement& rep) {
   }
   if (js.contains("symplecticity")) m.symplectic = number_or_nan(js["symplecticity"]["defect"]);
   if (js.contains("reversibility")) m.reversible = number_or_nan(js["reversibility"]["defect"]);
-  if (js.contains("energy")) {
+  if (js.contains("energy") && js["energy"].contains("verdict")) {
     m.energy = number_or_nan(js["energy"]["relative_error"]);
     m.energy_verdict = js["energy"]["verdict"].get<std::string>();
+  } else if (js.contains("energy")) {  // a time-dependent system: not judged
+    m.energy = std::numeric_limits<double>::quiet_NaN();
   }
+  for (const char* part : {"position_constraint", "hidden_constraint"})
+    if (js.contains(part)) m.constraints.emplace_back(part, number_or_nan(js[part]["defect"]));
   m.conditions = js.value("order_conditions", json::object());
   m.composition = js.value("composition", json::object());
   return m;
 }
 
 std::string display_name(const std::string& problem) {
-  return problem == "kepler" ? "Kepler" : problem == "henon-heiles" ? "Hénon–Heiles" : problem;
+  return problem == "kepler"               ? "Kepler"
+         : problem == "henon-heiles"       ? "Hénon–Heiles"
+         : problem == "forced-oscillator"  ? "the forced oscillator"
+         : problem == "forced-pendulum"    ? "the forced pendulum"
+         : problem == "spherical-pendulum" ? "the spherical pendulum"
+         : problem == "double-pendulum"    ? "the double pendulum"
+                                           : problem;
 }
 
 std::string brief(const Measured& m) {
@@ -391,9 +470,17 @@ std::string brief(const Measured& m) {
                         : m.not_derived.empty() ? std::string()
                                                 : " (not derived by the engine)")
           : std::string(),
-      m.symplectic, m.reversible, m.energy_verdict, m.energy,
-      m.failed.empty() ? std::string(": every part passes")
-                       : fmt::format(": FAILS {}", fmt::join(m.failed, ", ")));
+      m.symplectic, m.reversible,
+      m.energy_verdict.empty() ? std::string("not judged") : m.energy_verdict, m.energy,
+      [&] {
+        std::string c;
+        for (const auto& [part, value] : m.constraints)
+          c += fmt::format(", {} residual {:.1e}",
+                           part == "position_constraint" ? "position" : "hidden", value);
+        return c;
+      }() +
+          (m.failed.empty() ? std::string(": every part passes")
+                            : fmt::format(": FAILS {}", fmt::join(m.failed, ", "))));
 }
 
 }  // namespace
@@ -432,6 +519,11 @@ claims::ClaimResult judge_audit_entry(const AuditEntry& a) {
                             ? std::string()
                             : fmt::format("; the order claimed is the brief's: \"{}\" (order {:g})",
                                           brief_quote, ms[0].expected))
+      : !a.constrained.empty()
+          ? "A constrained method: no composition conditions; its multipliers solved by Newton's "
+            "method to the rounding of the constraints"
+      : a.forced ? "A method for a time-dependent system (the time in the state): no composition "
+                   "conditions"
       : a.method.empty() ? "Order conditions not evaluated"
                          : "A Galerkin method, so no composition conditions; its step equals the "
                            "partitioned Runge–Kutta method it generates to 64 units in the last "
@@ -468,7 +560,9 @@ claims::ClaimResult judge_audit_entry(const AuditEntry& a) {
   }
   r.values.emplace_back("symplectic_defect_max", worst_sym);
   r.values.emplace_back("reversibility_defect_max", worst_rev);
-  r.values.emplace_back("energy_relative_error_max", worst_energy);
+  // a time-dependent system's energy is not judged (not conserved): no value to record
+  if (std::any_of(ms.begin(), ms.end(), [](const Measured& m) { return std::isfinite(m.energy); }))
+    r.values.emplace_back("energy_relative_error_max", worst_energy);
   std::vector<std::string> lines, skipped;
   for (const auto& m : ms) {
     lines.push_back(brief(m));
@@ -492,7 +586,11 @@ claims::ClaimResult judge_audit_entry(const AuditEntry& a) {
                   "--stepper-lib vibook_odeint_steppers.so --stepper-arg {}/PROBLEM "
                   "--expected-order {:g}{}",
                   a.stepper, ms[0].expected, a.symmetric_claimed ? " --symmetric" : "")
-        : !a.splitting.empty() ? "--splitting " + a.splitting
+        : !a.splitting.empty()   ? "--splitting " + a.splitting
+        : !a.constrained.empty() ? "--method " + a.constrained + " --problem PROBLEM"
+        : a.forced && !a.method.empty()
+            ? "--method " + a.method + " --lagrangian L(q, v, t) --q0 0.5 --p0 0"
+        : a.forced ? "--ld L_d(t, q0, q1, h) --potential V(x, t) --q0 0.5 --p0 0 --symmetric"
         : a.method.empty()
             ? fmt::format("--composition {} --coefficients {}", a.base, a.coefficients)
             : "--method " + a.method;
@@ -556,10 +654,11 @@ namespace {
 
 // The check that measures a row.
 std::string check_of(const AuditEntry& a) {
-  return !a.method.empty()      ? "field-audit-galerkin"
-         : !a.stepper.empty()   ? "field-audit-odeint"
-         : !a.splitting.empty() ? "field-audit-splitting"
-                                : "field-audit";
+  return !a.constrained.empty() || a.forced ? "field-audit-systems"
+         : !a.method.empty()                ? "field-audit-galerkin"
+         : !a.stepper.empty()               ? "field-audit-odeint"
+         : !a.splitting.empty()             ? "field-audit-splitting"
+                                            : "field-audit";
 }
 
 std::vector<std::string> ids(const std::string& check) {
@@ -705,9 +804,77 @@ const std::vector<AuditEntry>& audit_entries() {
     }
     for (int s = 1; s <= 4; ++s) r.push_back(galerkin("gauss", s));
     for (int s = 2; s <= 5; ++s) r.push_back(galerkin("lobatto", s));
+    // The new kinds of system (long study field-audit-systems).
+    {
+      const std::vector<std::string> constrained = {"spherical-pendulum", "double-pendulum"};
+      AuditEntry a;
+      a.constrained = "rattle";
+      a.problems = constrained;
+      a.info = {"A-RATTLE", "A",
+                "Andersen 1983, J. Comput. Phys. 52; Leimkuhler & Skeel 1994; Hairer, Lubich & "
+                "Wanner, GNI, §VII.1.4",
+                "RATTLE: order 2, symplectic on the constraint manifold, symmetric, both "
+                "constraints kept"};
+      a.statement =
+          "RATTLE for H = |p|²/2 + V(q) with holonomic constraints g(q) = 0 is of order 2, "
+          "symmetric, and symplectic as a map of the constraint manifold; it keeps the position "
+          "constraint and the hidden constraint G(q)p = 0 to round-off.";
+      r.push_back(a);
+      AuditEntry w = wrong("A-WRONG-SHAKE",
+                           "RATTLE without the velocity projection: flagged on the hidden "
+                           "constraint",
+                           "RATTLE with the projection of the new momentum onto the hidden "
+                           "constraint left out (the momentum leaves the cotangent bundle by O(h) "
+                           "a step).",
+                           "", "", 2, {"hidden constraint"});
+      w.constrained = "shake";
+      w.problems = constrained;
+      r.push_back(w);
+      const std::vector<std::string> forced = forced_problems();
+      for (const char* method : {"gauss:2", "lobatto:3"}) {
+        AuditEntry g = galerkin(std::string(method).substr(0, std::string(method).find(':')),
+                                std::string(method).back() - '0');
+        g.forced = true;
+        g.problems = forced;
+        g.info.id = "A-FORCED-" + g.info.id.substr(2);
+        g.info.title = "forced: " + g.info.title;
+        g.statement +=
+            " On a time-dependent L(q, v, t) the quadrature's nodes sit at the times "
+            "t + c_i h, and the same holds.";
+        r.push_back(g);
+      }
+      AuditEntry mid;
+      mid.forced = true;
+      mid.forced_time = "t+h/2";
+      mid.problems = forced;
+      mid.info = {"A-FORCED-MIDPOINT-LD", "A",
+                  "Marsden & West 2001, Acta Numerica 10, §2.6 (the midpoint rule), §4 "
+                  "(time-dependent systems)",
+                  "forced: the midpoint rule as a typed L_d(t, q0, q1, h): order 2, symplectic, "
+                  "symmetric"};
+      mid.statement =
+          "The midpoint rule h L((q0+q1)/2, (q1-q0)/h, t + h/2) of a time-dependent L is a "
+          "symmetric variational integrator of order 2.";
+      r.push_back(mid);
+      AuditEntry stale = wrong("A-WRONG-FORCED-STALE-LD",
+                               "the midpoint rule with the forcing at the step's start: flagged",
+                               "The midpoint rule with the forcing evaluated at the step's start "
+                               "time t instead of t + h/2 (the time advanced with the wrong "
+                               "coefficient); right on an autonomous system.",
+                               "", "", 2, {"order"});
+      stale.forced = true;
+      stale.forced_time = "t";
+      stale.problems = forced;
+      r.push_back(stale);
+    }
     return r;
   }();
   return rows;
+}
+
+const std::vector<std::string>& forced_problems() {
+  static const std::vector<std::string> p = {"forced-oscillator", "forced-pendulum"};
+  return p;
 }
 
 }  // namespace vibook::verify
@@ -737,6 +904,15 @@ Check field_audit_splitting() {
           "ones, on Kepler and Hénon–Heiles (long study: about a minute)",
           false, verify::ids("field-audit-splitting"),
           [](const Context&) { return verify::run_rows("field-audit-splitting"); }};
+}
+
+Check field_audit_systems() {
+  return {"field-audit-systems",
+          "The field audit: new kinds of system, RATTLE on two constrained pendulums and methods "
+          "of two families on a forced oscillator and a forced pendulum, each with a wrong one "
+          "(long study: about 15 s)",
+          false, verify::ids("field-audit-systems"),
+          [](const Context&) { return verify::run_rows("field-audit-systems"); }};
 }
 
 Check field_audit_galerkin() {

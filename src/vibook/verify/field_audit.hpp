@@ -41,11 +41,25 @@ struct AuditEntry {
   std::vector<std::string> must_flag;
   /// The problems it is measured on; empty: audit_problems() (Kepler and Hénon–Heiles).
   std::vector<std::string> problems;
+  /// A constrained method ("rattle", or the wrong "shake") on the constrained test problems
+  /// (constrained.hpp), or empty.
+  std::string constrained;
+  /// A row on the forced systems (forced_problems(), section "Time-dependent systems"): with
+  /// `method` a Galerkin method on the typed L(q, v, t); otherwise the midpoint rule as a typed
+  /// L_d(t, q0, q1, h) with the forcing at the time `forced_time` ("t+h/2", or the wrong "t").
+  bool forced = false;
+  std::string forced_time;
 };
+
+/// The two forced systems of the audit: the forced oscillator L = v²/2 − q²/2 + q cos t and the
+/// forced pendulum L = v²/2 + cos q + q cos(t)/2, from q0 = 0.5, p0 = 0.
+const std::vector<std::string>& forced_problems();
 
 /// The rows, in the book's order: the catalogue's compositions, the wrong ones, Boost.Odeint's
 /// steppers through the C ABI (with two wrong ones), the splittings of the catalogue (with three
-/// wrong ones), then the Galerkin methods (measured by the long study field-audit-galerkin).
+/// wrong ones), then the Galerkin methods (measured by the long study field-audit-galerkin),
+/// then the new kinds of system (long study field-audit-systems): RATTLE and its wrong variant
+/// on the constrained problems, and methods of two families on the forced systems.
 const std::vector<AuditEntry>& audit_entries();
 
 /// The two problems of the audit.

@@ -42,8 +42,9 @@ std::string one_line(std::string s, std::size_t n = 160) {
 
 }  // namespace
 
-LineProtocolStepper::LineProtocolStepper(const std::string& cmd, int dof, double timeout)
-    : dof_(dof), timeout_(timeout) {
+LineProtocolStepper::LineProtocolStepper(const std::string& cmd, int dof, double timeout,
+                                         int protocol)
+    : dof_(dof), timeout_(timeout), protocol_(protocol) {
   start([&cmd] {
     ::execl("/bin/sh", "sh", "-c", cmd.c_str(), static_cast<char*>(nullptr));
     ::_exit(127);
@@ -61,6 +62,12 @@ std::string LineProtocolStepper::handshake(bool& ended) {
   try {
     const std::string line = read_line(now_s() + timeout_);
     if (line == "ready") return {};
+    if (line == "ready abi 1" ||
+        line == "ready abi 2") {  // a library's host (serve_stepper_library)
+      abi_version_ = line.back() - '0';
+      protocol_ = abi_version_;  // a library of version 2 is asked with the time first
+      return {};
+    }
     if (line.rfind("error ", 0) == 0) return one_line(line.substr(6), 1000);
     return "it announced '" + one_line(line, 60) + "', not 'ready'";
   } catch (const NumericalError& e) {
@@ -234,7 +241,9 @@ void LineProtocolStepper::request(const std::string& head, double h, long long n
   pump(0);
   if (!buf_.empty())
     fail("the stepper wrote '" + one_line(buf_, 60) + "' without a request (line protocol 1)");
-  std::string req = head + fmt::format("{:.17g} {}", h, n);
+  std::string req = head;
+  if (protocol_ == 2) req += fmt::format("{:.17g} ", t_);
+  req += fmt::format("{:.17g} {}", h, n);
   for (int i = 0; i < dof_; ++i) req += fmt::format(" {:.17g}", q[i]);
   for (int i = 0; i < dof_; ++i) req += fmt::format(" {:.17g}", p[i]);
   req += '\n';

@@ -34,8 +34,10 @@ class StepperKilled : public NumericalError {
 
 class LineProtocolStepper final : public BlackBox {
  public:
-  /// Start `sh -c cmd`; `dof` degrees of freedom; `timeout` seconds for each answer.
-  LineProtocolStepper(const std::string& cmd, int dof, double timeout);
+  /// Start `sh -c cmd`; `dof` degrees of freedom; `timeout` seconds for each answer; `protocol`
+  /// 1 (requests `H N q p`) or 2 (requests `T H N q p`, T the time the first of the N steps
+  /// starts at: a time-dependent system).
+  LineProtocolStepper(const std::string& cmd, int dof, double timeout, int protocol = 1);
   /// Start a child that runs `serve` (forked, not executed) and exits with its value: the
   /// child's standard input and output carry the protocol, its standard error is captured.
   /// `serve` runs in the child only.
@@ -45,11 +47,15 @@ class LineProtocolStepper final : public BlackBox {
   /// timeout: "" for ready, else why not: its reason, or (`ended` set) how it ended, e.g. killed
   /// by SIGBUS while loading. Never throws for what the child did.
   std::string handshake(bool& ended);
+  /// The ABI version of a library's host, from its handshake (`ready abi V`); 0 otherwise.
+  int abi_version() const { return abi_version_; }
   ~LineProtocolStepper() override;
   LineProtocolStepper(const LineProtocolStepper&) = delete;
   LineProtocolStepper& operator=(const LineProtocolStepper&) = delete;
 
   void run(double h, long long n, double* q, double* p) override;
+  bool takes_time() const override { return protocol_ == 2; }
+  void set_time(double t) override { t_ = t; }
   /// A child started with `serve` (a library's host) answers all n states in one request
   /// (`every h n q p`, one line a state; the library takes the same calls as n single steps);
   /// a command, n single steps (line protocol 1 has no such request).
@@ -75,6 +81,9 @@ class LineProtocolStepper final : public BlackBox {
 
   int dof_;
   double timeout_;
+  int protocol_ = 1;
+  int abi_version_ = 0;
+  double t_ = 0;  ///< protocol 2: the start time of the next request
   pid_t pid_ = -1;
   int to_ = -1, from_ = -1, err_ = -1;
   std::string buf_, err_tail_;

@@ -6,6 +6,7 @@
 #include <cmath>
 #include <limits>
 #include <stdexcept>
+#include <tuple>
 
 #include <fmt/format.h>
 #include <fmt/ranges.h>
@@ -156,6 +157,10 @@ constexpr double kWindow = 1e-6;
 // to 12 is fitted where its local slopes have settled.
 constexpr double kWindowLowExtended = 1e-25;
 
+// The runs along which a constraint residual is followed: long enough for a residual that
+// drifts to show, short beside the energy run.
+constexpr long long kConstraintSteps = 1000;
+
 }  // namespace
 
 namespace {
@@ -223,9 +228,12 @@ void measure_map(const MapStudy& s, MapMeasurement& rep) {
 
   // --- measured order -----------------------------------------------------------------------
   rep.required.push_back("order");
+  // The components the error is read on: (q, p), never a time-dependent system's clock (its
+  // rounding over many steps says nothing about the method).
+  const Eigen::Index compared = s.timed ? z0.size() - 1 : z0.size();
   if (zref.size() == z0.size()) {
     try {
-      const double scale = std::max(1.0, zref.lpNorm<Eigen::Infinity>());
+      const double scale = std::max(1.0, zref.head(compared).lpNorm<Eigen::Infinity>());
       // One pass of the order study, in double or (extended) in double-double.
       struct Pass {
         bool extended = false, fallback = false, settled_tried = false;
@@ -240,7 +248,8 @@ void measure_map(const MapStudy& s, MapMeasurement& rep) {
         const double floor = s.floor ? *s.floor : std::max(10 * ref_error, 16 * unit * scale);
         // The error at T of a run with steps of h (the last shortened to end at T).
         auto error_at = [&](double h) {
-          if (!extended) return (run_map(s, z0, h, s.t_end) - zref).lpNorm<Eigen::Infinity>();
+          if (!extended)
+            return (run_map(s, z0, h, s.t_end) - zref).head(compared).lpNorm<Eigen::Infinity>();
           const long long n = static_cast<long long>(std::ceil(s.t_end / h - 1e-9));
           VecXdd z(z0.size());
           for (Eigen::Index i = 0; i < z0.size(); ++i) z(i) = dd_real(z0(i));
@@ -248,7 +257,7 @@ void measure_map(const MapStudy& s, MapMeasurement& rep) {
           for (long long k = 0; k + 1 < n; ++k) s.step_dd(z, hh);
           if (n >= 1) s.step_dd(z, last);
           double e = 0;
-          for (Eigen::Index i = 0; i < z0.size(); ++i)
+          for (Eigen::Index i = 0; i < compared; ++i)
             e = std::max(e, std::abs(to_double(z(i) - zref_dd[static_cast<std::size_t>(i)])));
           return e;
         };
@@ -453,8 +462,17 @@ void measure_map(const MapStudy& s, MapMeasurement& rep) {
     rep.failed.push_back("order");
   }
 
-  if (s.generating) measure_variational_order(s, rep);
-  if (s.derive_variational_order) s.derive_variational_order(s, rep);
+  if (s.timed && (s.generating || s.derive_variational_order)) {
+    // Both sides of the variational order (the exact action and the engine's expansion) are
+    // written for an autonomous L; with t they would be read at the wrong times.
+    rep.line("variational order",
+             "not measured: the system depends on t explicitly (the measurement and the "
+             "derivation are written for an autonomous Lagrangian)");
+    rep.js["variational_order"] = {{"measured", false}, {"reason", "time-dependent system"}};
+  } else {
+    if (s.generating) measure_variational_order(s, rep);
+    if (s.derive_variational_order) s.derive_variational_order(s, rep);
+  }
 
   // --- consistency: order below 1 by the conditions, or measured below 1/2, never passes ------
   {
@@ -480,11 +498,16 @@ void measure_map(const MapStudy& s, MapMeasurement& rep) {
   // conditions fails symplecticity whatever the measurement says.
   rep.required.push_back("symplectic");
   try {
-    const ScalingJudgement sym = symplecticity_by_scaling(step, states, s.h);
+    const ScalingJudgement sym =
+        symplecticity_by_scaling(step, states, s.h, kScalingSizes, s.tangent);
     const bool exact_no = s.exact_symplectic && !*s.exact_symplectic;
     const bool ok = sym.passed && !exact_no;
-    rep.line("symplectic", fmt::format("defect |J^T W J - W| / max(1, |J|^2): {}: {}", sym.shown(),
-                                       ok ? "yes" : "NO"));
+    rep.line("symplectic",
+             fmt::format("{}: {}: {}",
+                         s.tangent ? "on the constraint manifold, defect |(JU)^T W JU - U^T W U| "
+                                     "/ max(1, |JU|^2), U its tangent space"
+                                   : "defect |J^T W J - W| / max(1, |J|^2)",
+                         sym.shown(), ok ? "yes" : "NO"));
     rep.line("", sym.why + (s.exact_symplectic ? fmt::format("; exactly: {} ({})",
                                                              *s.exact_symplectic ? "yes" : "NO",
                                                              s.exact_symplectic_from)
@@ -554,7 +577,40 @@ void measure_map(const MapStudy& s, MapMeasurement& rep) {
     rep.failed.push_back("symmetric");
   }
 
+  // --- the constraints, kept along runs of kConstraintSteps steps at h, 2h, 4h, 8h -----------
+  if (s.position_residual && s.hidden_residual) {
+    for (const auto& [part, residual, formula] :
+         {std::tuple{"position constraint", s.position_residual, "max |g(q_n)|"},
+          std::tuple{"hidden constraint", s.hidden_residual, "max |G(q_n) p_n|"}}) {
+      rep.required.push_back(part);
+      try {
+        const ScalingJudgement c = constraint_by_scaling(step, z0, s.h, kConstraintSteps, residual);
+        rep.line(part, fmt::format("{} over {} steps: {}: {}", formula, kConstraintSteps, c.shown(),
+                                   c.passed ? "yes" : "NO"));
+        rep.line("", c.why);
+        if (!c.passed) rep.failed.push_back(part);
+        json js = c.to_json();
+        js["steps"] = kConstraintSteps;
+        rep.js[part == std::string("position constraint") ? "position_constraint"
+                                                          : "hidden_constraint"] = js;
+      } catch (const NumericalError& e) {
+        rep.numerical(part, e);
+      }
+    }
+  }
+
   // --- energy -------------------------------------------------------------------------------
+  if (s.timed) {
+    // H(q, p, t) changes along the exact solution as dH/dt = ∂H/∂t: nothing to hold a method
+    // to. The extended Hamiltonian H + p_t is conserved, but only in the extended phase space,
+    // whose p_t a method for (q, p) does not carry.
+    rep.line("energy",
+             "not judged: H depends on t explicitly, so the system itself does not conserve "
+             "it (along a solution dH/dt is the partial derivative of H in t); the order, the "
+             "symplecticity of the time-t map and the symmetry judge the method");
+    rep.js["energy"] = {{"judged", false}, {"reason", "H depends on t explicitly"}};
+    return;
+  }
   rep.required.push_back("energy");
   try {
     const Observable& H = s.H;

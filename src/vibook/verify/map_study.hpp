@@ -133,6 +133,18 @@ struct MapStudy {
   std::function<void(Eigen::VectorXd& z, double h, long long n, const std::function<void()>& each)>
       every;
   Eigen::VectorXd z0;
+  /// Optional, a constrained system (constrained.hpp): the residuals at z of the position
+  /// constraint, |g(q)|_max, and of the hidden constraint, |G(q) p|_max. With it both are judged
+  /// along runs (constraint_by_scaling), and symplecticity is that of the map restricted to the
+  /// constraint manifold, whose tangent space `tangent` spans.
+  std::function<double(const Eigen::VectorXd&z)> position_residual, hidden_residual;
+  std::function<Eigen::MatrixXd(const Eigen::VectorXd& z)> tangent;
+  /// The system depends on the time explicitly: the state carries the clock last,
+  /// z = (q, p, t) (2n + 1 components, z0's t the start time), `field` has t' = 1, the step
+  /// reads its start time from z and advances it by h. The order is read on (q, p), the
+  /// symplecticity on the time-t map, ρ reverses t too, and the energy (not conserved) is not
+  /// judged (chapter "Verify your own integrator", section "Time-dependent systems").
+  bool timed = false;
   verify::Field<dd_real> field;  ///< Hamilton's equations, for the reference (unless `reference`)
   /// Optional: the reference in the system's own coordinates, used instead of integrating
   /// `field`. Called with z0 = (q, p) and a time t, it returns the exact solution's (q, p) at

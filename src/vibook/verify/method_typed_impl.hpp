@@ -20,13 +20,27 @@ void measure_typed_dim(const MethodSpec& spec, const TypedDiscreteLagrangian& sy
   // --potential gives the system as H = |p|²/2 + V(q) (check_typed_potential), --lagrangian as
   // L(q, v) typed: the Galerkin method of L = |v|²/2 − V(q) for the first.
   const bool typed_lagrangian = !sys.default_system() && !sys.has_hamiltonian();
+  const TypedDiscreteLagrangian* s = &sys;
+  if (sys.time_dependent()) {
+    // L(q, v, t): the typed Lagrangian, or |v|²/2 − V(q, t); the Galerkin step evaluates it at
+    // the nodes' times t + c_i h (study.timed: the state carries the clock).
+    const auto lagrangian = [s, typed_lagrangian](
+                                const auto& q, const auto& v,
+                                const auto& t) -> std::remove_cvref_t<decltype(q(0))> {
+      using T = std::remove_cvref_t<decltype(q(0))>;
+      if (typed_lagrangian) return s->template lagrangian<N, T>(Vec<T, N>(q), Vec<T, N>(v), t);
+      return T(constant<T>(0.5) * squared_norm(v) - s->template potential<N, T>(Vec<T, N>(q), t));
+    };
+    measure(spec, N, system, study, rep,
+            galerkin_step_of<N>(lagrangian, spec.rule, "measure_method_typed"));
+    return;
+  }
   if (!typed_lagrangian) {
     const TypedPotential<N> prob{&sys};
     measure(spec, N, system, study, rep, galerkin_step(prob, spec.rule, "measure_method_typed"));
     return;
   }
   // L(q, v) typed after --lagrangian, on the tree in the integrator's nested AutoDiff numbers
-  const TypedDiscreteLagrangian* s = &sys;
   const auto lagrangian = [s](const auto& q, const auto& v) -> std::remove_cvref_t<decltype(q(0))> {
     using T = std::remove_cvref_t<decltype(q(0))>;
     return s->template lagrangian<N, T>(Vec<T, N>(q), Vec<T, N>(v));

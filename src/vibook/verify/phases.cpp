@@ -131,16 +131,59 @@ json ScalingJudgement::to_json() const {
           {"passed", passed}};
 }
 
+void reverse_momenta(Eigen::VectorXd& z) {
+  const Eigen::Index n = z.size() / 2;
+  z.segment(n, n) *= -1;
+  if (z.size() > 2 * n) z(2 * n) *= -1;
+}
+
+namespace {
+
+// Φ'(z)·U by fourth-order central differences along each column of U (unit vectors), the
+// increment delta·max(1, |z|_max).
+Eigen::MatrixXd step_jacobian_along(const Step& step, const Eigen::VectorXd& z, double h,
+                                    const Eigen::MatrixXd& U, double delta) {
+  const double d = delta * std::max(1.0, z.lpNorm<Eigen::Infinity>());
+  Eigen::MatrixXd JU(z.size(), U.cols());
+  for (Eigen::Index j = 0; j < U.cols(); ++j) {
+    auto at = [&](double s) {
+      Eigen::VectorXd w = z + s * d * U.col(j);
+      step(w, h);
+      return w;
+    };
+    JU.col(j) = (8 * (at(1) - at(-1)) - (at(2) - at(-2))) / (12 * d);
+  }
+  return JU;
+}
+
+}  // namespace
+
 ScalingJudgement symplecticity_by_scaling(const Step& step,
                                           const std::vector<Eigen::VectorXd>& states, double h,
-                                          int sizes) {
+                                          int sizes, const TangentBasis& tangent) {
   ScalingJudgement j = scan(h, sizes, [&](double hk) {
     double d = 0, r = 0;
     for (const auto& z : states) {
+      if (tangent) {  // the map restricted to the constraint manifold
+        const Eigen::Index n = z.size() / 2;
+        const Eigen::MatrixXd W = omega(n), U = tangent(z);
+        const Eigen::MatrixXd JU = step_jacobian_along(step, z, hk, U, 1e-3);
+        const Eigen::MatrixXd JU2 = step_jacobian_along(step, z, hk, U, 2e-3);
+        if (!JU.allFinite() || !JU2.allFinite())
+          throw NumericalError("the Jacobian of the map is not finite");
+        const double size = std::max(1.0, JU.lpNorm<Eigen::Infinity>());
+        d = std::max(d,
+                     (JU.transpose() * W * JU - U.transpose() * W * U).lpNorm<Eigen::Infinity>() /
+                         (size * size));
+        r = std::max(
+            r, std::max(1024 * kU, 4 * double(n) * (JU - JU2).lpNorm<Eigen::Infinity>() / size));
+        continue;
+      }
+      // the time-t map's Jacobian in (q, p) when z = (q, p, t) carries the clock
       const Eigen::Index n = z.size() / 2;
       const Eigen::MatrixXd W = omega(n);
-      const Eigen::MatrixXd J = step_jacobian(step, z, hk, 1e-3);
-      const Eigen::MatrixXd J2 = step_jacobian(step, z, hk, 2e-3);
+      const Eigen::MatrixXd J = step_jacobian(step, z, hk, 1e-3).topRows(2 * n);
+      const Eigen::MatrixXd J2 = step_jacobian(step, z, hk, 2e-3).topRows(2 * n);
       if (!J.allFinite() || !J2.allFinite())
         throw NumericalError("the Jacobian of the map is not finite");
       const double size = std::max(1.0, J.lpNorm<Eigen::Infinity>());
@@ -199,10 +242,24 @@ ScalingJudgement reversibility_by_scaling(const Step& step,
                                           const std::vector<Eigen::VectorXd>& states, double h,
                                           int sizes) {
   return two_steps(step, states, h, sizes, [&](Eigen::VectorXd& z, double hk) {
-    const Eigen::Index n = z.size() / 2;
-    z.tail(n) *= -1;
+    reverse_momenta(z);
     step(z, hk);
-    z.tail(n) *= -1;
+    reverse_momenta(z);
+  });
+}
+
+ScalingJudgement constraint_by_scaling(const Step& step, const Eigen::VectorXd& z0, double h,
+                                       long long steps, const Observable& residual, int sizes) {
+  return scan(h, sizes, [&](double hk) {
+    Eigen::VectorXd z = z0;
+    double worst = residual(z), size = std::max(1.0, z.lpNorm<Eigen::Infinity>());
+    for (long long k = 0; k < steps; ++k) {
+      step(z, hk);
+      if (!z.allFinite()) throw NumericalError("the state is not finite");
+      worst = std::max(worst, residual(z));
+      size = std::max(size, z.lpNorm<Eigen::Infinity>());
+    }
+    return std::pair{worst, 1024 * kU * size * size};
   });
 }
 
@@ -212,9 +269,9 @@ ReversingSymmetry momentum_reversal(const Observable& H,
     for (double scale : {1.0, 0.5, 2.0}) {
       const Eigen::Index n = z0.size() / 2;
       Eigen::VectorXd z = z0;
-      z.tail(n) *= scale;
+      z.segment(n, n) *= scale;
       Eigen::VectorXd r = z;
-      r.tail(n) *= -1;
+      reverse_momenta(r);
       double a = kNaN, b = kNaN;
       try {
         a = H(z);
@@ -225,11 +282,17 @@ ReversingSymmetry momentum_reversal(const Observable& H,
       if (!std::isfinite(a) || !std::isfinite(b)) continue;
       if (std::abs(a - b) > 1e-12 * std::max(1.0, std::abs(a))) {
         std::vector<double> q(z.data(), z.data() + n), p(z.data() + n, z.data() + 2 * n);
+        if (z.size() > 2 * n)
+          return {false, fmt::format("H(q, -p, -t) = {:.6g} differs from H(q, p, t) = {:.6g} at "
+                                     "q = ({}), p = ({}), t = {}",
+                                     b, a, fmt::join(q, ", "), fmt::join(p, ", "), z(2 * n))};
         return {false, fmt::format("H(q, -p) = {:.6g} differs from H(q, p) = {:.6g} at q = "
                                    "({}), p = ({})",
                                    b, a, fmt::join(q, ", "), fmt::join(p, ", "))};
       }
     }
+  if (!states.empty() && states.front().size() % 2)
+    return {true, "H(q, -p, -t) = H(q, p, t) at the sample states"};
   return {true, "H(q, -p) = H(q, p) at the sample states"};
 }
 

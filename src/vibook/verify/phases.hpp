@@ -9,6 +9,7 @@
 /// Chapter: \ref chapter-verify, section "The criteria of every route".
 #pragma once
 
+#include <functional>
 #include <limits>
 #include <string>
 #include <vector>
@@ -59,14 +60,37 @@ constexpr double kMaxResolution = 1e-4;
 /// kMaxResolution at any size is a NO (the Jacobian cannot be measured). The largest over `states`
 /// at each size. A step size at which the method fails (NumericalError) is left out; the smallest
 /// must succeed (its error propagates).
+/// With `tangent` (a constrained system: an orthonormal basis U of the tangent space of the
+/// constraint manifold at a state, as columns), the test is that of the map restricted to the
+/// manifold: D(h) = |(JU)ᵀΩ(JU) − UᵀΩU|_max / max(1, |JU|_max²), JU by the same differences
+/// along U's columns (increment relative to max(1, |z|_max)).
+using TangentBasis = std::function<Eigen::MatrixXd(const Eigen::VectorXd&)>;
 ScalingJudgement symplecticity_by_scaling(const Step& step,
                                           const std::vector<Eigen::VectorXd>& states, double h,
-                                          int sizes = kScalingSizes);
+                                          int sizes = kScalingSizes,
+                                          const TangentBasis& tangent = {});
+
+/// A constraint kept by the map: the largest `residual` over `steps` steps from z0 at each step
+/// size h·2^k, with the resolution 2^10 u max(1, |z|_max)² over the run (a quadratic constraint
+/// evaluated at a state of that size, as a solve to round-off leaves it; the residual does not
+/// accumulate, each step solves for it anew). A method that keeps the constraint leaves
+/// round-off; one that does not leaves a residual that grows with h.
+ScalingJudgement constraint_by_scaling(const Step& step, const Eigen::VectorXd& z0, double h,
+                                       long long steps, const Observable& residual,
+                                       int sizes = kScalingSizes);
 
 /// Symmetry: |Φ_{−h}(Φ_h(z)) − z|_max / max(1, |z|_max), resolution 2^12 u max(1, |J|_max) with
 /// J the Jacobian of one step (the round-off of two solves amplified by the map).
 ScalingJudgement symmetry_by_scaling(const Step& step, const std::vector<Eigen::VectorXd>& states,
                                      double h, int sizes = kScalingSizes);
+
+/// The reversing symmetry ρ in place: (q, p) ↦ (q, −p), and (q, p, t) ↦ (q, −p, −t) for the
+/// state of a time-dependent system (its clock last).
+void reverse_momenta(Eigen::VectorXd& z);
+
+/// A state of a time-dependent system carries its time last (z = (q, p, t), an odd size): the
+/// symplecticity test reads the time-t map's Jacobian in (q, p), ρ reverses t too, and the
+/// symmetry test steps back in time with the step.
 
 /// Reversibility under ρ(q, p) = (q, −p): |ρΦ_hρΦ_h(z) − z|_max / max(1, |z|_max), with the
 /// resolution of symmetry_by_scaling.

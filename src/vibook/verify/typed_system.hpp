@@ -41,14 +41,29 @@ decltype(auto) with_dim(int n, F&& f) {
 
 /// The typed Lagrangian of `sys` (`--lagrangian`, in q and v) at w = (q, v): its value, gradient
 /// and Hessian in the 2N variables, by nested forward AutoDiff in T on the expression tree.
+/// A time-dependent L is evaluated at the time t (a constant here).
 template <int N, class T>
 void lagrangian_derivatives(const TypedDiscreteLagrangian& sys, const Vec<T, 2 * N>& w, T& value,
-                            Vec<T, 2 * N>& g, Mat<T, 2 * N>& H) {
+                            Vec<T, 2 * N>& g, Mat<T, 2 * N>& H, const T& t = T(0.0)) {
   value_gradient_hessian<2 * N, T>(
       [&](const auto& x) {
         using S = scalar_t<decltype(x)>;
         const Vec<S, N> qs = x.template head<N>(), vs = x.template tail<N>();
-        return sys.lagrangian<N, S>(qs, vs);
+        return sys.lagrangian<N, S>(qs, vs, constant_of<S>(t));
+      },
+      w, value, g, H);
+}
+
+/// The same in the 2N + 1 variables (q, v, t) of a time-dependent L: its Euler–Lagrange
+/// equations need ∂²L/∂v∂t besides.
+template <int N, class T>
+void lagrangian_derivatives_timed(const TypedDiscreteLagrangian& sys, const Vec<T, 2 * N + 1>& w,
+                                  T& value, Vec<T, 2 * N + 1>& g, Mat<T, 2 * N + 1>& H) {
+  value_gradient_hessian<2 * N + 1, T>(
+      [&](const auto& x) {
+        using S = scalar_t<decltype(x)>;
+        const Vec<S, N> qs = x.template head<N>(), vs = x.template segment<N>(N);
+        return sys.lagrangian<N, S>(qs, vs, x(2 * N));
       },
       w, value, g, H);
 }

@@ -39,12 +39,22 @@ using Observable = std::function<double(const Eigen::VectorXd& z)>;
 
 /// Advance a position–momentum integrator (DelIntegrator, ExplicitKernel, … : anything with
 /// `step(Vec<double,N>& q, Vec<double,N>& p, double h)`) on the packed state z = (q, p).
+/// A state of 2N + 1 components is that of a time-dependent system, z = (q, p, t): the
+/// integrator is told the step's start time (`set_time`) and the clock advances by h.
 template <int N, class Integrator>
 void step_qp(Integrator& integrator, Eigen::VectorXd& z, double h) {
-  Eigen::Matrix<double, N, 1> q = z.head<N>(), p = z.tail<N>();
+  Eigen::Matrix<double, N, 1> q = z.head<N>(), p = z.segment<N>(N);
+  const bool timed = z.size() == 2 * N + 1;
+  if (timed) {
+    if constexpr (requires { integrator.set_time(z(2 * N)); })
+      integrator.set_time(z(2 * N));
+    else
+      throw std::logic_error("step_qp: this integrator does not step a time-dependent system");
+  }
   integrator.step(q, p, h);
   z.head<N>() = q;
-  z.tail<N>() = p;
+  z.segment<N>(N) = p;
+  if (timed) z(2 * N) += h;
 }
 
 /// Integrate from z0 over [0, T] with steps of size h (the last one shortened to end at T).
@@ -202,9 +212,11 @@ inline PlateauFit fit_order_plateau(const std::vector<double>& h, const std::vec
 /// increment `delta` in each coordinate (error ~ delta⁴ + (solver tolerance)/delta).
 inline Eigen::MatrixXd step_jacobian(const Step& step, const Eigen::VectorXd& z, double h,
                                      double delta = 1e-3) {
-  const Eigen::Index n = z.size();
-  Eigen::MatrixXd J(n, n);
-  for (Eigen::Index j = 0; j < n; ++j) {
+  // A time-dependent system's state z = (q, p, t) carries the clock last: the Jacobian is that
+  // of the time-t map, the derivatives in (q, p) only (a column fewer).
+  const Eigen::Index n = z.size(), cols = n - n % 2;
+  Eigen::MatrixXd J(n, cols);
+  for (Eigen::Index j = 0; j < cols; ++j) {
     const double d = delta * std::max(1.0, std::abs(z(j)));
     auto at = [&](double s) {
       Eigen::VectorXd w = z;

@@ -1,0 +1,58 @@
+// A stepper library of vibook's C ABI version 2 (vibook/verify/stepper_abi.h): one step from a
+// given time, for a time-dependent system. `vibook verify --stepper-lib vibook_forced_steppers.so
+// --stepper-arg METHOD --hamiltonian 'p^2/2 - cos(q) - q*cos(t)/2' --expected-order 2` measures
+// it. The system is the forced pendulum H = p²/2 − cos q − q cos(t)/2 (one degree of freedom).
+//
+// METHOD: sv        Störmer–Verlet with the time as a drifting variable: half a kick at t, a
+//                   drift of h, half a kick at t + h; order 2, symplectic, symmetric.
+//         sv_stale  deliberately wrong: the second half kick still at t (the time advanced by
+//                   the drift with coefficient 0); Störmer–Verlet on an autonomous system,
+//                   order 1 on this one.
+#include <cmath>
+#include <cstring>
+#include <new>
+
+#include "vibook/verify/stepper_abi.h"
+
+namespace {
+
+struct Stepper {
+  bool stale = false;
+};
+
+double force(double q, double t) { return -std::sin(q) + 0.5 * std::cos(t); }
+
+const char* last_message = nullptr;
+
+}  // namespace
+
+extern "C" {
+
+int vibook_stepper_abi_version(void) { return 2; }
+
+void* vibook_stepper_create(int dof, const char* arg) {
+  if (dof != 1) {
+    last_message = "the forced pendulum has one degree of freedom";
+    return nullptr;
+  }
+  const bool stale = std::strcmp(arg, "sv_stale") == 0;
+  if (!stale && std::strcmp(arg, "sv") != 0) {
+    last_message = "unknown method: sv or sv_stale";
+    return nullptr;
+  }
+  return new (std::nothrow) Stepper{stale};
+}
+
+int vibook_stepper_step_t(void* context, double t, double h, double* q, double* p) {
+  const auto* s = static_cast<const Stepper*>(context);
+  p[0] += 0.5 * h * force(q[0], t);
+  q[0] += h * p[0];
+  p[0] += 0.5 * h * force(q[0], s->stale ? t : t + h);
+  return std::isfinite(q[0]) && std::isfinite(p[0]) ? 0 : 1;
+}
+
+void vibook_stepper_destroy(void* context) { delete static_cast<Stepper*>(context); }
+
+const char* vibook_stepper_message(void* context) { return context ? nullptr : last_message; }
+
+}  // extern "C"

@@ -1,0 +1,43 @@
+/// \file constrained.hpp
+/// \brief Constrained mechanical systems for `vibook verify` (chapter "Verify your own
+/// integrator", section "Constrained systems"): H = |p|²/2 + V(q) on the cotangent bundle of
+/// Q = {q : g(q) = 0}, with m holonomic constraints g in Cartesian coordinates, and the
+/// RATTLE method (Andersen 1983; Leimkuhler & Skeel 1994; HLW §VII.1.4) measured on it by the
+/// map study: the order against the index-1 equations integrated in double-double, the
+/// position constraint g(q) = 0 and the hidden constraint G(q) p = 0 (G = ∂g/∂q) along runs,
+/// symplecticity of the map restricted to the tangent space of the constraint manifold,
+/// symmetry, reversibility and the energy.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "vibook/verify/map_study.hpp"
+
+namespace vibook::verify {
+
+/// A test problem with constraints: its name, H and g as printed, and an initial state on the
+/// constraint manifold (g(q0) = 0 and G(q0) p0 = 0 to rounding).
+struct ConstrainedProblem {
+  std::string name, hamiltonian, constraints;
+  std::vector<double> q0, p0;
+};
+
+/// The spherical pendulum (q ∈ R³, |q| = 1, V = q₃) and the planar double pendulum in the
+/// Cartesian positions of its two bobs (q ∈ R⁴, unit lengths and masses, V = y₁ + y₂).
+const std::vector<ConstrainedProblem>& constrained_problems();
+
+/// The constrained problem of that name, or nullptr.
+const ConstrainedProblem* find_constrained_problem(const std::string& name);
+
+/// RATTLE on `problem` from (q0, p0), measured by measure_map (`study` holds the measurement
+/// settings), appended to `rep`. With `project_velocity` false the method is RATTLE's first
+/// half alone, the momentum left unprojected on the hidden constraint (`shake`: SHAKE's
+/// positions with velocities that leave the cotangent bundle; a deliberately wrong method).
+/// An ArgumentError naming --q0 or --p0 when the state is not on the manifold (residual above
+/// 1e-10); the constraint forces' solves report their residual and iterations in a SolveError.
+void measure_constrained(const ConstrainedProblem& problem, bool project_velocity,
+                         const std::vector<double>& q0, const std::vector<double>& p0,
+                         MapStudy study, MapMeasurement& rep);
+
+}  // namespace vibook::verify
