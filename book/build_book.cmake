@@ -202,6 +202,22 @@ vibook_verify_case(verify-method-typed.txt 0 --method lobatto:3 --potential x^2/
 vibook_verify_case(verify-method-lagrangian.txt 0 --method gauss:2 --lagrangian
                    "sqrt(1+q[2]^2)*v[1]^2/2 + v[2]^2/(2*sqrt(1+q[2]^2)) - q[1]^2/2 - q[2]^4/4"
                    --q0 0.3,0.5 --p0 0.2,-0.1)
+# Time-dependent systems (the chapter's section "Time-dependent systems"): Gauss 2 on a forced
+# oscillator must pass; the midpoint L_d with the forcing at the step's start time must fail
+# (order 1); a Python Stormer-Verlet over line protocol 2 on a forced pendulum must pass.
+vibook_verify_case(verify-time-gauss2.txt 0 --method gauss:2 --lagrangian "v^2/2 - q^2/2 + q*cos(t)"
+                   --q0 0.5 --p0 0 --expected-order 4)
+vibook_verify_case(verify-time-ld-stale.txt 5 --ld
+                   "h*(((q1-q0)/h)^2/2 + cos((q0+q1)/2) + (q0+q1)/2*cos(t)/2)"
+                   "--potential=-cos(x) - x*cos(t)/2" --q0 0.5 --p0 0 --symmetric)
+vibook_verify_case(verify-time-python.txt 0 --stepper-cmd
+                   "python3 ${SOURCE_DIR}/examples/black_box/forced_stepper.py sv forced-pendulum"
+                   --stepper-protocol 2 --hamiltonian "p^2/2 - cos(q) - q*cos(t)/2" --q0 0.5 --p0 0
+                   --expected-order 2 --symmetric)
+# Constrained systems (the chapter's section "Constrained systems"): RATTLE on the spherical
+# pendulum must pass; without its velocity projection it must fail (the hidden constraint).
+vibook_verify_case(verify-rattle.txt 0 --method rattle --problem spherical-pendulum)
+vibook_verify_case(verify-shake.txt 5 --method shake --problem spherical-pendulum)
 # Every Galerkin method on Kepler and Henon-Heiles is the long study field-audit-galerkin (rows
 # A-GAUSS1 ... A-LOBATTO5 of the ledger), measured in step 2 when VIBOOK_LONG_STUDIES is set.
 
@@ -218,7 +234,7 @@ vibook_verify_case(verify-stepper-python.txt 5 --stepper-cmd
                    "python3 ${SOURCE_DIR}/examples/black_box/stepper.py ruth3_swapped pendulum"
                    --problem pendulum --expected-order 3 --steps 4096)
 foreach(f verify-stepper-odeint.txt verify-stepper-cached.txt verify-stepper-rk78.txt
-          verify-stepper-python.txt)
+          verify-stepper-python.txt verify-time-python.txt)
   # the build tree's and the source tree's paths are not the reader's
   file(READ ${GEN}/${f} text)
   string(REPLACE "${STEPPER_LIB}" "vibook_odeint_steppers.so" text "${text}")
