@@ -5,6 +5,7 @@
 #include "verify_composition.hpp"
 
 #include <cmath>
+#include <mutex>
 #include "verify_map.hpp"
 
 #include <string>
@@ -15,7 +16,10 @@
 #include "vibook/core/output_file.hpp"
 #include "vibook/core/precision.hpp"
 #include "vibook/integrators/composition.hpp"
+#include "vibook/modified/engine.hpp"
+#include "vibook/verify/composition_ld_study.hpp"
 #include "vibook/verify/composition_study.hpp"
+#include "vibook/verify/expression.hpp"
 #include "vibook/verify/method_symbolic.hpp"
 
 namespace vibook::cli {
@@ -113,9 +117,21 @@ int run_composition(const CompositionOptions& o) {
                           "gives the system; --problem names a test problem: give one of them");
     verify::CompositionSpec spec = verify::splitting_spec("--splitting", o.splitting);
     check_expected(o, spec);
+    // A potential V(q, t): the drifts advance the time, the kicks read it (the extended
+    // Hamiltonian's split, T + p_t and V). The stage L_d then has no part in the study (the
+    // variational order is not measured for a time-dependent system): its kinetic part only.
+    bool timed = false;
+    {
+      std::lock_guard<std::mutex> lock(modified::ginac_mutex());
+      verify::TypedTexts t{"", o.potential, "", "p^2/2 + V(q)", 0};
+      t.system_only = true;
+      t.allow_time = true;
+      timed = verify::TypedDiscreteLagrangian(t).time_dependent();
+    }
     CompositionOptions typed = o;
     typed.base = "ld";
-    typed.ld = "h*((q1-q0)^2/(2*h^2) - V(q1))";
+    typed.allow_time = timed;
+    typed.ld = verify::splitting_stage_ld(timed);
     return run_composition_ld(typed, std::move(spec));
   }
   if (o.splitting.empty() && o.base == "ld") {

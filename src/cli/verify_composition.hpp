@@ -18,6 +18,8 @@ struct CompositionOptions : StudyOptions {
   /// --composition ld: the typed discrete Lagrangian and the system, as for --ld
   std::string ld, potential, lagrangian, hamiltonian, dim;
   std::string symbolic = "auto";  ///< --symbolic: when the engine derives the variational order
+  /// The system may depend on the time t (a splitting on --potential: its drifts carry the time)
+  bool allow_time = false;
 };
 
 /// Run it; the exit status as for `vibook verify` (0 pass, 5 a verdict failed, 2, 3, 4).

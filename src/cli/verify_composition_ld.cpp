@@ -43,8 +43,9 @@ int run_composition_ld(const CompositionOptions& t, verify::CompositionSpec spec
   std::unique_ptr<verify::TypedDiscreteLagrangian> dl;
   {
     std::lock_guard<std::mutex> lock(modified::ginac_mutex());
-    dl = std::make_unique<verify::TypedDiscreteLagrangian>(
-        verify::TypedTexts{t.ld, t.potential, t.lagrangian, hamiltonian, dim});
+    verify::TypedTexts texts{t.ld, t.potential, t.lagrangian, hamiltonian, dim};
+    texts.allow_time = t.allow_time;
+    dl = std::make_unique<verify::TypedDiscreteLagrangian>(texts);
   }
   if (dl->dim() > 3)
     throw ArgumentError("--ld", fmt::format("is {}-dimensional; --composition ld runs in 1 to 3 "

@@ -36,6 +36,16 @@ case_ ld-midpoint 0 "" 'L_d\(t, q0, q1, h\)' 'order +(1\.9|2\.0)[0-9]* over .*: 
 case_ ld-midpoint-stale 5 "order,symmetric,time-reversible" 'order +(0\.9|1\.0)[0-9]* over .*: NO' \
   -- --ld "$STALE" --potential='-cos(x) - x*cos(t)/2' --q0 0.5 --p0 0 --symmetric
 
+# A splitting on V(q, t): the drifts carry the time (the extended Hamiltonian's T + p_t), the
+# kicks read it. Forest-Ruth keeps its order 4 and its symmetry on the forced pendulum; the
+# variant with its last half drift moved to the front fails there as on autonomous systems.
+case_ splitting-forest-ruth-forced 0 "" 'order +(3\.9|4\.0)[0-9]* over .*: yes' \
+  'V\(q, t\)' 'time-reversible .*: yes' \
+  -- --splitting forest-ruth --potential='-cos(x) - x*cos(t)/2' --q0 0.5 --p0 0
+case_ splitting-moved-forced 5 "order conditions,order" 'order +(0\.9|1\.0)[0-9]* over .*: NO' \
+  -- --splitting "drift:1/(2-2^(1/3)),kick:1/(2-2^(1/3)),drift:(1-2^(1/3))/(2*(2-2^(1/3))),kick:-2^(1/3)/(2-2^(1/3)),drift:(1-2^(1/3))/(2*(2-2^(1/3))),kick:1/(2-2^(1/3))" \
+  --potential='-cos(x) - x*cos(t)/2' --q0 0.5 --p0 0 --expected-order 4
+
 # A Python stepper over line protocol 2 on the forced pendulum; its variant whose second half
 # kick reads the force at the step's start time fails there, and passes on the autonomous one.
 FORCED='p^2/2 - cos(q) - q*cos(t)/2'
@@ -69,6 +79,8 @@ arg protocol-3 --stepper-protocol --stepper-cmd "python3 $STEPPER sv pendulum" \
   --stepper-protocol 3 --hamiltonian 'p^2/2 - cos(q)' --expected-order 2
 arg tableau-with-t --potential --tableau "$(dirname "$STEPPER")/../tableaus/stormer-verlet.json" \
   --potential 'x^2/2 - x*cos(t)'
+arg composition-ld-with-t --ld --composition ld --coefficients yoshida4 \
+  --ld 'h*((q1-q0)/h)^2/2 - h*t*q0^2' --potential 'x^2'
 arg ld-only-t --ld --ld 'h*((q1-q0)/h)^2/2 - h*cos(q0)*t' --potential='-cos(x)'
 arg ld-calls-timed-v --ld --ld 'h*((q1-q0)/h)^2/2 - h*V(q0)' --potential 'x^2/2 - x*cos(t)'
 arg ld-timed-adaptive --adaptive --ld "$MID" --potential='-cos(x) - x*cos(t)/2' --adaptive epavi

@@ -94,9 +94,15 @@ void measure_n(const TypedLdSystem& o, const TypedDiscreteLagrangian& dl, Compos
                MapStudy study, SymbolicUse symbolic, MapMeasurement& rep) {
   const std::vector<double>& q0 = o.q0;
   const std::vector<double>& p0 = o.p0;
-  const Symmetry sym = decide_symmetry<N>(dl);
-  const CompositionBase base{"ld", sym.symmetric,
-                             "the typed discrete Lagrangian L_d = " + o.ld + "; " + sym.how};
+  // A time-dependent system reaches here only as a splitting on V(q, t) (the CLI refuses t in
+  // a --composition ld): its base is symplectic Euler, whose drift also advances the time.
+  const bool timed = dl.time_dependent();
+  const Symmetry sym = timed ? Symmetry{false, "not symmetric"} : decide_symmetry<N>(dl);
+  const CompositionBase base{
+      timed ? "se" : "ld", sym.symmetric,
+      timed ? "symplectic Euler on the extended phase space: a drift (which also advances the "
+              "time), then a kick at the time reached; its adjoint, a kick, then a drift"
+            : "the typed discrete Lagrangian L_d = " + o.ld + "; " + sym.how};
   spec.base = &base;
   // The base stage: the DEL step of L_d through the compiled tape; the adjoint stage: the DEL
   // step of -L_d(q1, q0, -h) by nested AutoDiff. Each stage starts Newton from q + h p (the
@@ -135,9 +141,10 @@ void measure_n(const TypedLdSystem& o, const TypedDiscreteLagrangian& dl, Compos
     line = set_typed_lagrangian(study, dl, o.lagrangian, q0, p0);
   } else {
     set_typed_system<N>(study, dl, z0);
-    const std::string system = o.hamiltonian.empty()
-                                   ? "H = |p|^2/2 + V(q), V = " + o.potential + " (--potential)"
-                                   : "H = " + o.hamiltonian + " (--hamiltonian)";
+    const std::string system = o.hamiltonian.empty() ? (timed ? "H = |p|^2/2 + V(q, t), V = "
+                                                              : "H = |p|^2/2 + V(q), V = ") +
+                                                           o.potential + " (--potential)"
+                                                     : "H = " + o.hamiltonian + " (--hamiltonian)";
     line = fmt::format("{}, {} degree{} of freedom; q0 = {}, p0 = {}", system, N, N == 1 ? "" : "s",
                        vec_text(q0), vec_text(p0));
   }
@@ -165,28 +172,38 @@ void measure_n(const TypedLdSystem& o, const TypedDiscreteLagrangian& dl, Compos
     const Field<dd_real> field = study.field;
     // The same flows in double-double, for the order study where double's local slopes do
     // not settle (map_study.cpp).
-    study.step_dd = splitting_step_dd(spec.flows, field, N);
+    // (Not for a time-dependent system: the double-double flows are autonomous.)
+    if (!timed) study.step_dd = splitting_step_dd(spec.flows, field, N);
+    // With the clock in the state (z = (q, p, t)) the field reads the time, and the drift
+    // advances it.
     auto kick = [field](Eigen::VectorXd& z, double c) {
-      std::vector<dd_real> x(2 * N);
-      for (int i = 0; i < 2 * N; ++i) x[static_cast<std::size_t>(i)] = dd_real(z(i));
+      std::vector<dd_real> x(static_cast<std::size_t>(z.size()));
+      for (Eigen::Index i = 0; i < z.size(); ++i) x[static_cast<std::size_t>(i)] = dd_real(z(i));
       const std::vector<dd_real> f = field(x);
       for (int i = 0; i < N; ++i) z(N + i) += c * to_double(f[static_cast<std::size_t>(N + i)]);
     };
+    auto drift = [](Eigen::VectorXd& z, double c) {
+      z.head<N>() += c * z.segment<N>(N);
+      if (z.size() > 2 * N) z(2 * N) += c;
+    };
+    // The stage's L_d (the variational order's), not read for a time-dependent system.
     auto value = [](const auto& ld, const Eigen::VectorXd& from, const Eigen::VectorXd& z,
                     double h) {
+      if (z.size() > 2 * N) return 0.0;
       const Vec<double, N> a = from.head<N>(), b = z.head<N>();
       return double(ld(a, b, h));
     };
-    const CompositionStage se = [kick, value, Ld](Eigen::VectorXd& z, double h) {
+    const CompositionStage se = [kick, drift, value, Ld](Eigen::VectorXd& z, double h) {
       const Eigen::VectorXd from = z;
-      z.head<N>() += h * z.tail<N>();
+      drift(z, h);
       kick(z, h);
       return value(Ld, from, z, h);
     };
-    const CompositionStage se_adjoint = [kick, value, adjoint_ld](Eigen::VectorXd& z, double h) {
+    const CompositionStage se_adjoint = [kick, drift, value, adjoint_ld](Eigen::VectorXd& z,
+                                                                         double h) {
       const Eigen::VectorXd from = z;
       kick(z, h);
-      z.head<N>() += h * z.tail<N>();
+      drift(z, h);
       return value(adjoint_ld, from, z, h);
     };
     measure_composition(spec, se, se_adjoint, line, study, rep);
@@ -278,6 +295,10 @@ void measure_timed_ld(const TypedDiscreteLagrangian& dl, const TypedLdSystem& sy
     default:
       return measure_timed_ld_n<3>(dl, system, study, rep);
   }
+}
+
+std::string splitting_stage_ld(bool time_dependent) {
+  return time_dependent ? "h*((q1-q0)^2/(2*h^2))" : "h*((q1-q0)^2/(2*h^2) - V(q1))";
 }
 
 void measure_ld_composition(CompositionSpec spec, const TypedDiscreteLagrangian& dl,

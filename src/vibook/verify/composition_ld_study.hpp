@@ -33,6 +33,12 @@ void measure_ld_composition(CompositionSpec spec, const TypedDiscreteLagrangian&
                             const TypedLdSystem& system, const MapStudy& study,
                             SymbolicUse symbolic, MapMeasurement& rep);
 
+/// The stage discrete Lagrangian a splitting on a typed potential is measured with (symplectic
+/// Euler's, drift then kick, whose value gives the variational order): with V(q1), or for a
+/// time-dependent V its kinetic part alone (the variational order is then not measured, and V
+/// has no time inside an L_d).
+std::string splitting_stage_ld(bool time_dependent);
+
 /// A typed discrete Lagrangian of a time-dependent system, L_d(t, q0, q1, h) with t the step's
 /// start time (`vibook verify --ld` when a text uses t; chapter "Verify your own integrator",
 /// section "Time-dependent systems"): its discrete Euler–Lagrange step p0 = −D1 L_d(t, q0, q1,

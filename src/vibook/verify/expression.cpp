@@ -664,11 +664,13 @@ void TypedDiscreteLagrangian::finish_pass(const TypedTexts& t, bool scalar_vars)
                       : ld_uses_t_            ? "--ld"
                       : !t.lagrangian.empty() ? "--lagrangian"
                                               : "--hamiltonian";
-    throw ArgumentError(arg,
-                        "uses the time t: this command does not step a time-dependent system "
-                        "(vibook verify does, with --method, --ld and a black-box stepper; see "
-                        "the chapter \"Verify your own integrator\", section \"Time-dependent "
-                        "systems\")");
+    throw ArgumentError(
+        arg,
+        "uses the time t: this command does not step a time-dependent system "
+        "(vibook verify does, with --method, --ld, --splitting and a black-box stepper; "
+        "see "
+        "the chapter \"Verify your own integrator\", section \"Time-dependent "
+        "systems\")");
   }
 }
 

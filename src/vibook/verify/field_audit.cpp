@@ -262,6 +262,15 @@ void measure_forced(const AuditEntry& a, const std::string& problem_name, MapStu
                     MapMeasurement& rep) {
   const ForcedSystem f = forced_system(problem_name, a.forced_time);
   const std::vector<double> q0{0.5}, p0{0.0};
+  if (!a.splitting.empty()) {  // as `vibook verify --splitting NAME --potential V(x, t)`
+    const std::string ld = splitting_stage_ld(true);
+    TypedTexts t{ld, f.potential, "", "p^2/2 + V(q)", 0};
+    t.allow_time = true;
+    const TypedDiscreteLagrangian dl(t);
+    measure_ld_composition(splitting_spec("--splitting", a.splitting), dl,
+                           {ld, f.potential, "", "", q0, p0}, study, SymbolicUse::never, rep);
+    return;
+  }
   if (!a.method.empty()) {
     TypedTexts t{"", "", f.lagrangian, "", 0};
     t.system_only = true;
@@ -588,6 +597,8 @@ claims::ClaimResult judge_audit_entry(const AuditEntry& a) {
                   a.stepper, ms[0].expected, a.symmetric_claimed ? " --symmetric" : "")
         : !a.splitting.empty()   ? "--splitting " + a.splitting
         : !a.constrained.empty() ? "--method " + a.constrained + " --problem PROBLEM"
+        : a.forced && !a.splitting.empty()
+            ? "--splitting " + a.splitting + " --potential V(x, t) --q0 0.5 --p0 0"
         : a.forced && !a.method.empty()
             ? "--method " + a.method + " --lagrangian L(q, v, t) --q0 0.5 --p0 0"
         : a.forced ? "--ld L_d(t, q0, q1, h) --potential V(x, t) --q0 0.5 --p0 0 --symmetric"
@@ -843,6 +854,15 @@ const std::vector<AuditEntry>& audit_entries() {
             "t + c_i h, and the same holds.";
         r.push_back(g);
       }
+      AuditEntry fr = published_splitting("forest-ruth");
+      fr.forced = true;
+      fr.problems = forced;
+      fr.info.id = "A-FORCED-SPLIT-FOREST-RUTH";
+      fr.info.title = "forced: " + fr.info.title;
+      fr.statement +=
+          " On H(q, p, t) = |p|²/2 + V(q, t) the drifts carry the time (the split "
+          "of the extended Hamiltonian), and the same holds.";
+      r.push_back(fr);
       AuditEntry mid;
       mid.forced = true;
       mid.forced_time = "t+h/2";

@@ -45,8 +45,9 @@ struct AuditEntry {
   /// (constrained.hpp), or empty.
   std::string constrained;
   /// A row on the forced systems (forced_problems(), section "Time-dependent systems"): with
-  /// `method` a Galerkin method on the typed L(q, v, t); otherwise the midpoint rule as a typed
-  /// L_d(t, q0, q1, h) with the forcing at the time `forced_time` ("t+h/2", or the wrong "t").
+  /// `method` a Galerkin method on the typed L(q, v, t), with `splitting` a splitting of
+  /// V(q, t); otherwise the midpoint rule as a typed L_d(t, q0, q1, h) with the forcing at the
+  /// time `forced_time` ("t+h/2", or the wrong "t").
   bool forced = false;
   std::string forced_time;
 };
