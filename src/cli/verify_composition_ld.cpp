@@ -20,42 +20,52 @@
 
 namespace vibook::cli {
 
-int run_composition_ld(const CompositionOptions& t, verify::CompositionSpec spec) {
-  const CompositionOptions& o = t;
-  if (t.ld.empty()) throw ArgumentError("--ld", "is required with --composition ld");
-  if (!t.lagrangian.empty() && !t.hamiltonian.empty())
+namespace {
+
+// The typed L_d and system of `o` (a Hamiltonian, typed or p^2/2 + V, or a typed Lagrangian),
+// checked before any work, in 1 to 3 dimensions; `route` names the route in the messages.
+std::unique_ptr<verify::TypedDiscreteLagrangian> typed_ld(const CompositionOptions& o,
+                                                          const char* route, bool allow_time) {
+  if (!o.lagrangian.empty() && !o.hamiltonian.empty())
     throw ArgumentError("--hamiltonian",
                         "give the system once: --lagrangian or --hamiltonian, not both");
-  if (t.potential.empty() && t.hamiltonian.empty() && t.lagrangian.empty())
-    throw ArgumentError("--potential",
-                        "is required with --composition ld (or --lagrangian or --hamiltonian): "
-                        "the system the composition is measured on");
   // The system: a Hamiltonian (typed, or p^2/2 + V), whose field is the reference's and H the
   // energy; or a typed Lagrangian, through its Legendre transform (set_typed_lagrangian).
-  const std::string hamiltonian = !t.lagrangian.empty()   ? ""
-                                  : t.hamiltonian.empty() ? "p^2/2 + V(q)"
-                                                          : t.hamiltonian;
+  const std::string hamiltonian = !o.lagrangian.empty()   ? ""
+                                  : o.hamiltonian.empty() ? "p^2/2 + V(q)"
+                                                          : o.hamiltonian;
   int dim = 0;
-  if (!t.dim.empty()) {
-    dim = static_cast<int>(parse_integer("--dim", t.dim));
-    if (dim < 1 || dim > 3) throw ArgumentError("--dim", "must lie in 1..3 with --composition ld");
+  if (!o.dim.empty()) {
+    dim = static_cast<int>(parse_integer("--dim", o.dim));
+    if (dim < 1 || dim > 3)
+      throw ArgumentError("--dim", fmt::format("must lie in 1..3 with {}", route));
   }
   std::unique_ptr<verify::TypedDiscreteLagrangian> dl;
   {
     std::lock_guard<std::mutex> lock(modified::ginac_mutex());
-    verify::TypedTexts texts{t.ld, t.potential, t.lagrangian, hamiltonian, dim};
-    texts.allow_time = t.allow_time;
+    verify::TypedTexts texts{o.ld, o.potential, o.lagrangian, hamiltonian, dim};
+    texts.allow_time = allow_time;
     dl = std::make_unique<verify::TypedDiscreteLagrangian>(texts);
   }
   if (dl->dim() > 3)
-    throw ArgumentError("--ld", fmt::format("is {}-dimensional; --composition ld runs in 1 to 3 "
-                                            "dimensions",
-                                            dl->dim()));
-  const int n = dl->dim();
+    throw ArgumentError(
+        "--ld", fmt::format("is {}-dimensional; {} runs in 1 to 3 dimensions", dl->dim(), route));
+  return dl;
+}
+
+}  // namespace
+
+int run_composition_ld(const CompositionOptions& o, verify::CompositionSpec spec) {
+  if (o.ld.empty()) throw ArgumentError("--ld", "is required with --composition ld");
+  if (o.potential.empty() && o.hamiltonian.empty() && o.lagrangian.empty())
+    throw ArgumentError("--potential",
+                        "is required with --composition ld (or --lagrangian or --hamiltonian): "
+                        "the system the composition is measured on");
+  const auto dl = typed_ld(o, "--composition ld", o.allow_time);
   const verify::SymbolicUse symbolic = verify::parse_symbolic_use(o.symbolic);
   std::vector<double> q0, p0;
   MapStudy study;
-  check_typed_initial_state(o, n, q0, p0, study);
+  check_typed_initial_state(o, dl->dim(), q0, p0, study);
   check_study_options(o, study);
   if (o.json_given) check_output_path(o.json_out, "--json-out", true);
   MapReport rep;
@@ -66,33 +76,9 @@ int run_composition_ld(const CompositionOptions& t, verify::CompositionSpec spec
 }
 
 int run_timed_ld(const CompositionOptions& o) {
-  if (!o.lagrangian.empty() && !o.hamiltonian.empty())
-    throw ArgumentError("--hamiltonian",
-                        "give the system once: --lagrangian or --hamiltonian, not both");
-  const std::string hamiltonian = !o.lagrangian.empty()   ? ""
-                                  : o.hamiltonian.empty() ? "p^2/2 + V(q)"
-                                                          : o.hamiltonian;
-  int dim = 0;
-  if (!o.dim.empty()) {
-    dim = static_cast<int>(parse_integer("--dim", o.dim));
-    if (dim < 1 || dim > 3)
-      throw ArgumentError("--dim", "must lie in 1..3 for a time-dependent --ld");
-  }
-  std::unique_ptr<verify::TypedDiscreteLagrangian> dl;
-  {
-    std::lock_guard<std::mutex> lock(modified::ginac_mutex());
-    verify::TypedTexts texts{o.ld, o.potential, o.lagrangian, hamiltonian, dim};
-    texts.allow_time = true;
-    dl = std::make_unique<verify::TypedDiscreteLagrangian>(texts);
-  }
-  if (dl->dim() > 3)
-    throw ArgumentError("--ld", fmt::format("is {}-dimensional; a time-dependent --ld runs in 1 to "
-                                            "3 dimensions",
-                                            dl->dim()));
-  if (!dl->time_dependent())
-    throw ArgumentError("--ld",
-                        "uses the time t, but the system (--potential, --lagrangian or "
-                        "--hamiltonian) does not: give the system's own time dependence");
+  // (measure_timed_ld refuses an --ld with t on a system without it, naming --ld, before any
+  // work.)
+  const auto dl = typed_ld(o, "a time-dependent --ld", true);
   std::vector<double> q0, p0;
   MapStudy study;
   check_typed_initial_state(o, dl->dim(), q0, p0, study);
