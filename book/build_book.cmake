@@ -218,6 +218,20 @@ vibook_verify_case(verify-time-python.txt 0 --stepper-cmd
 # pendulum must pass; without its velocity projection it must fail (the hidden constraint).
 vibook_verify_case(verify-rattle.txt 0 --method rattle --problem spherical-pendulum)
 vibook_verify_case(verify-shake.txt 5 --method shake --problem spherical-pendulum)
+# Constraints typed after --constraint: RATTLE on the double pendulum typed as V and two
+# constraints must pass; the constrained discrete Euler-Lagrange equations of the trapezoidal
+# L_d must pass at order 2 (RATTLE written variationally), those of V at q1 alone must fail there.
+vibook_verify_case(verify-constraint-double.txt 0 --method rattle --potential "q[2]+q[4]"
+                   --constraint "(q[1]^2+q[2]^2-1)/2"
+                   --constraint "((q[3]-q[1])^2+(q[4]-q[2])^2-1)/2"
+                   --q0=0.479425538604203,-0.8775825618903728,1.3208965234120995,-1.4178848677585125
+                   --p0=0,0,0.2701511529340699,0.42073549240394825)
+vibook_verify_case(verify-constraint-ld.txt 0 --ld "h*((q1-q0)^2/(2*h^2) - (V(q0)+V(q1))/2)"
+                   --potential z --constraint "(x^2+y^2+z^2-1)/2"
+                   --q0 0.8414709848078965,0,-0.5403023058681398 --p0 0,0.8,0 --symmetric)
+vibook_verify_case(verify-constraint-ld-v1.txt 5 --ld "h*((q1-q0)^2/(2*h^2) - V(q1))"
+                   --potential z --constraint "(x^2+y^2+z^2-1)/2"
+                   --q0 0.8414709848078965,0,-0.5403023058681398 --p0 0,0.8,0)
 # Every Galerkin method on Kepler and Henon-Heiles is the long study field-audit-galerkin (rows
 # A-GAUSS1 ... A-LOBATTO5 of the ledger), measured in step 2 when VIBOOK_LONG_STUDIES is set.
 

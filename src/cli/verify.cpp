@@ -20,6 +20,7 @@
 #include "args.hpp"
 #include "cli.hpp"
 #include "verify_composition.hpp"
+#include "verify_constrained.hpp"
 #include "verify_method.hpp"
 #include "verify_stepper.hpp"
 #include "verify_tableau.hpp"
@@ -237,7 +238,8 @@ const std::vector<std::pair<std::vector<const char*>, Route>>& routes() {
          {"--symbolic", "the variational order of a tableau is measured"}}}},
       {{"--method"},
        {"--method",
-        {"--method", "--problem", "--potential", "--lagrangian", "--dim", "--symbolic"},
+        {"--method", "--problem", "--potential", "--lagrangian", "--dim", "--symbolic",
+         "--constraint"},
         {{"--hamiltonian",
           "a Galerkin method discretizes a Lagrangian; type it after --lagrangian (or V after "
           "--potential)"}}}},
@@ -256,13 +258,14 @@ const std::vector<std::pair<std::vector<const char*>, Route>>& routes() {
 }
 
 // The typed --ld, when no other route is chosen.
-const Route kLd = {"--ld",
-                   {"--ld", "--potential", "--lagrangian", "--hamiltonian", "--dim", "--adaptive",
-                    "--adaptive-steps", "--modified-order", "--format", "--reference"},
-                   {{"--problem",
-                     "the --ld route runs on the system of --potential, "
-                     "--lagrangian or --hamiltonian"},
-                    {"--symbolic", "the variational order of a typed --ld is always derived"}}};
+const Route kLd = {
+    "--ld",
+    {"--ld", "--potential", "--lagrangian", "--hamiltonian", "--dim", "--adaptive",
+     "--adaptive-steps", "--modified-order", "--format", "--reference", "--constraint"},
+    {{"--problem",
+      "the --ld route runs on the system of --potential, "
+      "--lagrangian or --hamiltonian"},
+     {"--symbolic", "the variational order of a typed --ld is always derived"}}};
 
 // The route the options choose, every option given checked against it (ArgumentError naming
 // the first option that does not apply).
@@ -293,6 +296,11 @@ const Route& route_of(const VerifyOptions& o, const CLI::App& c) {
                           "applies to --composition ld only (the composition of the --ld "
                           "typed); the other bases run on --problem");
     if (in(kCommon) || in(r.takes)) continue;
+    if (name == "--constraint")
+      throw ArgumentError(name, fmt::format("does not apply to {}: constraints are stepped by "
+                                            "--method rattle (or shake) and by the constrained "
+                                            "discrete Euler-Lagrange equations of an --ld",
+                                            r.name));
     for (const auto& [n, why] : r.notes)
       if (name == n)
         throw ArgumentError(name, fmt::format("does not apply to {}: {}", r.name, why));
@@ -352,6 +360,42 @@ int run(const VerifyOptions& o, const CLI::App& c) {
     to.dim = o.dim;
     to.file = o.tableau;
     return run_tableau(to);
+  }
+  if (c.count("--constraint") > 0) {
+    // Constraints typed as expressions (verify_constrained.cpp): RATTLE or its unprojected
+    // variant, or the constrained DEL of the --ld, on H = |p|^2/2 + V.
+    ConstrainedOptions co;
+    set_study_options(co, o, c);
+    co.ld = o.ld;
+    co.potential = o.potential;
+    co.dim = o.dim;
+    co.constraints = o.constraints;
+    if (r.name == std::string("--method")) {
+      if (o.method != "rattle" && o.method != "shake")
+        throw ArgumentError("--constraint",
+                            "does not apply to --method " + o.method +
+                                ": the Galerkin methods do not step constraints (--method rattle "
+                                "does, and the constrained DEL of an --ld)");
+      if (c.count("--lagrangian") > 0)
+        throw ArgumentError("--lagrangian", "does not apply to --method " + o.method +
+                                                ": RATTLE steps H = |p|^2/2 + V (--potential)");
+      co.step =
+          o.method == "rattle" ? verify::ConstrainedStep::rattle : verify::ConstrainedStep::shake;
+      return run_constrained_typed(co);
+    }
+    for (const char* opt : {"--lagrangian", "--hamiltonian", "--adaptive", "--adaptive-steps",
+                            "--modified-order", "--format", "--reference"})
+      if (c.count(opt) > 0)
+        throw ArgumentError(opt,
+                            "does not apply to an --ld with --constraint: the constrained system "
+                            "is H = |p|^2/2 + V(q) (--potential) on the constraint manifold, "
+                            "measured by the map study");
+    if (o.ld.empty())
+      throw ArgumentError("--ld",
+                          "is required with --constraint (or --method "
+                          "rattle)");
+    co.step = verify::ConstrainedStep::del;
+    return run_constrained_typed(co);
   }
   if (r.name == std::string("--method")) {
     // A Galerkin variational integrator from the catalogue (verify_method.cpp), on a test
@@ -513,6 +557,13 @@ std::function<int()> add_verify_command(CLI::App& app) {
                 "V in x, y, z (or q, q[1], …), e.g. 'x^2/2+y^2/2+x^2*y-y^3/3' (a leading minus: "
                 "--potential='-cos(x)'); required unless --lagrangian or --hamiltonian is given; "
                 "with --method or --tableau: the system L = v^2/2 - V(q) the method runs on");
+  c->add_option("--constraint", o->constraints,
+                "a holonomic constraint g(q) = 0 in x, y, z (or q, q[1], ...), repeatable, e.g. "
+                "'x^2+y^2+z^2-1'; with --method rattle|shake or an --ld (its constrained discrete "
+                "Euler-Lagrange equations), on H = |p|^2/2 + V with --potential, 2-4 positions, "
+                "--q0 and --p0 on the constraint manifold")
+      ->expected(1)
+      ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll);
   c->add_option("--dim", o->dim,
                 fmt::format("dimension 1-{} (default: from the expressions)", verify::kMaxDim));
   c->add_option("--q0", o->q0, "initial position, comma-separated (default 0.1 in each)");

@@ -52,7 +52,8 @@ Plan check_constrained(const MethodOptions& o) {
                                             : "--dim",
                         "does not apply to --method " + o.method +
                             ": it runs on a constrained test problem (--problem "
-                            "spherical-pendulum or double-pendulum)");
+                            "spherical-pendulum or double-pendulum), or on --potential with "
+                            "--constraint");
   const std::string name = o.problem.empty() ? "spherical-pendulum" : o.problem;
   p.constrained = verify::find_constrained_problem(name);
   if (!p.constrained)

@@ -19,6 +19,7 @@ struct VerifyOptions {
       max_seconds, composition, coefficients, problem, stepper_lib, stepper_cmd, stepper_arg,
       stepper_timeout, stepper_protocol, method, tableau, splitting, adaptive,
       adaptive_steps = "10000", symbolic = "auto";
+  std::vector<std::string> constraints;  ///< --constraint, repeatable
   bool json_given = false, report_given = false, timings = false, symmetric = false,
        progress = false, reference = false;
 };

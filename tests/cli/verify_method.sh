@@ -141,21 +141,6 @@ arg lagrangian-dim --dim --method gauss:2 --lagrangian 'v^2/2' --dim 4
 arg lagrangian-singular --lagrangian --method gauss:2 --lagrangian 'q*v - q^2/2'
 arg lagrangian-p0 --p0 --method gauss:2 --lagrangian 'v[1]^2/2+v[2]^2/2' --p0 1
 
-# #52: constraints. RATTLE on the spherical and the double pendulum (Cartesian coordinates):
-# order 2, both constraints kept to round-off, symplectic on the constraint manifold; without
-# its velocity projection (shake) the momentum leaves the hidden constraint and it fails there.
-case_ rattle-spherical 0 "" 'order +(1\.9|2\.0)[0-9]* over .*: yes' \
-  '^symplectic +on the constraint manifold.*: yes' '^position constraint .*: yes' \
-  '^hidden constraint .*: yes' -- --method rattle --problem spherical-pendulum
-case_ rattle-double 0 "" 'order +(1\.9|2\.0)[0-9]* over .*: yes' '^hidden constraint .*: yes' \
-  -- --method rattle --problem double-pendulum
-case_ shake-spherical 5 "order,symmetric,time-reversible,hidden constraint" \
-  '^position constraint .*: yes' '^hidden constraint .*h = 0\.05: [0-9.]+e-0[12].*: NO' \
-  -- --method shake --problem spherical-pendulum
-arg rattle-off-manifold --q0 --method rattle --q0 1,0,0.1
-arg rattle-not-tangent --p0 --method rattle --q0 1,0,0 --p0 1,0,0
-arg rattle-unconstrained --problem --method rattle --problem kepler
-arg rattle-potential --potential --method rattle --potential 'x^2'
 arg gauss-on-constrained --problem --method gauss:2 --problem spherical-pendulum
 
 echo "verify_method: $pass passed, $fail failed"

@@ -12,6 +12,7 @@
 #include <string>
 #include <vector>
 
+#include "vibook/verify/expression.hpp"
 #include "vibook/verify/map_study.hpp"
 
 namespace vibook::verify {
@@ -39,5 +40,32 @@ const ConstrainedProblem* find_constrained_problem(const std::string& name);
 void measure_constrained(const ConstrainedProblem& problem, bool project_velocity,
                          const std::vector<double>& q0, const std::vector<double>& p0,
                          MapStudy study, MapMeasurement& rep);
+
+/// The most positions a typed constrained system takes (each dimension is compiled apart).
+inline constexpr int kMaxConstrainedDim = 4;
+
+/// What steps a typed constrained system (measure_constrained_typed).
+enum class ConstrainedStep {
+  rattle,  ///< RATTLE (H = |p|²/2 + V)
+  shake,   ///< RATTLE without the velocity projection (deliberately wrong)
+  del      ///< the constrained discrete Euler–Lagrange equations of the typed --ld
+};
+
+/// The texts a typed constrained system was given by, for the report and the JSON.
+struct ConstrainedTexts {
+  std::string potential, ld;
+};
+
+/// A typed constrained system (`--potential` with `--constraint`, 2 to kMaxConstrainedDim
+/// positions, at least one and fewer constraints than positions; `sys` holds them) from (q0, p0),
+/// stepped by RATTLE, by its unprojected variant, or by the constrained discrete Euler–Lagrange
+/// equations of the typed --ld (Marsden & West 2001, §3.5, with multipliers λ for the positions and
+/// μ projecting the momentum onto the hidden constraint), measured by measure_map like the test
+/// problems (`study` holds the settings; for `del` its symmetric_claimed is kept, RATTLE is
+/// symmetric). An ArgumentError naming --q0 or --p0 when the state is off the manifold, naming
+/// --constraint for a count or dimension out of range. `sys` must outlive the call.
+void measure_constrained_typed(const TypedDiscreteLagrangian& sys, const ConstrainedTexts& texts,
+                               ConstrainedStep step, const std::vector<double>& q0,
+                               const std::vector<double>& p0, MapStudy study, MapMeasurement& rep);
 
 }  // namespace vibook::verify

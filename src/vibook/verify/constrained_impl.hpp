@@ -1,15 +1,15 @@
 /// \file constrained_impl.hpp
 /// \brief The templates behind constrained.hpp: a constrained system's derivatives, RATTLE, the
-/// index-1 reference and
+/// constrained discrete Euler–Lagrange step of a discrete Lagrangian, the index-1 reference and
 /// the system part of a map study, for any problem P with
 ///   `static constexpr int N` (positions) and `M` (constraints, or Eigen::Dynamic),
 ///   `int m() const` (the number of constraints),
 ///   `double energy_potential(const Vec<double, N>&) const` (V in double),
-///   `derivatives<T>(q, ∇V, G, &g)` and `hessian<T>(q, i)` (∇²g_i) in double and double-double
-///   (or `static constexpr bool autodiff = true` with V and g templated on the scalar:
-///   `potential<S>(q)`, `constraint<S>(q)`, differentiated by AutoDiff). Internal: included by
-///   constrained.cpp (the
-/// test problems) and constrained_typed.cpp (the constraints typed after --constraint).
+///   `derivatives<T>(q, ∇V, G, &g)` and `hessian<T>(q, i)` (∇²g_i) in double and double-double,
+///   or `static constexpr bool autodiff = true` with V and g templated on the scalar
+///   (`potential<S>(q)`, `constraint<S>(q)`, differentiated by AutoDiff).
+/// Internal: included by constrained.cpp (the test problems) and constrained_typed.cpp (the
+/// constraints typed after --constraint).
 #pragma once
 
 #include <algorithm>
@@ -150,6 +150,64 @@ void rattle_step(const P& prob, bool project, Eigen::VectorXd& z, double h) {
   Vec<double, N> p1 = pm - 0.5 * h * G0.transpose() * lambda - 0.5 * h * gv1;
   if (project) p1 = project_momentum<P>(G1, p1);
   if (!q1.allFinite() || !p1.allFinite()) throw SolveError("RATTLE step: non-finite state", r);
+  z.head<N>() = q1;
+  z.segment<N>(N) = p1;
+}
+
+// --- The constrained discrete Euler–Lagrange equations (Marsden & West 2001, §3.5) -----------
+// In position–momentum form, with multipliers λ (the constraint force over the step) and μ (the
+// projection of the momentum onto the hidden constraint, which makes the map one of T*Q; HLW
+// §VII.5.3 writes RATTLE so, from the trapezoidal L_d):
+//   p_0 + D1 L_d(q_0, q_1, h) + G(q_0)ᵀ λ = 0,   g(q_1) = 0,
+//   p_1 = D2 L_d(q_0, q_1, h) − G(q_1)ᵀ μ,       G(q_1) p_1 = 0.
+// (q_1, hλ) by Newton's method on the first two, the first times h (Jacobian
+// [h D1D2 L_d, G(q_0)ᵀ; G(q_1), 0]), μ by
+// one linear solve. The hidden constraint in this form is that of H = |p|²/2 + V (v = p). `ld`
+// gives L_d's derivatives as CompiledDiscreteLagrangian<N> does: newton_parts(q0, q1, h, D1,
+// D12) and d2(q0, q1, h).
+template <class P, class Ld>
+void constrained_del_step(const P& prob, const Ld& ld, Eigen::VectorXd& z, double h) {
+  constexpr int N = P::N;
+  const int m = prob.m();
+  const Vec<double, N> q0 = z.head<N>(), p0 = z.segment<N>(N);
+  Vec<double, N> gv0;
+  Eigen::Matrix<double, P::M, N> G0;
+  first_derivatives<P, double>(prob, q0, gv0, G0);
+  Eigen::VectorXd x(N + m);
+  x.head<N>() = q0 + h * p0;  // the free flight's guess (v = p)
+  x.tail(m).setZero();
+  auto fj = [&](const Eigen::VectorXd& y, Eigen::VectorXd& F, Eigen::MatrixXd& J) {
+    const Vec<double, N> q1 = y.head<N>();
+    Vec<double, N> d1;
+    Mat<double, N> d12;
+    ld.newton_parts(q0, q1, h, d1, d12);
+    Vec<double, N> gv1;
+    Eigen::Matrix<double, P::M, N> G1;
+    Vec<double, P::M> c;
+    first_derivatives<P, double>(prob, q1, gv1, G1, &c);
+    F.head<N>() = h * (p0 + d1) + G0.transpose() * y.tail(m);
+    F.tail(m) = c;
+    J.setZero();
+    J.topLeftCorner<N, N>() = h * d12;
+    J.topRightCorner(N, m) = G0.transpose();
+    J.bottomLeftCorner(m, N) = G1;
+  };
+  // Solved in position units, as RATTLE's λ: the first equation times h, the multiplier ν = hλ.
+  // A residual at the rounding of the positions (and of a quadratic constraint at their size)
+  // is as small as it gets; the updates of ν may then wander at round-off without settling.
+  NewtonOptions opt;
+  const double size = std::max(1.0, q0.template lpNorm<Eigen::Infinity>());
+  opt.residual_abs = 4 * std::numeric_limits<double>::epsilon() * size * size;
+  const SolveReport r =
+      newton_solve<Eigen::Dynamic>(x, fj, opt, "the constrained discrete Euler-Lagrange equations");
+  if (!r.converged) throw SolveError("the constrained discrete Euler-Lagrange equations", r);
+  const Vec<double, N> q1 = x.head<N>();
+  Vec<double, N> gv1;
+  Eigen::Matrix<double, P::M, N> G1;
+  first_derivatives<P, double>(prob, q1, gv1, G1);
+  const Vec<double, N> p1 = project_momentum<P>(G1, ld.d2(q0, q1, h));
+  if (!q1.allFinite() || !p1.allFinite())
+    throw SolveError("the constrained discrete Euler-Lagrange step: non-finite state", r);
   z.head<N>() = q1;
   z.segment<N>(N) = p1;
 }

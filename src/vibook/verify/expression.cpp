@@ -69,7 +69,7 @@ GiNaC::numeric parse_rational(const std::string& s, const std::string& argument)
 //         | '[' expr (',' expr)* ']' | '(' expr ')'
 class TypedDiscreteLagrangian::Parser {
  public:
-  enum class Kind { potential, ld, lagrangian, hamiltonian };
+  enum class Kind { potential, ld, lagrangian, hamiltonian, constraint };
 
   /// The language's functions of one scalar, by name (also the words --param may not use).
   static constexpr std::array<std::pair<std::string_view, TypedDiscreteLagrangian::Fn>, 5>
@@ -360,10 +360,14 @@ class TypedDiscreteLagrangian::Parser {
     return o_.add_node(n);
   }
 
+  // A text in the positions alone (the potential, a constraint): x, y, z, no V.
+  bool positional() const { return kind_ == Kind::potential || kind_ == Kind::constraint; }
+
   // The vector variables of this text: name → slot.
   int slot_of(const std::string& id) const {
     switch (kind_) {
       case Kind::potential:
+      case Kind::constraint:
         return id == "q" ? kX : -1;
       case Kind::ld:
         return id == "q0" ? kQ0 : id == "q1" ? kQ1 : -1;
@@ -388,6 +392,9 @@ class TypedDiscreteLagrangian::Parser {
       case Kind::hamiltonian:
         return "the Hamiltonian is a function of q, p (and q[1], p[1], …), t, V(...) and "
                "grad(V)(...)";
+      case Kind::constraint:
+        return "a constraint g(q) = 0 is a function of x, y, z (or of the vector q, q[1], "
+               "q[2], …)";
     }
     return {};
   }
@@ -411,7 +418,7 @@ class TypedDiscreteLagrangian::Parser {
     return a;
   }
   void need_potential(const std::string& what, std::size_t start) {
-    if (kind_ == Kind::potential) {
+    if (positional()) {
       pos_ = start;
       fail("unknown function '" + what + "' (sin cos exp log sqrt)");
     }
@@ -443,13 +450,11 @@ class TypedDiscreteLagrangian::Parser {
     }
     if (eat('(')) {
       const auto* function = function_named(id);
-      const bool known = function || (id == "V" && kind_ != Kind::potential);
+      const bool known = function || (id == "V" && !positional());
       if (!known) {
         pos_ = start;
         fail("unknown function '" + id + "' (" +
-             (kind_ == Kind::potential ? "sin cos exp log sqrt"
-                                       : "V, grad(V), sin cos exp log sqrt") +
-             ")");
+             (positional() ? "sin cos exp log sqrt" : "V, grad(V), sin cos exp log sqrt") + ")");
       }
       if (id == "V") {
         need_potential("V", start);
@@ -511,11 +516,17 @@ class TypedDiscreteLagrangian::Parser {
     } else if (const int k = o_.param_index(id); k >= 0) {
       n.op = Op::param;
       n.index = k;
-    } else if (kind_ == Kind::potential && (id == "x" || id == "y" || id == "z")) {
+    } else if (positional() && (id == "x" || id == "y" || id == "z")) {
+      slots_used_[kX] = true;
       n.op = Op::component;
       n.slot = kX;
       n.index = id == "x" ? 0 : id == "y" ? 1 : 2;
       needs_ = std::max(needs_, n.index + 1);
+    } else if (id == "t" && kind_ == Kind::constraint) {
+      pos_ = start;
+      fail(
+          "a constraint may not depend on the time t (time-dependent constraints are not "
+          "implemented)");
     } else if (id == "t") {
       n.op = Op::t;
       uses_t_ = true;
@@ -557,6 +568,8 @@ void TypedDiscreteLagrangian::finish(const TypedTexts& t) {
     nodes_.clear();
     params_.clear();
     ld_root_ = potential_root_ = lagrangian_root_ = hamiltonian_root_ = -1;
+    constraint_roots_.clear();
+    constraint_texts_.clear();
     system_uses_t_ = ld_uses_t_ = false;
     dim_ = 0;
     try {
@@ -645,6 +658,13 @@ void TypedDiscreteLagrangian::finish_pass(const TypedTexts& t, bool scalar_vars)
     system_calls_v = p.calls_potential();
   }
   system_uses_t_ = system_uses_t_ || (potential_t && system_calls_v);
+  for (const std::string& g : t.constraints) {
+    auto [root, p] = parse(g, "--constraint", Parser::Kind::constraint);
+    if (!p.uses_slot(kX))
+      throw ArgumentError("--constraint", "'" + g + "' does not depend on the positions");
+    constraint_roots_.push_back(root);
+    constraint_texts_.push_back(g);
+  }
   int dim = std::max(1, needs);
   for (const auto& [arg, n] : literals) dim = std::max(dim, n);
   if (t.dim != 0) {

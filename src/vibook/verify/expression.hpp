@@ -87,6 +87,10 @@ struct TypedTexts {
   /// uses t is an ArgumentError naming it: a route that has not been taught the time would
   /// otherwise evaluate every text at t = 0.
   bool allow_time = false;
+  /// Holonomic constraints g_i(q) = 0 (`--constraint`, repeatable), each a scalar in the
+  /// potential's variables (x, y, z or the vector q) without t (chapter "Verify your own
+  /// integrator", section "Constrained systems").
+  std::vector<std::string> constraints{};
 };
 
 class TypedDiscreteLagrangian {
@@ -113,6 +117,19 @@ class TypedDiscreteLagrangian {
   bool time_dependent() const { return system_uses_t_; }
   /// The discrete Lagrangian uses the step's start time t.
   bool ld_uses_t() const { return ld_uses_t_; }
+  /// The number of constraints typed (`--constraint`).
+  int constraint_count() const { return static_cast<int>(constraint_roots_.size()); }
+  /// The text of constraint i as typed.
+  const std::string& constraint_text(int i) const {
+    return constraint_texts_[static_cast<std::size_t>(i)];
+  }
+  /// Constraint i, g_i(q), on any scalar (0 <= i < constraint_count()).
+  template <int N, class S>
+  S constraint(int i, const Vec<S, N>& q) const {
+    Inputs<S, N> in;
+    for (int k = 0; k < N; ++k) in.var[kX][k] = q(k);
+    return scalar<S, N, 0>(constraint_roots_[static_cast<std::size_t>(i)], in);
+  }
 
   /// L_d(q0, q1, h) on scalars of type S (q0, q1 of dimension N == dim()).
   template <int N, class S>
@@ -514,6 +531,8 @@ class TypedDiscreteLagrangian {
   std::vector<Node> nodes_;
   std::vector<GiNaC::symbol> params_;  ///< the symbolic parameters, in the order given
   int ld_root_ = -1, potential_root_ = -1, lagrangian_root_ = -1, hamiltonian_root_ = -1;
+  std::vector<int> constraint_roots_;
+  std::vector<std::string> constraint_texts_;
   bool system_uses_t_ = false, ld_uses_t_ = false;
 };
 

@@ -322,6 +322,35 @@ TEST_CASE("typed Hamiltonian alone (a black-box stepper's system): Hamilton's eq
                   ArgumentError);
 }
 
+TEST_CASE("typed constraints (--constraint): values, the dimension they set, what they refuse") {
+  verify::TypedTexts t{"", "z", "", "p^2/2 + V(q)", 0};
+  t.system_only = true;
+  t.constraints = {"(x^2+y^2+z^2-1)/2", "q[1] - q[2]"};
+  const TypedDiscreteLagrangian sys(t);
+  CHECK(sys.dim() == 3);
+  REQUIRE(sys.constraint_count() == 2);
+  CHECK(sys.constraint_text(1) == "q[1] - q[2]");
+  const Vec<double, 3> q(0.6, -0.3, 0.2);
+  CHECK(sys.constraint<3, double>(0, q) == doctest::Approx(0.5 * (0.49 - 1)).epsilon(1e-15));
+  CHECK(sys.constraint<3, double>(1, q) == doctest::Approx(0.9).epsilon(1e-15));
+  // a constraint in the fourth coordinate makes the system four-dimensional
+  verify::TypedTexts w = t;
+  w.constraints = {"q[4]"};
+  CHECK(TypedDiscreteLagrangian(w).dim() == 4);
+  // refused, naming --constraint: the time, the potential V, no position at all, a vector
+  for (const char* bad : {"x^2 - t", "V(q)", "1", "q"}) {
+    verify::TypedTexts b = t;
+    b.allow_time = true;
+    b.constraints = {bad};
+    try {
+      const TypedDiscreteLagrangian refused(b);
+      FAIL("accepted --constraint " << bad);
+    } catch (const ArgumentError& e) {
+      CHECK(std::string(e.what()).find("--constraint") != std::string::npos);
+    }
+  }
+}
+
 TEST_CASE("symbolic parameters (--param): symbols for the engine, no numeric value") {
   verify::TypedTexts t;
   t.system_only = true;

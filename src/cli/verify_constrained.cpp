@@ -1,0 +1,69 @@
+// `vibook verify --constraint EXPR` (repeatable) with --method rattle|shake or with an --ld: the
+// options checked before any work, the measurement of vibook/verify/constrained.hpp, the report.
+#include "verify_constrained.hpp"
+
+#include <memory>
+#include <mutex>
+#include <string>
+#include <vector>
+
+#include <fmt/format.h>
+
+#include "args.hpp"
+#include "verify_map.hpp"
+#include "vibook/core/output_file.hpp"
+#include "vibook/modified/engine.hpp"
+#include "vibook/verify/expression.hpp"
+
+namespace vibook::cli {
+
+int run_constrained_typed(const ConstrainedOptions& o) {
+  const bool del = o.step == verify::ConstrainedStep::del;
+  if (o.potential.empty())
+    throw ArgumentError("--potential",
+                        "is required with --constraint: the system is H = |p|^2/2 + V(q) on the "
+                        "constraint manifold (type V = 0 for a free particle)");
+  if (!o.problem.empty())
+    throw ArgumentError("--problem",
+                        "names a test problem; --constraint and --potential give the "
+                        "system: give one of them");
+  for (const std::string& g : o.constraints)
+    if (g.find_first_not_of(" \t") == std::string::npos)
+      throw ArgumentError("--constraint", "is empty");
+  if (o.q0.empty() || o.p0.empty())
+    throw ArgumentError(o.q0.empty() ? "--q0" : "--p0",
+                        "is required with --constraint: a state on the constraint manifold, "
+                        "g(q0) = 0 and G(q0) p0 = 0");
+  int dim = 0;
+  if (!o.dim.empty()) {
+    dim = static_cast<int>(parse_integer("--dim", o.dim));
+    if (dim < 2 || dim > verify::kMaxConstrainedDim)
+      throw ArgumentError(
+          "--dim", fmt::format("must lie in 2..{} with --constraint", verify::kMaxConstrainedDim));
+  }
+  std::unique_ptr<verify::TypedDiscreteLagrangian> sys;
+  {
+    std::lock_guard<std::mutex> lock(modified::ginac_mutex());
+    verify::TypedTexts texts{o.ld, o.potential, "", "p^2/2 + V(q)", dim};
+    texts.system_only = !del;
+    texts.constraints = o.constraints;
+    sys = std::make_unique<verify::TypedDiscreteLagrangian>(texts);
+  }
+  std::vector<double> q0, p0;
+  MapStudy study;
+  check_typed_initial_state(o, sys->dim(), q0, p0, study);
+  check_study_options(o, study);
+  study.expected = 2;
+  if (o.expected_given || del) {
+    study.expected = parse_number("--expected-order", o.expected);
+    if (!(study.expected > 0 && study.expected <= verify::kMaxOrder))
+      throw ArgumentError("--expected-order",
+                          fmt::format("must lie in (0, {:g}]", verify::kMaxOrder));
+  }
+  if (o.json_given) check_output_path(o.json_out, "--json-out", true);
+  MapReport rep;
+  verify::measure_constrained_typed(*sys, {o.potential, o.ld}, o.step, q0, p0, study, rep);
+  return rep.finish(o);
+}
+
+}  // namespace vibook::cli

@@ -1,0 +1,191 @@
+/// \file constrained_typed.cpp
+/// \brief Constraints typed after --constraint on a typed potential, stepped by RATTLE or by
+/// the constrained discrete Euler–Lagrange equations of a typed --ld, measured by the map study
+/// (constrained.hpp; chapter "Verify your own integrator", section "Constrained systems").
+#include <memory>
+#include <mutex>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include <fmt/format.h>
+
+#include "vibook/modified/engine.hpp"
+#include "vibook/verify/constrained.hpp"
+#include "vibook/verify/constrained_impl.hpp"
+#include "vibook/verify/tape.hpp"
+#include "vibook/verify/typed_system.hpp"
+
+namespace vibook::verify {
+
+namespace {
+
+using namespace constrained_detail;
+
+// A function f(q) of the positions typed as text, compiled into a tape through the discrete
+// Lagrangian L_d(q0, q1, h) = V((q0 + q1)/2) with V = f (tape.hpp): at q0 = q1 = q its D1 is
+// ∇f(q)/2 and its D2 D1 is ∇²f(q)/4, exactly (scalings by powers of 2, and (q + q)/2 = q), in
+// any scalar. The tape differentiates the text once, symbolically; the expression tree on nested
+// AutoDiff in double-double would cost the compiler half a minute per dimension.
+template <int N>
+class PointTape {
+ public:
+  explicit PointTape(const std::string& text) {
+    TypedTexts t;
+    t.ld = "V((q0+q1)/2)";
+    t.potential = text;
+    t.dim = N;
+    const TypedDiscreteLagrangian dl(t);
+    tape_ = std::make_shared<const CompiledDiscreteLagrangian<N>>(dl, false);
+  }
+  template <class T>
+  void at(const Vec<T, N>& q, T& value, Vec<T, N>& gradient, Mat<T, N>* hessian) const {
+    const ad::TwoPoint<N, T> r = tape_->template evaluate<T>(q, q, T(1.0));
+    value = r.value;
+    for (int i = 0; i < N; ++i) gradient(i) = T(2.0) * r.D1(i);
+    if (hessian)
+      for (int i = 0; i < N; ++i)
+        for (int j = 0; j < N; ++j) (*hessian)(i, j) = T(4.0) * r.D12(i, j);
+  }
+
+ private:
+  std::shared_ptr<const CompiledDiscreteLagrangian<N>> tape_;
+};
+
+// The typed system as a constrained problem: V from --potential (0 when none) and the m
+// constraints of --constraint, each a PointTape (made with modified::ginac_mutex() held).
+template <int N_>
+struct TypedConstrained {
+  static constexpr int N = N_, M = Eigen::Dynamic;
+  const TypedDiscreteLagrangian* sys = nullptr;
+  std::shared_ptr<const PointTape<N>> potential;  ///< null: V = 0
+  std::vector<std::shared_ptr<const PointTape<N>>> constraints;
+
+  TypedConstrained(const TypedDiscreteLagrangian& s, const std::string& potential_text) : sys(&s) {
+    std::lock_guard<std::mutex> lock(modified::ginac_mutex());
+    if (!potential_text.empty()) potential = std::make_shared<const PointTape<N>>(potential_text);
+    for (int i = 0; i < s.constraint_count(); ++i)
+      constraints.push_back(std::make_shared<const PointTape<N>>(s.constraint_text(i)));
+  }
+  int m() const { return static_cast<int>(constraints.size()); }
+  double energy_potential(const Vec<double, N>& q) const {
+    return sys->template potential<N, double>(q);
+  }
+  template <class T>
+  void derivatives(const Vec<T, N>& q, Vec<T, N>& gradV, Eigen::Matrix<T, M, N>& G,
+                   Vec<T, M>* g = nullptr) const {
+    T value;
+    if (potential)
+      potential->template at<T>(q, value, gradV, nullptr);
+    else
+      gradV.setZero();
+    G.resize(m(), N);
+    if (g) g->resize(m());
+    for (int i = 0; i < m(); ++i) {
+      Vec<T, N> row;
+      constraints[static_cast<std::size_t>(i)]->template at<T>(q, value, row, nullptr);
+      G.row(i) = row.transpose();
+      if (g) (*g)(i) = value;
+    }
+  }
+  template <class T>
+  Mat<T, N> hessian(const Vec<T, N>& q, int i) const {
+    T value;
+    Vec<T, N> gradient;
+    Mat<T, N> H;
+    constraints[static_cast<std::size_t>(i)]->template at<T>(q, value, gradient, &H);
+    return H;
+  }
+};
+
+std::string constraints_text(const TypedDiscreteLagrangian& sys) {
+  std::string s;
+  for (int i = 0; i < sys.constraint_count(); ++i)
+    s += fmt::format("{}g{} = {}", i ? ", " : "", i + 1, sys.constraint_text(i));
+  return s;
+}
+
+template <int N>
+void measure_n(const TypedDiscreteLagrangian& sys, const ConstrainedTexts& texts,
+               ConstrainedStep kind, const std::vector<double>& q0, const std::vector<double>& p0,
+               MapStudy s, MapMeasurement& rep) {
+  const TypedConstrained<N> prob(sys, texts.potential);
+  set_constrained_system(prob, "of the --constraint equations", q0, p0, s);
+  const char* name = kind == ConstrainedStep::rattle  ? "rattle"
+                     : kind == ConstrainedStep::shake ? "shake"
+                                                      : "constrained DEL of --ld";
+  if (kind == ConstrainedStep::del) {
+    // L_d's derivatives from its compiled tape, interpreted (tape.hpp): the tape keeps the
+    // last q0 and h, so each step has its own copy.
+    std::shared_ptr<const CompiledDiscreteLagrangian<N>> ld;
+    {
+      std::lock_guard<std::mutex> lock(modified::ginac_mutex());
+      ld = std::make_shared<const CompiledDiscreteLagrangian<N>>(sys, false);
+    }
+    s.step = naming_failures(
+        [prob, ld](Eigen::VectorXd& z, double h) {
+          const CompiledDiscreteLagrangian<N> mine = *ld;
+          constrained_del_step(prob, mine, z, h);
+        },
+        N);
+    rep.line("discrete Lagrangian", fmt::format("L_d(q0, q1, h) = {} (--ld)", texts.ld));
+    rep.line(
+        "",
+        "stepped by its constrained discrete Euler-Lagrange equations (Marsden & West "
+        "3.5): p0 + D1 L_d + G(q0)^T lambda = 0, g(q1) = 0, p1 = D2 L_d - G(q1)^T mu "
+        "with G(q1) p1 = 0; Newton on (q1, h lambda), L_d's derivatives from its compiled tape");
+  } else {
+    const bool project = kind == ConstrainedStep::rattle;
+    s.step = naming_failures(
+        [prob, project](Eigen::VectorXd& z, double h) { rattle_step(prob, project, z, h); }, N);
+    s.symmetric_claimed = true;
+    s.symmetric_note = "";
+    rep.line("method", project ? "rattle: RATTLE (Andersen 1983; HLW VII.1.4), symplectic, "
+                                 "symmetric, order 2"
+                               : "shake: RATTLE without the velocity projection (deliberately "
+                                 "wrong); documented as RATTLE, order 2");
+  }
+  rep.line("expected order", fmt::format("{:g}", s.expected));
+  rep.line("system", fmt::format("H = |p|^2/2 + V(q), V = {} (--potential), constraints {}; "
+                                 "{} positions; q0 = {}, p0 = {}",
+                                 texts.potential.empty() ? "0" : texts.potential,
+                                 constraints_text(sys), N, vec_text(q0), vec_text(p0)));
+  std::vector<std::string> gs;
+  for (int i = 0; i < sys.constraint_count(); ++i) gs.push_back(sys.constraint_text(i));
+  rep.js["method"] = {{"name", name}, {"expected", s.expected}};
+  rep.js["system"] = {{"potential", texts.potential}, {"constraints", gs}, {"q0", q0}, {"p0", p0}};
+  if (kind == ConstrainedStep::del) rep.js["system"]["ld"] = texts.ld;
+  measure_map(s, rep);
+  rep.line("variational order",
+           "not measured: the constrained discrete Lagrangian's exact side is not implemented");
+}
+
+}  // namespace
+
+void measure_constrained_typed(const TypedDiscreteLagrangian& sys, const ConstrainedTexts& texts,
+                               ConstrainedStep step, const std::vector<double>& q0,
+                               const std::vector<double>& p0, MapStudy study, MapMeasurement& rep) {
+  const int n = sys.dim(), m = sys.constraint_count();
+  if (m < 1) throw ArgumentError("--constraint", "is required: no constraint was given");
+  if (n < 2 || m >= n || n > kMaxConstrainedDim)
+    throw ArgumentError(
+        "--constraint",
+        fmt::format("{} constraint{} on {} position{}: a constrained system takes "
+                    "2 to {} positions and fewer constraints than positions",
+                    m, m == 1 ? "" : "s", n, n == 1 ? "" : "s", kMaxConstrainedDim));
+  if (step == ConstrainedStep::del && sys.ld_uses_t())
+    throw ArgumentError("--ld",
+                        "uses the time t: constrained time-dependent systems are not "
+                        "implemented");
+  if (sys.time_dependent())
+    throw ArgumentError("--potential",
+                        "uses the time t: constrained time-dependent systems are "
+                        "not implemented");
+  with_dim(n, [&](auto dim) {
+    constexpr int N = decltype(dim)::value;
+    if constexpr (N >= 2 && N <= kMaxConstrainedDim)
+      measure_n<N>(sys, texts, step, q0, p0, std::move(study), rep);
+  });
+}
+
+}  // namespace vibook::verify

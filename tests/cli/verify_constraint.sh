@@ -1,0 +1,96 @@
+#!/usr/bin/env bash
+# #52: constrained mechanical systems. RATTLE on the test problems and on constraints typed after
+# --constraint (H = |p|^2/2 + V with --potential), the constrained discrete Euler-Lagrange
+# equations of a typed --ld; the deliberately wrong inputs (shake, a first-order L_d claimed as
+# second order) fail the part they break, the edges (first order, two constraints) pass; bad
+# arguments are refused by name before any work (exit 2).
+# Usage: verify_constraint.sh path/to/vibook
+set -u
+V=$1
+# shellcheck source=verify_case.sh
+source "$(dirname "$0")/verify_case.sh"
+
+# #52: constraints. RATTLE on the spherical and the double pendulum (Cartesian coordinates):
+# order 2, both constraints kept to round-off, symplectic on the constraint manifold; without
+# its velocity projection (shake) the momentum leaves the hidden constraint and it fails there.
+case_ rattle-spherical 0 "" 'order +(1\.9|2\.0)[0-9]* over .*: yes' \
+  '^symplectic +on the constraint manifold.*: yes' '^position constraint .*: yes' \
+  '^hidden constraint .*: yes' -- --method rattle --problem spherical-pendulum
+case_ rattle-double 0 "" 'order +(1\.9|2\.0)[0-9]* over .*: yes' '^hidden constraint .*: yes' \
+  -- --method rattle --problem double-pendulum
+case_ shake-spherical 5 "order,symmetric,time-reversible,hidden constraint" \
+  '^position constraint .*: yes' '^hidden constraint .*h = 0\.05: [0-9.]+e-0[12].*: NO' \
+  -- --method shake --problem spherical-pendulum
+arg rattle-off-manifold --q0 --method rattle --q0 1,0,0.1
+arg rattle-not-tangent --p0 --method rattle --q0 1,0,0 --p0 1,0,0
+arg rattle-unconstrained --problem --method rattle --problem kepler
+arg rattle-potential --potential --method rattle --potential 'x^2'
+
+# Constraints typed as expressions: the spherical pendulum typed gives the test problem's errors
+# (the same RATTLE on the same g), and so does the double pendulum with two --constraint options.
+SPH_Q=0.8414709848078965,0,-0.5403023058681398
+SPH_G='(x^2+y^2+z^2-1)/2'
+"$V" verify --method rattle --problem spherical-pendulum --json-out "$tmp/cat.json" >/dev/null 2>&1
+case_ typed-rattle-spherical 0 "" 'order +(1\.9|2\.0)[0-9]* over .*: yes' \
+  '^system +H = \|p\|\^2/2 \+ V\(q\), V = z .*constraints g1 = ' \
+  '^symplectic +on the constraint manifold.*: yes' '^hidden constraint .*: yes' \
+  -- --method rattle --potential z --constraint "$SPH_G" --q0 "$SPH_Q" --p0 0,0.8,0
+same_errors typed-rattle-same-errors "$tmp/v.json" "$tmp/cat.json" 10
+DP_Q=0.479425538604203,-0.8775825618903728,1.3208965234120995,-1.4178848677585125
+DP_P=0,0,0.2701511529340699,0.42073549240394825
+"$V" verify --method rattle --problem double-pendulum --json-out "$tmp/cat.json" >/dev/null 2>&1
+case_ typed-rattle-double 0 "" 'order +(1\.9|2\.0)[0-9]* over .*: yes' 'constraints g1 = .*, g2 = ' \
+  -- --method rattle --potential 'q[2]+q[4]' --constraint '(q[1]^2+q[2]^2-1)/2' \
+  --constraint '((q[3]-q[1])^2+(q[4]-q[2])^2-1)/2' --q0="$DP_Q" --p0="$DP_P"
+same_errors typed-double-same-errors "$tmp/v.json" "$tmp/cat.json" 10
+case_ typed-shake 5 "order,symmetric,time-reversible,hidden constraint" \
+  '^position constraint .*: yes' '^hidden constraint .*h = 0\.05: [0-9.]+e-0[12].*: NO' \
+  -- --method shake --potential z --constraint "$SPH_G" --q0 "$SPH_Q" --p0 0,0.8,0
+
+# The constrained DEL of a typed --ld. The trapezoidal L_d is RATTLE written variationally (HLW
+# VII.5): order 2, symmetric, the same errors as RATTLE from another formulation (Newton on
+# (q1, h lambda) through L_d's derivatives). With V at q1 alone it is of order 1: it fails when
+# claimed of order 2 and passes, at the first-order edge, when claimed of order 1.
+TRAP='h*((q1-q0)^2/(2*h^2) - (V(q0)+V(q1))/2)'
+SE='h*((q1-q0)^2/(2*h^2) - V(q1))'
+"$V" verify --method rattle --potential z --constraint "$SPH_G" --q0 "$SPH_Q" --p0 0,0.8,0 \
+  --json-out "$tmp/rattle.json" >/dev/null 2>&1
+case_ ld-trapezoid 0 "" 'constrained discrete Euler-Lagrange' \
+  'order +(1\.9|2\.0)[0-9]* over .*: yes' 'symmetric .*: yes' '^hidden constraint .*: yes' \
+  -- --ld "$TRAP" --potential z --constraint "$SPH_G" --q0 "$SPH_Q" --p0 0,0.8,0 --symmetric
+# (Above errors of 1e-6: the DEL form's own rounding, through (q1 - q0)/h, differs from RATTLE's
+# by about 1e-11 at the smallest steps.)
+same_errors ld-trapezoid-is-rattle "$tmp/v.json" "$tmp/rattle.json" 20 1e-6
+case_ ld-v-at-q1 5 "order,energy" 'order +(0\.9|1\.0)[0-9]* over .*: NO' \
+  -- --ld "$SE" --potential z --constraint "$SPH_G" --q0 "$SPH_Q" --p0 0,0.8,0
+case_ ld-v-at-q1-first-order 0 "" 'order +(0\.9|1\.0)[0-9]* over .*: yes' \
+  '^position constraint .*: yes' '^hidden constraint .*: yes' \
+  -- --ld "$SE" --potential z --constraint "$SPH_G" --q0 "$SPH_Q" --p0 0,0.8,0 --expected-order 1
+
+# Bad arguments, each named before any work.
+arg constraint-off-manifold --q0 --method rattle --potential z --constraint "$SPH_G" \
+  --q0 1,0,0.1 --p0 0,0.8,0
+arg constraint-not-tangent --p0 --method rattle --potential z --constraint "$SPH_G" \
+  --q0 "$SPH_Q" --p0 0.1,0.8,0
+arg constraint-no-q0 --q0 --method rattle --potential z --constraint "$SPH_G"
+arg constraint-time --constraint --method rattle --potential z --constraint 'x^2+y^2+z^2-t' \
+  --q0 "$SPH_Q" --p0 0,0.8,0
+arg constraint-constant --constraint --method rattle --potential z --constraint '1' \
+  --q0 "$SPH_Q" --p0 0,0.8,0
+arg constraint-too-many --constraint --method rattle --potential z --constraint x --constraint y \
+  --constraint z --q0 0,0,0 --p0 0,0,0
+arg constraint-dim --dim --method rattle --potential x --constraint x-y --q0 1,1 --p0 1,-1 --dim 5
+arg constraint-galerkin --constraint --method gauss:2 --potential z --constraint "$SPH_G"
+arg constraint-tableau --constraint --tableau x.json --constraint "$SPH_G"
+arg constraint-splitting --constraint --splitting leapfrog --constraint "$SPH_G"
+arg constraint-no-potential --potential --method rattle --constraint "$SPH_G" --q0 "$SPH_Q" \
+  --p0 0,0.8,0
+arg constraint-ld-lagrangian --lagrangian --ld "$TRAP" --lagrangian 'v^2/2' \
+  --constraint "$SPH_G" --q0 "$SPH_Q" --p0 0,0.8,0
+arg constraint-ld-adaptive --adaptive --ld "$TRAP" --potential z --adaptive epavi \
+  --constraint "$SPH_G" --q0 "$SPH_Q" --p0 0,0.8,0
+arg constraint-empty --constraint --method rattle --potential z --constraint ' ' --q0 "$SPH_Q" \
+  --p0 0,0.8,0
+
+echo "verify_constraint: $pass passed, $fail failed"
+[ "$fail" = 0 ]
