@@ -33,9 +33,10 @@ Plan check(const TableauOptions& o) {
                         "a Runge-Kutta-Nystrom tableau (abar, bbar) runs on the test problems "
                         "(--problem) only, for now");
   if (o.hamiltonian_given) {
-    p.sys = check_typed_hamiltonian(o, o.hamiltonian, o, "--tableau", p.q0, p.p0, p.study);
+    // (a time-dependent system too: each stage at t + c_i h, prk.hpp)
+    p.sys = check_typed_hamiltonian(o, o.hamiltonian, o, "--tableau", p.q0, p.p0, p.study, true);
   } else if (o.potential_given) {
-    p.sys = check_typed_potential(o, o, "--tableau", p.q0, p.p0, p.study);
+    p.sys = check_typed_potential(o, o, "--tableau", p.q0, p.p0, p.study, true);
   } else {
     if (!o.dim.empty())
       throw ArgumentError("--dim", "applies to --tableau with --potential or --hamiltonian only");

@@ -26,6 +26,16 @@ case_ gauss2-forced-pendulum 0 "" 'order +(3\.9|4\.0)[0-9]* over .*: yes' \
 case_ lobatto3-forced-potential 0 "" 'order +(3\.9|4\.0)[0-9]* over .*: yes' \
   'H\(q, p, t\)' -- --method lobatto:3 --potential 'x^2/2 - x*cos(t)' --q0 0.5 --p0 0
 
+# A tableau on V(q, t) or H(q, p, t): the time a position of the extended system, stage i at
+# t + c_i h (c the row sums of a). Gauss 2 and Lobatto IIIA-IIIB 3 keep their order 4.
+TAB="$(dirname "$STEPPER")/../tableaus"
+case_ tableau-gauss2-forced 0 "" 'order +(3\.9|4\.0)[0-9]* over .*: yes' \
+  '^energy +not judged: H depends on t' \
+  -- --tableau "$TAB/gauss2.json" --potential='-cos(x) - x*cos(t)/2' --q0 0.5 --p0 0 --symmetric
+case_ tableau-lobatto3-forced-h 0 "" 'order +(3\.9|4\.0)[0-9]* over .*: yes' \
+  -- --tableau "$TAB/lobatto3-iiia-iiib.json" --hamiltonian 'p^2/2*(1+q^2/4) - cos(q) - q*cos(t)/2' \
+  --q0 0.5 --p0 0
+
 # The midpoint rule as a typed L_d(t, q0, q1, h): the forcing at the midpoint's time t + h/2 is of
 # order 2; at the step's start time t (the time advanced with the wrong coefficient) of order 1.
 MID='h*(((q1-q0)/h)^2/2 + cos((q0+q1)/2) + (q0+q1)/2*cos(t+h/2)/2)'
@@ -77,8 +87,6 @@ arg protocol-1-with-t --stepper-protocol --stepper-cmd "python3 $STEPPER sv forc
   --hamiltonian "$FORCED" --expected-order 2
 arg protocol-3 --stepper-protocol --stepper-cmd "python3 $STEPPER sv pendulum" \
   --stepper-protocol 3 --hamiltonian 'p^2/2 - cos(q)' --expected-order 2
-arg tableau-with-t --potential --tableau "$(dirname "$STEPPER")/../tableaus/stormer-verlet.json" \
-  --potential 'x^2/2 - x*cos(t)'
 arg composition-ld-with-t --ld --composition ld --coefficients yoshida4 \
   --ld 'h*((q1-q0)/h)^2/2 - h*t*q0^2' --potential 'x^2'
 arg ld-only-t --ld --ld 'h*((q1-q0)/h)^2/2 - h*cos(q0)*t' --potential='-cos(x)'

@@ -72,6 +72,10 @@ class PartitionedRkMethod {
  public:
   static constexpr int N = Problem::N;
   static constexpr int U = fixed ? S * N : Eigen::Dynamic;
+  /// The problem's force depends on the time: `gradient(q, t)` and `potential(q, t)`.
+  static constexpr bool timed_problem = requires(const Problem& P, const Vec<T, N>& q, const T& t) {
+    P.gradient(q, t);
+  };
 
   PartitionedRkMethod(Problem P, const PrkTableauT<T>& t, NewtonOptions options = {})
       : P_(std::move(P)), t_(t), options_(options), s_(t_.stages()) {
@@ -111,6 +115,12 @@ class PartitionedRkMethod {
     rkn_bbar_ = t.bbar;
   }
 
+  /// The start time t of the next step, for a time-dependent force: stage i is evaluated at
+  /// t + c_i h with c_i = Σ_j a_ij (an RKN tableau's c), the time being a position of the
+  /// extended system whose velocity is 1 (chapter "Verify your own
+  /// integrator", section "Time-dependent systems").
+  void set_time(const T& t) requires timed_problem { time_ = t; }
+
   SolveReport step(Vec<T, N>& q, Vec<T, N>& p, const T& h) {
     const int ns = s_;
     const Vec<T, N> q0 = q, p0 = p;
@@ -122,9 +132,9 @@ class PartitionedRkMethod {
       PerStage<Mat<T, N>> Hs = per_stage<Mat<T, N>>();
       for (int k = 0; k < ns; ++k) {
         const Vec<T, N> Qk = q0 + h * x.template segment<N>(k * N);
-        g[k] = P_.gradient(Qk);
+        g[k] = force(Qk, h, k);
         if (with_jacobian)
-          Hs[k] = ad::jacobian<N>([&](const auto& y) { return P_.gradient(y); }, Qk);
+          Hs[k] = ad::jacobian<N>([&](const auto& y) { return force(y, h, k); }, Qk);
       }
       for (int i = 0; i < ns; ++i) {
         Vec<T, N> Fi = x.template segment<N>(i * N) - c_[i] * p0;
@@ -149,7 +159,7 @@ class PartitionedRkMethod {
     PerStage<Vec<T, N>> g = per_stage<Vec<T, N>>(), Pst = per_stage<Vec<T, N>>();
     T action(0);
     for (int k = 0; k < ns; ++k)
-      g[k] = P_.gradient(Vec<T, N>(q0 + h * w.template segment<N>(k * N)));
+      g[k] = force(Vec<T, N>(q0 + h * w.template segment<N>(k * N)), h, k);
     if (rkn_) {  // q1 = q0 + h p0 − h² Σ b̄_i ∇U(Q_i), p1 = p0 − h Σ b_i ∇U(Q_i)
       Vec<T, N> dq = p0, dp = Vec<T, N>::Zero();
       for (int i = 0; i < ns; ++i) {
@@ -172,7 +182,12 @@ class PartitionedRkMethod {
       dq += t_.b[i] * Pst[i];
       dp -= t_.bhat[i] * g[i];
       const Vec<T, N> Qi = q0 + h * w.template segment<N>(i * N);
-      action += t_.b[i] * (T(0.5) * Pst[i].squaredNorm() - P_.template potential<T>(Qi));
+      T Ui;
+      if constexpr (timed_problem)
+        Ui = P_.template potential<T>(Qi, T(time_ + c_[i] * h));
+      else
+        Ui = P_.template potential<T>(Qi);
+      action += t_.b[i] * (T(0.5) * Pst[i].squaredNorm() - Ui);
     }
     const Vec<T, N> q1 = q0 + h * dq, p1 = p0 + h * dp;
     if (!std::isfinite(to_double(T(q1.template lpNorm<Eigen::Infinity>()))) ||
@@ -189,6 +204,16 @@ class PartitionedRkMethod {
   T action() const { return action_; }
 
  private:
+  // ∇U at stage k's position Q (any scalar, for the Jacobian's AutoDiff), at its time when the
+  // force depends on it.
+  template <class V>
+  auto force(const V& Q, const T& h, int k) const {
+    if constexpr (timed_problem)
+      return P_.gradient(Q, T(time_ + c_[static_cast<std::size_t>(k)] * h));
+    else
+      return P_.gradient(Q);
+  }
+
   template <class X>
   PerStage<X> per_stage() const {
     if constexpr (fixed)
@@ -204,6 +229,7 @@ class PartitionedRkMethod {
   std::vector<std::vector<T>> M_;  ///< M_ij = Σ_k a_ik â_kj
   std::vector<T> c_;               ///< c̃_i = Σ_j a_ij
   T action_ = T(0);
+  T time_ = T(0);            ///< the start time of the next step (set_time)
   bool rkn_ = false;         ///< an RKN tableau's method (its own constructor)
   std::vector<T> rkn_bbar_;  ///< its b̄
 };
@@ -231,6 +257,11 @@ template <class Problem>
 class HamiltonianPrkMethod {
  public:
   static constexpr int N = Problem::N;
+  /// H depends on the time: `gradient(z, t)` and `hamiltonian(q, p, t)`.
+  static constexpr bool timed_problem =
+      requires(const Problem& P, const Vec<double, 2 * N>& z, double t) {
+    P.gradient(z, t);
+  };
 
   HamiltonianPrkMethod(Problem P, const PrkTableau& t, NewtonOptions options = {})
       : P_(std::move(P)), t_(t), options_(options), s_(t_.stages()) {
@@ -242,11 +273,30 @@ class HamiltonianPrkMethod {
         throw std::invalid_argument("HamiltonianPrkMethod: a and ahat must be s x s");
   }
 
+  /// The start time t of the next step, for a time-dependent H: stage i at t + c_i h,
+  /// c_i = Σ_j a_ij (as PartitionedRkMethod::set_time).
+  void set_time(double t) requires timed_problem { time_ = t; }
+
   SolveReport step(Vec<double, N>& q, Vec<double, N>& p, double h) {
     const int ns = s_, half = ns * N;
     Vec<double, 2 * N> z0;
     z0 << q, p;
-    const Vec<double, 2 * N> g0 = P_.gradient(z0);
+    std::vector<double> cs(static_cast<std::size_t>(ns));
+    for (int i = 0; i < ns; ++i)
+      for (int j = 0; j < ns; ++j) cs[static_cast<std::size_t>(i)] += t_.a[i][j];
+    // ∇H at a stage (any scalar, for the Jacobian's AutoDiff), at its time when H depends on it
+    auto grad = [&](const auto& z, int k) {
+      if constexpr (timed_problem)
+        return P_.gradient(z, time_ + cs[static_cast<std::size_t>(k)] * h);
+      else
+        return P_.gradient(z);
+    };
+    const Vec<double, 2 * N> g0 = [&] {
+      if constexpr (timed_problem)
+        return P_.gradient(z0, time_);
+      else
+        return P_.gradient(z0);
+    }();
     Eigen::VectorXd x(2 * half);
     for (int i = 0; i < ns; ++i) {
       double c = 0, chat = 0;
@@ -269,9 +319,9 @@ class HamiltonianPrkMethod {
       for (int k = 0; k < ns; ++k) {
         const auto kk = static_cast<std::size_t>(k);
         const Vec<double, 2 * N> z = stage(u, k);
-        g[kk] = P_.gradient(z);
+        g[kk] = grad(z, k);
         if (with_jacobian)
-          H[kk] = ad::jacobian<2 * N>([&](const auto& y) { return P_.gradient(y); }, z);
+          H[kk] = ad::jacobian<2 * N>([&](const auto& y) { return grad(y, k); }, z);
       }
       F = u;
       if (with_jacobian) J.setIdentity(2 * half, 2 * half);
@@ -298,12 +348,16 @@ class HamiltonianPrkMethod {
     double action = 0;
     for (int i = 0; i < ns; ++i) {
       const Vec<double, 2 * N> z = stage(x, i);
-      const Vec<double, 2 * N> g = P_.gradient(z);
+      const Vec<double, 2 * N> g = grad(z, i);
       dq += t_.b[static_cast<std::size_t>(i)] * g.template tail<N>();
       dp -= t_.bhat[static_cast<std::size_t>(i)] * g.template head<N>();
       const Vec<double, N> Qi = z.template head<N>(), Pi = z.template tail<N>();
-      action += t_.b[static_cast<std::size_t>(i)] *
-                (Pi.dot(g.template tail<N>()) - P_.template hamiltonian<double>(Qi, Pi));
+      double Hi;
+      if constexpr (timed_problem)
+        Hi = P_.template hamiltonian<double>(Qi, Pi, time_ + cs[static_cast<std::size_t>(i)] * h);
+      else
+        Hi = P_.template hamiltonian<double>(Qi, Pi);
+      action += t_.b[static_cast<std::size_t>(i)] * (Pi.dot(g.template tail<N>()) - Hi);
     }
     const Vec<double, N> q1 = q + h * dq, p1 = p + h * dp;
     if (!q1.allFinite() || !p1.allFinite() || !std::isfinite(action))
@@ -324,6 +378,7 @@ class HamiltonianPrkMethod {
   NewtonOptions options_;
   int s_;
   double action_ = 0;
+  double time_ = 0;  ///< the start time of the next step (set_time)
 };
 
 }  // namespace vibook

@@ -10,8 +10,10 @@
 #include <doctest/doctest.h>
 
 #include "vibook/integrators/galerkin.hpp"
+#include "vibook/integrators/prk.hpp"
 #include "vibook/verify/expression.hpp"
 #include "vibook/verify/map_study.hpp"
+#include "vibook/verify/typed_potential.hpp"
 #include "vibook/verify/typed_system.hpp"
 
 using namespace vibook;
@@ -116,4 +118,62 @@ TEST_CASE("time-dependent system: a forcing odd in t breaks the reversing symmet
   CHECK(r.failed.empty());
   CHECK_FALSE(r.js["reversibility"]["system_reversible"].get<bool>());
   CHECK_FALSE(r.js["reversibility"]["required"].get<bool>());
+}
+
+namespace {
+
+// V(q, t) typed, as the tableau route's problem type, with every stage's time replaced by the
+// step's start time when `stale` (the clock the step was told): a PRK method with its stages at
+// t where the extended system puts them at t + c_i h.
+struct StalePotential {
+  static constexpr int N = 1;
+  TypedPotential<1> inner;
+  std::shared_ptr<double> clock;
+  template <class T, class Time>
+  T potential(const Vec<T, 1>& q, const Time&) const {
+    return inner.potential<T>(q, *clock);
+  }
+  template <class T, class Time>
+  Vec<T, 1> gradient(const Vec<T, 1>& q, const Time&) const {
+    return inner.gradient<T>(q, *clock);
+  }
+};
+
+// Gauss's two-stage tableau (collocation: a = â), the method of examples/tableaus/gauss2.json.
+PrkTableau gauss2_tableau() {
+  const double r = std::sqrt(3.0) / 6;
+  const std::vector<std::vector<double>> a = {{0.25, 0.25 - r}, {0.25 + r, 0.25}};
+  return {a, a, {0.5, 0.5}, {0.5, 0.5}};
+}
+
+}  // namespace
+
+TEST_CASE("time-dependent system: a tableau's stages at t + c_i h (the --tableau route)") {
+  const std::string text = "v^2/2 + cos(q) + q*cos(t)/2";
+  const auto sys = forced(text);
+  TypedTexts vt{"", "-cos(x) - x*cos(t)/2", "", "p^2/2 + V(q)", 0};
+  vt.system_only = true;
+  vt.allow_time = true;
+  const TypedDiscreteLagrangian v(vt);
+  REQUIRE(v.time_dependent());
+  SUBCASE("Gauss 2 as a PRK tableau, each stage at its time: order 4") {
+    auto m = std::make_shared<PartitionedRkMethod<Eigen::Dynamic, TypedPotential<1>>>(
+        TypedPotential<1>{&v}, gauss2_tableau());
+    const Step step = [m](Eigen::VectorXd& z, double h) { step_qp<1>(*m, z, h); };
+    const MapMeasurement r = measure(*sys, text, step, 4);
+    CHECK(r.failed.empty());
+    CHECK(std::abs(r.js["order"]["fitted"].get<double>() - 4) < 0.2);
+  }
+  SUBCASE("the same with every stage at the step's start time: order 1") {
+    auto clock = std::make_shared<double>(0.0);
+    auto m = std::make_shared<PartitionedRkMethod<Eigen::Dynamic, StalePotential>>(
+        StalePotential{TypedPotential<1>{&v}, clock}, gauss2_tableau());
+    const Step step = [m, clock](Eigen::VectorXd& z, double h) {
+      *clock = z(2);
+      step_qp<1>(*m, z, h);
+    };
+    const MapMeasurement r = measure(*sys, text, step, 4);
+    CHECK(failed(r, "order"));
+    CHECK(std::abs(r.js["order"]["fitted"].get<double>() - 1) < 0.2);
+  }
 }

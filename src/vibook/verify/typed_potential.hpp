@@ -28,6 +28,19 @@ struct TypedPotential {
     for (int i = 0; i < N; ++i) x(i) = D(q(i), N, i);
     return sys->potential<N, D>(x).derivatives();
   }
+  /// The same at the time t, for a time-dependent V(q, t) (the integrators then call set_time
+  /// and evaluate each stage at its own time).
+  template <class T, class Time>
+  T potential(const Vec<T, N>& q, const Time& t) const {
+    return sys->potential<N, T>(q, constant_of<T>(t));
+  }
+  template <class T, class Time>
+  Vec<T, N> gradient(const Vec<T, N>& q, const Time& t) const {
+    using D = ad::Dual<N, T>;
+    Vec<D, N> x;
+    for (int i = 0; i < N; ++i) x(i) = D(q(i), N, i);
+    return sys->potential<N, D>(x, constant_of<D>(t)).derivatives();
+  }
 };
 
 /// The Hamiltonian typed after `vibook verify --hamiltonian` as a problem type of
@@ -51,6 +64,21 @@ struct TypedHamiltonian {
       p(i) = D(z(N + i), 2 * N, N + i);
     }
     return sys->hamiltonian<N, D>(q, p).derivatives();
+  }
+  /// The same at the time t, for a time-dependent H(q, p, t).
+  template <class T, class Time>
+  T hamiltonian(const Vec<T, N>& q, const Vec<T, N>& p, const Time& t) const {
+    return sys->hamiltonian<N, T>(q, p, constant_of<T>(t));
+  }
+  template <class T, class Time>
+  Vec<T, 2 * N> gradient(const Vec<T, 2 * N>& z, const Time& t) const {
+    using D = ad::Dual<2 * N, T>;
+    Vec<D, N> q, p;
+    for (int i = 0; i < N; ++i) {
+      q(i) = D(z(i), 2 * N, i);
+      p(i) = D(z(N + i), 2 * N, N + i);
+    }
+    return sys->hamiltonian<N, D>(q, p, constant_of<D>(t)).derivatives();
   }
 };
 
