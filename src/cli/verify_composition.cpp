@@ -141,7 +141,11 @@ int run_composition(const CompositionOptions& o) {
                           "--lagrangian or --hamiltonian");
     verify::CompositionSpec spec;
     check_coefficients(o, spec);
-    return run_composition_ld(o, std::move(spec));
+    // L_d(t, q0, q1, h) on a time-dependent system: each stage starts at the time the stages
+    // before it reached (composition_ld_study.cpp)
+    CompositionOptions timed = o;
+    timed.allow_time = true;
+    return run_composition_ld(timed, std::move(spec));
   }
   // (--ld, --potential, --lagrangian, --hamiltonian and --dim with another base are refused by
   // the route table of verify.cpp.)

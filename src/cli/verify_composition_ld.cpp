@@ -62,6 +62,10 @@ int run_composition_ld(const CompositionOptions& o, verify::CompositionSpec spec
                         "is required with --composition ld (or --lagrangian or --hamiltonian): "
                         "the system the composition is measured on");
   const auto dl = typed_ld(o, "--composition ld", o.allow_time);
+  if (dl->ld_uses_t() && !dl->time_dependent())
+    throw ArgumentError("--ld",
+                        "uses the time t, but the system (--potential, --lagrangian or "
+                        "--hamiltonian) does not: give the system's own time dependence");
   const verify::SymbolicUse symbolic = verify::parse_symbolic_use(o.symbolic);
   std::vector<double> q0, p0;
   MapStudy study;

@@ -46,6 +46,20 @@ case_ ld-midpoint 0 "" 'L_d\(t, q0, q1, h\)' 'order +(1\.9|2\.0)[0-9]* over .*: 
 case_ ld-midpoint-stale 5 "order,symmetric,time-reversible" 'order +(0\.9|1\.0)[0-9]* over .*: NO' \
   -- --ld "$STALE" --potential='-cos(x) - x*cos(t)/2' --q0 0.5 --p0 0 --symmetric
 
+# A composition of a typed L_d(t, q0, q1, h): each stage starts at the time the stages before it
+# reached (the partial sums of the coefficients), the adjoint stage is -L_d(t + h, q1, q0, -h).
+# Yoshida's fourth-order composition of the forced midpoint rule keeps order 4 and its symmetry;
+# of the stale one (forcing at t), whose base is neither symmetric nor of order 2 on the forced
+# system, it is of order 1 by its own order conditions and measured so.
+case_ composition-ld-forced 0 "" 'L_d\(t, q0, q1, h\) = .*symmetric: L_d\(t, q0, q1, h\) \+ L_d\(t \+ h' \
+  'order +(3\.9|4\.0)[0-9]* over .*: yes' 'symmetric .*: yes' \
+  -- --composition ld --coefficients yoshida4 --ld "$MID" --potential='-cos(x) - x*cos(t)/2' \
+  --q0 0.5 --p0 0 --symmetric
+case_ composition-ld-stale 5 "order conditions,order,symmetric,time-reversible" \
+  'order +(0\.9|1\.0)[0-9]* over .*: NO' \
+  -- --composition ld --coefficients yoshida4 --ld "$STALE" --potential='-cos(x) - x*cos(t)/2' \
+  --q0 0.5 --p0 0 --symmetric --expected-order 4
+
 # A splitting on V(q, t): the drifts carry the time (the extended Hamiltonian's T + p_t), the
 # kicks read it. Forest-Ruth keeps its order 4 and its symmetry on the forced pendulum; the
 # variant with its last half drift moved to the front fails there as on autonomous systems.
@@ -87,7 +101,8 @@ arg protocol-1-with-t --stepper-protocol --stepper-cmd "python3 $STEPPER sv forc
   --hamiltonian "$FORCED" --expected-order 2
 arg protocol-3 --stepper-protocol --stepper-cmd "python3 $STEPPER sv pendulum" \
   --stepper-protocol 3 --hamiltonian 'p^2/2 - cos(q)' --expected-order 2
-arg composition-ld-with-t --ld --composition ld --coefficients yoshida4 \
+# an L_d in t on a system without it (the system must carry its own time dependence)
+arg composition-ld-only-t --ld --composition ld --coefficients yoshida4 \
   --ld 'h*((q1-q0)/h)^2/2 - h*t*q0^2' --potential 'x^2'
 arg ld-only-t --ld --ld 'h*((q1-q0)/h)^2/2 - h*cos(q0)*t' --potential='-cos(x)'
 arg ld-calls-timed-v --ld --ld 'h*((q1-q0)/h)^2/2 - h*V(q0)' --potential 'x^2/2 - x*cos(t)'

@@ -687,9 +687,8 @@ void TypedDiscreteLagrangian::finish_pass(const TypedTexts& t, bool scalar_vars)
     throw ArgumentError(
         arg,
         "uses the time t: this command does not step a time-dependent system "
-        "(vibook verify does, with --method, --tableau, --ld, --splitting and a black-box "
-        "stepper; "
-        "see "
+        "(vibook verify does, with --method, --tableau, --ld, --composition ld, --splitting "
+        "and a black-box stepper; see "
         "the chapter \"Verify your own integrator\", section \"Time-dependent "
         "systems\")");
   }
