@@ -24,6 +24,7 @@
 #include "vibook/integrators/splitting_sequence.hpp"
 #include "vibook/plot/gnuplot.hpp"
 #include "vibook/verify/black_box.hpp"
+#include "vibook/verify/black_box_study.hpp"
 #include "vibook/verify/checks.hpp"
 #include "vibook/verify/composition_ld_study.hpp"
 #include "vibook/verify/composition_study.hpp"
@@ -204,15 +205,24 @@ int brief_order(const std::string& header, const std::string& cls, std::string& 
 // The module of examples/black_box/odeint_steppers.cpp: the installed copy for an installed
 // vibook, else the build tree's. Not finding it is an error of the installation, never a
 // finding about a stepper: std::runtime_error.
-std::shared_ptr<StepperLibrary> odeint_module(const std::string& arg, int dof) {
-  std::string path = VIBOOK_ODEINT_STEPPERS;
-  if (auto p = plot::installed_path(VIBOOK_INSTALL_ODEINT_REL); !p.empty()) path = p.string();
+std::shared_ptr<StepperLibrary> stepper_module(const char* built, const char* installed,
+                                               const char* what, const std::string& arg, int dof) {
+  std::string path = built;
+  if (auto p = plot::installed_path(installed); !p.empty()) path = p.string();
   try {
     return std::make_shared<StepperLibrary>(path, arg, dof);
   } catch (const ArgumentError& e) {
-    throw std::runtime_error(std::string("field audit: Boost.Odeint's steppers module: ") +
-                             e.what());
+    throw std::runtime_error(std::string("field audit: ") + what + ": " + e.what());
   }
+}
+std::shared_ptr<StepperLibrary> odeint_module(const std::string& arg, int dof) {
+  return stepper_module(VIBOOK_ODEINT_STEPPERS, VIBOOK_INSTALL_ODEINT_REL,
+                        "Boost.Odeint's steppers module", arg, dof);
+}
+// The same for examples/black_box/forced_steppers.cpp (C ABI version 2, the time argument).
+std::shared_ptr<StepperLibrary> forced_module(const std::string& arg) {
+  return stepper_module(VIBOOK_FORCED_STEPPERS, VIBOOK_INSTALL_FORCED_REL,
+                        "the forced steppers module", arg, 1);
 }
 
 double number_or_nan(const json& j) {
@@ -262,6 +272,19 @@ void measure_forced(const AuditEntry& a, const std::string& problem_name, MapStu
                     MapMeasurement& rep) {
   const ForcedSystem f = forced_system(problem_name, a.forced_time);
   const std::vector<double> q0{0.5}, p0{0.0};
+  if (!a.stepper.empty()) {  // as `vibook verify --stepper-lib vibook_forced_steppers.so ...`
+    TypedTexts t{"", f.potential, "", "p^2/2 + V(q)", 0};
+    t.system_only = true;
+    t.allow_time = true;
+    const TypedDiscreteLagrangian sys(t);
+    const auto lib = forced_module(a.stepper + "/" + problem_name);
+    set_black_box_map(study, *lib, 1);
+    set_typed_potential(study, sys, f.potential, q0, p0);
+    study.expected = a.expected.value_or(2);
+    study.symmetric_claimed = a.symmetric_claimed;
+    measure_map(study, rep);
+    return;
+  }
   if (!a.splitting.empty()) {  // as `vibook verify --splitting NAME --potential V(x, t)`
     const std::string ld = splitting_stage_ld(true);
     TypedTexts t{ld, f.potential, "", "p^2/2 + V(q)", 0};
@@ -289,6 +312,16 @@ void measure_forced(const AuditEntry& a, const std::string& problem_name, MapStu
   TypedTexts t{f.midpoint, f.potential, "", "p^2/2 + V(q)", 0};
   t.allow_time = true;
   const TypedDiscreteLagrangian dl(t);
+  if (!a.coefficients.empty()) {  // as `vibook verify --composition ld --coefficients NAME`
+    CompositionSpec spec;
+    spec.coefficients = a.coefficients;
+    spec.entry = comp::find_entry(a.coefficients);
+    if (!spec.entry) throw std::logic_error("field audit: no composition '" + a.coefficients + "'");
+    study.symmetric_claimed = true;
+    measure_ld_composition(std::move(spec), dl, {f.midpoint, f.potential, "", "", q0, p0}, study,
+                           SymbolicUse::never, rep);
+    return;
+  }
   study.expected = a.expected.value_or(2);
   study.symmetric_claimed = true;
   measure_timed_ld(dl, {f.midpoint, f.potential, "", "", q0, p0}, study, rep);
@@ -521,7 +554,12 @@ claims::ClaimResult judge_audit_entry(const AuditEntry& a) {
   }
   // The order conditions do not depend on the problem: read from the first measurement.
   std::string conditions_text =
-      !a.stepper.empty()
+      a.forced && !a.stepper.empty()
+          ? fmt::format(
+                "A black box: vibook_forced_steppers.so through the C ABI, version 2 (the "
+                "step's start time an argument), method {}",
+                a.stepper)
+      : !a.stepper.empty()
           ? fmt::format("A black box: vibook_odeint_steppers.so through the C ABI, method {}{}",
                         a.stepper,
                         brief_quote.empty()
@@ -590,17 +628,25 @@ claims::ClaimResult judge_audit_entry(const AuditEntry& a) {
             fmt::format("{} on {}", fmt::join(m.failed, ", "), display_name(m.problem)));
     r.status = failures.empty() ? claims::Status::reproduced : claims::Status::not_reproduced;
     const std::string command =
-        !a.stepper.empty()
+        a.forced && !a.stepper.empty()
+            ? fmt::format(
+                  "--stepper-lib vibook_forced_steppers.so --stepper-arg {}/PROBLEM "
+                  "--potential V(x, t) --q0 0.5 --p0 0 --expected-order {:g}{}",
+                  a.stepper, ms[0].expected, a.symmetric_claimed ? " --symmetric" : "")
+        : a.forced && !a.splitting.empty()
+            ? "--splitting " + a.splitting + " --potential V(x, t) --q0 0.5 --p0 0"
+        : !a.stepper.empty()
             ? fmt::format(
                   "--stepper-lib vibook_odeint_steppers.so --stepper-arg {}/PROBLEM "
                   "--expected-order {:g}{}",
                   a.stepper, ms[0].expected, a.symmetric_claimed ? " --symmetric" : "")
         : !a.splitting.empty()   ? "--splitting " + a.splitting
         : !a.constrained.empty() ? "--method " + a.constrained + " --problem PROBLEM"
-        : a.forced && !a.splitting.empty()
-            ? "--splitting " + a.splitting + " --potential V(x, t) --q0 0.5 --p0 0"
         : a.forced && !a.method.empty()
             ? "--method " + a.method + " --lagrangian L(q, v, t) --q0 0.5 --p0 0"
+        : a.forced && !a.coefficients.empty()
+            ? "--composition ld --coefficients " + a.coefficients +
+                  " --ld L_d(t, q0, q1, h) --potential V(x, t) --q0 0.5 --p0 0 --symmetric"
         : a.forced ? "--ld L_d(t, q0, q1, h) --potential V(x, t) --q0 0.5 --p0 0 --symmetric"
         : a.method.empty()
             ? fmt::format("--composition {} --coefficients {}", a.base, a.coefficients)
@@ -876,6 +922,18 @@ const std::vector<AuditEntry>& audit_entries() {
           "The midpoint rule h L((q0+q1)/2, (q1-q0)/h, t + h/2) of a time-dependent L is a "
           "symmetric variational integrator of order 2.";
       r.push_back(mid);
+      // A composition of that typed L_d(t, q0, q1, h): the stages start at the partial sums.
+      AuditEntry comp_mid = mid;
+      comp_mid.coefficients = "yoshida4";
+      comp_mid.info = {"A-FORCED-COMPOSITION-LD-YOSHIDA4", "A",
+                       "Yoshida 1990, Phys. Lett. A 150; Marsden & West 2001, §4",
+                       "forced: Yoshida's composition of the typed midpoint L_d(t, q0, q1, h): "
+                       "order 4, symplectic, symmetric"};
+      comp_mid.statement =
+          "Yoshida's fourth-order triple jump of the symmetric midpoint rule of a "
+          "time-dependent L is of order 4, symmetric and symplectic, each stage starting at "
+          "the time the stages before it reached.";
+      r.push_back(comp_mid);
       AuditEntry stale = wrong("A-WRONG-FORCED-STALE-LD",
                                "the midpoint rule with the forcing at the step's start: flagged",
                                "The midpoint rule with the forcing evaluated at the step's start "
@@ -886,6 +944,37 @@ const std::vector<AuditEntry>& audit_entries() {
       stale.forced_time = "t";
       stale.problems = forced;
       r.push_back(stale);
+      // The black-box family: a C library of the ABI's version 2 (the step's start time an
+      // argument), examples/black_box/forced_steppers.cpp, right and with the time stale.
+      AuditEntry box;
+      box.forced = true;
+      box.stepper = "sv";
+      box.expected = 2;
+      box.symmetric_claimed = true;
+      box.problems = forced;
+      box.info = {"A-FORCED-BLACKBOX-SV", "A",
+                  "Hairer, Lubich & Wanner, GNI, §I.1.4 (Störmer–Verlet); vibook's C ABI "
+                  "version 2 (vibook/verify/stepper_abi.h)",
+                  "forced: Störmer–Verlet in a C library behind the C ABI with the time: order "
+                  "2, symplectic, symmetric"};
+      box.statement =
+          "Störmer–Verlet with the time as a drifting variable (half a kick at t, a drift of h, "
+          "half a kick at t + h) is a symmetric symplectic method of order 2 for H(q, p, t) = "
+          "p²/2 + V(q, t), measured as a black box told the step's start time.";
+      r.push_back(box);
+      AuditEntry box_stale =
+          wrong("A-WRONG-FORCED-STALE-BLACKBOX",
+                "Störmer–Verlet in a C library with the second half kick at the step's start "
+                "time: flagged",
+                "Störmer–Verlet as a black box whose second half kick reads the step's start "
+                "time t instead of t + h (the drift advances the time with coefficient 0); "
+                "right on an autonomous system.",
+                "", "", 2, {"order"});
+      box_stale.forced = true;
+      box_stale.stepper = "sv_stale";
+      box_stale.symmetric_claimed = true;
+      box_stale.problems = forced;
+      r.push_back(box_stale);
     }
     return r;
   }();
