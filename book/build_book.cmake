@@ -229,6 +229,11 @@ vibook_verify_case(verify-constraint-double.txt 0 --method rattle --potential "q
 vibook_verify_case(verify-constraint-ld.txt 0 --ld "h*((q1-q0)^2/(2*h^2) - (V(q0)+V(q1))/2)"
                    --potential z --constraint "(x^2+y^2+z^2-1)/2"
                    --q0 0.8414709848078965,0,-0.5403023058681398 --p0 0,0.8,0 --symmetric)
+vibook_verify_case(verify-constraint-python.txt 0 --stepper-cmd
+                   "python3 ${SOURCE_DIR}/examples/black_box/rattle_stepper.py rattle"
+                   --potential z --constraint "(x^2+y^2+z^2-1)/2"
+                   --q0 0.8414709848078965,0,-0.5403023058681398 --p0 0,0.8,0
+                   --expected-order 2 --symmetric)
 vibook_verify_case(verify-constraint-ld-v1.txt 5 --ld "h*((q1-q0)^2/(2*h^2) - V(q1))"
                    --potential z --constraint "(x^2+y^2+z^2-1)/2"
                    --q0 0.8414709848078965,0,-0.5403023058681398 --p0 0,0.8,0)
@@ -248,7 +253,7 @@ vibook_verify_case(verify-stepper-python.txt 5 --stepper-cmd
                    "python3 ${SOURCE_DIR}/examples/black_box/stepper.py ruth3_swapped pendulum"
                    --problem pendulum --expected-order 3 --steps 4096)
 foreach(f verify-stepper-odeint.txt verify-stepper-cached.txt verify-stepper-rk78.txt
-          verify-stepper-python.txt verify-time-python.txt)
+          verify-stepper-python.txt verify-time-python.txt verify-constraint-python.txt)
   # the build tree's and the source tree's paths are not the reader's
   file(READ ${GEN}/${f} text)
   string(REPLACE "${STEPPER_LIB}" "vibook_odeint_steppers.so" text "${text}")

@@ -246,7 +246,8 @@ const std::vector<std::pair<std::vector<const char*>, Route>>& routes() {
       {{"--stepper-lib", "--stepper-cmd"},
        {"a black-box stepper",
         {"--stepper-lib", "--stepper-cmd", "--stepper-arg", "--stepper-timeout",
-         "--stepper-protocol", "--problem", "--hamiltonian", "--potential", "--dim"},
+         "--stepper-protocol", "--problem", "--hamiltonian", "--potential", "--dim",
+         "--constraint"},
         {{"--symbolic", "the variational order of a black box is measured"}}}},
       {{"--composition"},
        {"--composition",
@@ -298,8 +299,9 @@ const Route& route_of(const VerifyOptions& o, const CLI::App& c) {
     if (in(kCommon) || in(r.takes)) continue;
     if (name == "--constraint")
       throw ArgumentError(name, fmt::format("does not apply to {}: constraints are stepped by "
-                                            "--method rattle (or shake) and by the constrained "
-                                            "discrete Euler-Lagrange equations of an --ld",
+                                            "--method rattle (or shake), by the constrained "
+                                            "discrete Euler-Lagrange equations of an --ld and by "
+                                            "a black-box stepper",
                                             r.name));
     for (const auto& [n, why] : r.notes)
       if (name == n)
@@ -361,7 +363,7 @@ int run(const VerifyOptions& o, const CLI::App& c) {
     to.file = o.tableau;
     return run_tableau(to);
   }
-  if (c.count("--constraint") > 0) {
+  if (c.count("--constraint") > 0 && r.name != std::string("a black-box stepper")) {
     // Constraints typed as expressions (verify_constrained.cpp): RATTLE or its unprojected
     // variant, or the constrained DEL of the --ld, on H = |p|^2/2 + V.
     ConstrainedOptions co;
@@ -427,6 +429,7 @@ int run(const VerifyOptions& o, const CLI::App& c) {
     so.lib_given = c.count("--stepper-lib") > 0;
     so.cmd_given = c.count("--stepper-cmd") > 0;
     so.timings = o.timings;
+    so.constraints = o.constraints;
     return run_stepper(so);
   }
   if (r.name != std::string("--ld")) {
@@ -559,9 +562,9 @@ std::function<int()> add_verify_command(CLI::App& app) {
                 "with --method or --tableau: the system L = v^2/2 - V(q) the method runs on");
   c->add_option("--constraint", o->constraints,
                 "a holonomic constraint g(q) = 0 in x, y, z (or q, q[1], ...), repeatable, e.g. "
-                "'x^2+y^2+z^2-1'; with --method rattle|shake or an --ld (its constrained discrete "
-                "Euler-Lagrange equations), on H = |p|^2/2 + V with --potential, 2-4 positions, "
-                "--q0 and --p0 on the constraint manifold")
+                "'x^2+y^2+z^2-1'; with --method rattle|shake, an --ld (its constrained discrete "
+                "Euler-Lagrange equations) or a black-box stepper, on H = |p|^2/2 + V with "
+                "--potential, 2-4 positions, --q0 and --p0 on the constraint manifold")
       ->expected(1)
       ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll);
   c->add_option("--dim", o->dim,

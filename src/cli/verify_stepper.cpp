@@ -40,6 +40,7 @@
 #include "vibook/core/output_file.hpp"
 #include "vibook/modified/engine.hpp"
 #include "vibook/verify/black_box_study.hpp"
+#include "vibook/verify/constrained.hpp"
 #include "vibook/verify/expression.hpp"
 #include "vibook/verify/line_protocol.hpp"
 #include "vibook/verify/stepper_abi.h"
@@ -75,6 +76,20 @@ Plan check(const StepperOptions& o) {
     throw ArgumentError("--stepper-cmd", "is empty");
   if (!o.problem.empty() && !o.hamiltonian.empty())
     throw ArgumentError("--hamiltonian", "give the system once: --problem or --hamiltonian");
+  const bool constrained = !o.constraints.empty();
+  if (constrained && (o.potential.empty() || !o.hamiltonian.empty() || !o.problem.empty()))
+    throw ArgumentError(!o.hamiltonian.empty() ? "--hamiltonian"
+                        : !o.problem.empty()   ? "--problem"
+                                               : "--potential",
+                        "with --constraint the system is H = |p|^2/2 + V(q) with V from "
+                        "--potential (type 0 for a free particle) on the constraint manifold");
+  if (constrained && (o.q0.empty() || o.p0.empty()))
+    throw ArgumentError(o.q0.empty() ? "--q0" : "--p0",
+                        "is required with --constraint: a state on the constraint manifold, "
+                        "g(q0) = 0 and G(q0) p0 = 0");
+  for (const std::string& g : o.constraints)
+    if (g.find_first_not_of(" \t") == std::string::npos)
+      throw ArgumentError("--constraint", "is empty");
   const TestProblem* named = nullptr;
   std::vector<double> dq0, dp0;
   if (!o.hamiltonian.empty() || (!o.potential.empty() && o.problem.empty())) {
@@ -109,6 +124,7 @@ Plan check(const StepperOptions& o) {
     verify::TypedTexts t{"", o.potential, "", p.hamiltonian, dim};
     t.system_only = true;
     t.allow_time = true;
+    t.constraints = o.constraints;
     p.system = std::make_unique<verify::TypedDiscreteLagrangian>(t);
   }
   p.dim = p.system->dim();
@@ -138,6 +154,10 @@ Plan check(const StepperOptions& o) {
   };
   p.q0 = vector_or("--q0", o.q0, dq0);
   p.p0 = vector_or("--p0", o.p0, dp0);
+  if (constrained) {  // the counts and the state on the manifold, before the stepper starts
+    MapStudy scratch;
+    verify::set_constrained_typed_system(scratch, *p.system, o.potential, p.q0, p.p0);
+  }
   if (o.t_end_given) {
     p.study.t_end = parse_number("--t-end", o.t_end);
     if (!(p.study.t_end > 0) || p.study.t_end > 1e4)
@@ -206,7 +226,11 @@ int run(const StepperOptions& o, const Plan& p) {
   verify::check_first_step(*box, z0, p.study.h, N, o.lib_given ? "--stepper-lib" : "--stepper-cmd");
   MapStudy s = p.study;
   verify::set_black_box_map(s, *box, N);
-  verify::set_typed_system(s, *p.system, p.q0, p.p0);
+  const bool constrained = p.system->constraint_count() > 0;
+  if (constrained)  // the index-1 reference, the constraint residuals, the manifold's tangents
+    verify::set_constrained_typed_system(s, *p.system, o.potential, p.q0, p.p0);
+  else
+    verify::set_typed_system(s, *p.system, p.q0, p.p0);
   s.expected = p.expected;
   // A command answers a whole run at once, but at the speed of its language: the walk of step
   // counts stops at 1e5 steps a run (a library: 1e6, as for the compositions).
@@ -219,8 +243,12 @@ int run(const StepperOptions& o, const Plan& p) {
                                     o.arg.empty() ? "" : ", --stepper-arg '" + o.arg + "'"));
   else
     rep.line("stepper", fmt::format("command '{}' (line protocol {})", o.cmd, p.protocol));
-  rep.line("system", fmt::format("H = {} ({}), {} degree{} of freedom", p.hamiltonian,
-                                 p.system_from, N, N == 1 ? "" : "s"));
+  std::string constraints;
+  for (int i = 0; i < p.system->constraint_count(); ++i)
+    constraints += fmt::format("{}g{} = {}", i ? ", " : "", i + 1, p.system->constraint_text(i));
+  rep.line("system",
+           fmt::format("H = {} ({}), {} degree{} of freedom{}", p.hamiltonian, p.system_from, N,
+                       N == 1 ? "" : "s", constrained ? ", constraints " + constraints : ""));
   rep.line("initial state", fmt::format("q0 = {}, p0 = {}", vec_text(p.q0), vec_text(p.p0)));
   rep.line("expected order", fmt::format("{:g} (--expected-order)", p.expected));
   rep.js["stepper"] = {{"kind", o.lib_given ? "library" : "command"},
@@ -233,12 +261,14 @@ int run(const StepperOptions& o, const Plan& p) {
   rep.js["system"] = {{"hamiltonian", p.hamiltonian},
                       {"from", p.system_from},
                       {"potential", o.potential},
+                      {"constraints", o.constraints},
                       {"q0", p.q0},
                       {"p0", p.p0}};
   measure_map(s, rep);
-  // Work against precision beside RK4 and, where H = |p|^2/2 + V, Stormer-Verlet.
+  // Work against precision beside RK4 and, where H = |p|^2/2 + V, Stormer-Verlet (not for a
+  // constrained system: neither keeps its constraints).
   const bool separable = p.system_from == "--potential" || p.system_from.rfind("--problem", 0) == 0;
-  verify::black_box_work_precision(s, *p.system, separable, o.timings, rep);
+  if (!constrained) verify::black_box_work_precision(s, *p.system, separable, o.timings, rep);
   box.reset();  // the child process ends before the report is printed
   rep.variational_order_not_derived(
       "a black-box stepper has no discrete Lagrangian to expand; its order is "

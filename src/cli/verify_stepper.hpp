@@ -4,6 +4,7 @@
 #pragma once
 
 #include <string>
+#include <vector>
 
 #include "study_options.hpp"
 
@@ -14,6 +15,9 @@ struct StepperOptions : StudyOptions {
   std::string lib, cmd, arg, timeout, hamiltonian, potential, dim, protocol;
   bool lib_given = false, cmd_given = false, protocol_given = false;
   bool timings = false;  ///< --timings: the seconds of each work-precision run
+  /// --constraint (with --potential): the stepper steps a constrained system, measured with its
+  /// constraint residuals and its symplecticity on the manifold
+  std::vector<std::string> constraints;
 };
 
 /// Run it; the exit status as for `vibook verify` (0 pass, 5 a verdict failed, 2, 3, 4).

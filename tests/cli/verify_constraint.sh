@@ -1,12 +1,13 @@
 #!/usr/bin/env bash
 # #52: constrained mechanical systems. RATTLE on the test problems and on constraints typed after
 # --constraint (H = |p|^2/2 + V with --potential), the constrained discrete Euler-Lagrange
-# equations of a typed --ld; the deliberately wrong inputs (shake, a first-order L_d claimed as
+# equations of a typed --ld, a Python RATTLE as a black box; the deliberately wrong inputs (shake, a first-order L_d claimed as
 # second order) fail the part they break, the edges (first order, two constraints) pass; bad
 # arguments are refused by name before any work (exit 2).
-# Usage: verify_constraint.sh path/to/vibook
+# Usage: verify_constraint.sh path/to/vibook path/to/examples/black_box/rattle_stepper.py
 set -u
 V=$1
+RATTLE_PY=$2
 # shellcheck source=verify_case.sh
 source "$(dirname "$0")/verify_case.sh"
 
@@ -66,6 +67,24 @@ case_ ld-v-at-q1 5 "order,energy" 'order +(0\.9|1\.0)[0-9]* over .*: NO' \
 case_ ld-v-at-q1-first-order 0 "" 'order +(0\.9|1\.0)[0-9]* over .*: yes' \
   '^position constraint .*: yes' '^hidden constraint .*: yes' \
   -- --ld "$SE" --potential z --constraint "$SPH_G" --q0 "$SPH_Q" --p0 0,0.8,0 --expected-order 1
+
+# A black box stepping a constrained system (a Python RATTLE over line protocol 1): measured
+# with the typed constraints' reference, residuals and manifold symplecticity; its unprojected
+# variant fails the hidden constraint.
+case_ blackbox-rattle 0 "" 'order +(1\.9|2\.0)[0-9]* over .*: yes' \
+  '^system +H = p\^2/2 \+ V\(q\) \(--potential\), 3 degrees of freedom, constraints g1 = ' \
+  '^symplectic +on the constraint manifold.*: yes' '^hidden constraint .*: yes' \
+  -- --stepper-cmd "python3 $RATTLE_PY rattle" --potential z --constraint "$SPH_G" \
+  --q0 "$SPH_Q" --p0 0,0.8,0 --expected-order 2 --symmetric
+case_ blackbox-shake 5 "order,symmetric,time-reversible,hidden constraint" \
+  '^hidden constraint .*: NO' \
+  -- --stepper-cmd "python3 $RATTLE_PY shake" --potential z --constraint "$SPH_G" \
+  --q0 "$SPH_Q" --p0 0,0.8,0 --expected-order 2 --symmetric
+arg blackbox-constraint-hamiltonian --hamiltonian --stepper-cmd "python3 $RATTLE_PY rattle" \
+  --hamiltonian 'p^2/2 + q[3]' --constraint "$SPH_G" --q0 "$SPH_Q" --p0 0,0.8,0 \
+  --expected-order 2
+arg blackbox-constraint-off --q0 --stepper-cmd "python3 $RATTLE_PY rattle" --potential z \
+  --constraint "$SPH_G" --q0 1,0,0.1 --p0 0,0.8,0 --expected-order 2
 
 # Bad arguments, each named before any work.
 arg constraint-off-manifold --q0 --method rattle --potential z --constraint "$SPH_G" \

@@ -68,4 +68,12 @@ void measure_constrained_typed(const TypedDiscreteLagrangian& sys, const Constra
                                ConstrainedStep step, const std::vector<double>& q0,
                                const std::vector<double>& p0, MapStudy study, MapMeasurement& rep);
 
+/// The system part of a study on a typed constrained system (as measure_constrained_typed
+/// sets it: z0, the index-1 reference in double-double, the energy, the constraint residuals and
+/// the tangent space of T*Q), for a map set by someone else (a black-box stepper). The same
+/// ArgumentErrors. `sys` must outlive the study.
+void set_constrained_typed_system(MapStudy& study, const TypedDiscreteLagrangian& sys,
+                                  const std::string& potential, const std::vector<double>& q0,
+                                  const std::vector<double>& p0);
+
 }  // namespace vibook::verify

@@ -160,11 +160,8 @@ void measure_n(const TypedDiscreteLagrangian& sys, const ConstrainedTexts& texts
            "not measured: the constrained discrete Lagrangian's exact side is not implemented");
 }
 
-}  // namespace
-
-void measure_constrained_typed(const TypedDiscreteLagrangian& sys, const ConstrainedTexts& texts,
-                               ConstrainedStep step, const std::vector<double>& q0,
-                               const std::vector<double>& p0, MapStudy study, MapMeasurement& rep) {
+// The counts and the time, checked before any work (ArgumentErrors).
+void check_constrained(const TypedDiscreteLagrangian& sys) {
   const int n = sys.dim(), m = sys.constraint_count();
   if (m < 1) throw ArgumentError("--constraint", "is required: no constraint was given");
   if (n < 2 || m >= n || n > kMaxConstrainedDim)
@@ -173,7 +170,7 @@ void measure_constrained_typed(const TypedDiscreteLagrangian& sys, const Constra
         fmt::format("{} constraint{} on {} position{}: a constrained system takes "
                     "2 to {} positions and fewer constraints than positions",
                     m, m == 1 ? "" : "s", n, n == 1 ? "" : "s", kMaxConstrainedDim));
-  if (step == ConstrainedStep::del && sys.ld_uses_t())
+  if (sys.ld_uses_t())
     throw ArgumentError("--ld",
                         "uses the time t: constrained time-dependent systems are not "
                         "implemented");
@@ -181,10 +178,30 @@ void measure_constrained_typed(const TypedDiscreteLagrangian& sys, const Constra
     throw ArgumentError("--potential",
                         "uses the time t: constrained time-dependent systems are "
                         "not implemented");
-  with_dim(n, [&](auto dim) {
+}
+
+}  // namespace
+
+void measure_constrained_typed(const TypedDiscreteLagrangian& sys, const ConstrainedTexts& texts,
+                               ConstrainedStep step, const std::vector<double>& q0,
+                               const std::vector<double>& p0, MapStudy study, MapMeasurement& rep) {
+  check_constrained(sys);
+  with_dim(sys.dim(), [&](auto dim) {
     constexpr int N = decltype(dim)::value;
     if constexpr (N >= 2 && N <= kMaxConstrainedDim)
       measure_n<N>(sys, texts, step, q0, p0, std::move(study), rep);
+  });
+}
+
+void set_constrained_typed_system(MapStudy& study, const TypedDiscreteLagrangian& sys,
+                                  const std::string& potential, const std::vector<double>& q0,
+                                  const std::vector<double>& p0) {
+  check_constrained(sys);
+  with_dim(sys.dim(), [&](auto dim) {
+    constexpr int N = decltype(dim)::value;
+    if constexpr (N >= 2 && N <= kMaxConstrainedDim)
+      set_constrained_system(TypedConstrained<N>(sys, potential), "of the --constraint equations",
+                             q0, p0, study);
   });
 }
 
