@@ -4,72 +4,35 @@
 
 #include <cmath>
 #include <memory>
+#include <mutex>
+#include <stdexcept>
 #include <utility>
 
 #include <fmt/format.h>
 
-#include "vibook/core/autodiff.hpp"
-#include "vibook/core/errors.hpp"
-#include "vibook/core/newton.hpp"
-#include "vibook/core/precision.hpp"
-#include "vibook/mechanics/discrete_lagrangian.hpp"
-#include "vibook/verify/constrained_impl.hpp"
-#include "vibook/verify/reference.hpp"
+#include "vibook/modified/engine.hpp"
 
 namespace vibook::verify {
 
 namespace {
 
-// --- the problems: V(q) and g(q) templated on the scalar (double, double-double, AutoDiff) ----
-
-// The spherical pendulum: a unit mass on a rod of unit length, gravity along −q₃.
-struct SphericalPendulum {
-  static constexpr bool autodiff = true;
-  static constexpr int N = 3, M = 1;
-  int m() const { return M; }
-  double energy_potential(const Vec<double, N>& q) const { return potential<double>(q); }
-  template <class S>
-  S potential(const Vec<S, N>& q) const {
-    return q(2);
+// The two problems are given in the expression language (make_problems) and measured as typed
+// constrained systems are (constrained_typed.cpp): their derivatives from compiled tapes, the
+// same code that measures a user's --constraint.
+void measure_problem(const ConstrainedProblem& problem, bool project, const std::vector<double>& q0,
+                     const std::vector<double>& p0, MapStudy s, MapMeasurement& rep) {
+  std::unique_ptr<TypedDiscreteLagrangian> sys;
+  {
+    std::lock_guard<std::mutex> lock(modified::ginac_mutex());
+    TypedTexts t{"", problem.potential, "", "p^2/2 + V(q)", static_cast<int>(problem.q0.size())};
+    t.system_only = true;
+    t.constraints = problem.constraint_texts;
+    sys = std::make_unique<TypedDiscreteLagrangian>(t);
   }
-  template <class S>
-  Vec<S, M> constraint(const Vec<S, N>& q) const {
-    Vec<S, M> g;
-    g(0) = constant<S>(0.5) * (q(0) * q(0) + q(1) * q(1) + q(2) * q(2) - constant<S>(1));
-    return g;
-  }
-};
-
-// The planar double pendulum in the Cartesian positions (x₁, y₁, x₂, y₂) of its bobs: unit
-// masses and rods, gravity along −y.
-struct DoublePendulum {
-  static constexpr bool autodiff = true;
-  static constexpr int N = 4, M = 2;
-  int m() const { return M; }
-  double energy_potential(const Vec<double, N>& q) const { return potential<double>(q); }
-  template <class S>
-  S potential(const Vec<S, N>& q) const {
-    return q(1) + q(3);
-  }
-  template <class S>
-  Vec<S, M> constraint(const Vec<S, N>& q) const {
-    Vec<S, M> g;
-    const S dx = q(2) - q(0), dy = q(3) - q(1);
-    g(0) = constant<S>(0.5) * (q(0) * q(0) + q(1) * q(1) - constant<S>(1));
-    g(1) = constant<S>(0.5) * (dx * dx + dy * dy - constant<S>(1));
-    return g;
-  }
-};
-
-using namespace constrained_detail;
-
-template <class P>
-void measure_problem(const P& prob, const ConstrainedProblem& problem, bool project,
-                     const std::vector<double>& q0, const std::vector<double>& p0, MapStudy s,
-                     MapMeasurement& rep) {
-  set_constrained_system(prob, "of " + problem.name, q0, p0, s);
-  s.step = naming_failures(
-      [prob, project](Eigen::VectorXd& z, double h) { rattle_step(prob, project, z, h); }, P::N);
+  if (q0.size() != problem.q0.size() || p0.size() != problem.q0.size())
+    throw std::invalid_argument("measure_constrained: the state has the wrong size");
+  set_constrained_typed_system(s, *sys, problem.potential, q0, p0, "of " + problem.name);
+  s.step = typed_rattle_step(*sys, problem.potential, project);
   s.symmetric_claimed = true;
   s.symmetric_note = "";
   rep.line("method",
@@ -102,7 +65,9 @@ std::vector<ConstrainedProblem> make_problems() {
                "H = |p|^2/2 + q3",
                "g = (|q|^2 - 1)/2",
                {std::sin(a), 0.0, -std::cos(a)},
-               {0.0, 0.8, 0.0}});
+               {0.0, 0.8, 0.0},
+               "z",
+               {"(x^2+y^2+z^2-1)/2"}});
   // The double pendulum at angles 0.5 and 1 rad from the downward vertical, the second rod
   // turning at 0.5 rad per unit time.
   const double t1 = 0.5, t2 = 1.0, w2 = 0.5;
@@ -112,7 +77,9 @@ std::vector<ConstrainedProblem> make_problems() {
                "H = |p|^2/2 + y1 + y2",
                "g1 = (x1^2 + y1^2 - 1)/2, g2 = ((x2-x1)^2 + (y2-y1)^2 - 1)/2",
                {x1, y1, x2, y2},
-               {0.0, 0.0, w2 * std::cos(t2), w2 * std::sin(t2)}});
+               {0.0, 0.0, w2 * std::cos(t2), w2 * std::sin(t2)},
+               "q[2]+q[4]",
+               {"(q[1]^2+q[2]^2-1)/2", "((q[3]-q[1])^2+(q[4]-q[2])^2-1)/2"}});
   return v;
 }
 
@@ -132,13 +99,7 @@ const ConstrainedProblem* find_constrained_problem(const std::string& name) {
 void measure_constrained(const ConstrainedProblem& problem, bool project_velocity,
                          const std::vector<double>& q0, const std::vector<double>& p0,
                          MapStudy study, MapMeasurement& rep) {
-  if (problem.name == "spherical-pendulum")
-    return measure_problem(SphericalPendulum{}, problem, project_velocity, q0, p0, std::move(study),
-                           rep);
-  if (problem.name == "double-pendulum")
-    return measure_problem(DoublePendulum{}, problem, project_velocity, q0, p0, std::move(study),
-                           rep);
-  throw std::invalid_argument("measure_constrained: no constrained problem '" + problem.name + "'");
+  measure_problem(problem, project_velocity, q0, p0, std::move(study), rep);
 }
 
 }  // namespace vibook::verify

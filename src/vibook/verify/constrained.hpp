@@ -22,6 +22,10 @@ namespace vibook::verify {
 struct ConstrainedProblem {
   std::string name, hamiltonian, constraints;
   std::vector<double> q0, p0;
+  /// The same system in the expression language (--potential and --constraint texts): it is
+  /// stepped and measured through them, as a typed system is.
+  std::string potential;
+  std::vector<std::string> constraint_texts;
 };
 
 /// The spherical pendulum (q ∈ R³, |q| = 1, V = q₃) and the planar double pendulum in the
@@ -72,8 +76,16 @@ void measure_constrained_typed(const TypedDiscreteLagrangian& sys, const Constra
 /// sets it: z0, the index-1 reference in double-double, the energy, the constraint residuals and
 /// the tangent space of T*Q), for a map set by someone else (a black-box stepper). The same
 /// ArgumentErrors. `sys` must outlive the study.
+/// `where` ends the messages of a state off the manifold.
 void set_constrained_typed_system(MapStudy& study, const TypedDiscreteLagrangian& sys,
                                   const std::string& potential, const std::vector<double>& q0,
-                                  const std::vector<double>& p0);
+                                  const std::vector<double>& p0,
+                                  const std::string& where = "of the --constraint equations");
+
+/// RATTLE (`project`) or its unprojected variant on the typed constrained system, as a study's
+/// map (z = (q, p)); the multipliers' solves report residual and iterations in a SolveError.
+/// `sys` must outlive it.
+Step typed_rattle_step(const TypedDiscreteLagrangian& sys, const std::string& potential,
+                       bool project);
 
 }  // namespace vibook::verify

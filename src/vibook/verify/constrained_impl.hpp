@@ -5,11 +5,9 @@
 ///   `static constexpr int N` (positions) and `M` (constraints, or Eigen::Dynamic),
 ///   `int m() const` (the number of constraints),
 ///   `double energy_potential(const Vec<double, N>&) const` (V in double),
-///   `derivatives<T>(q, ∇V, G, &g)` and `hessian<T>(q, i)` (∇²g_i) in double and double-double,
-///   or `static constexpr bool autodiff = true` with V and g templated on the scalar
-///   (`potential<S>(q)`, `constraint<S>(q)`, differentiated by AutoDiff).
-/// Internal: included by constrained.cpp (the test problems) and constrained_typed.cpp (the
-/// constraints typed after --constraint).
+///   `derivatives<T>(q, ∇V, G, &g)` and `hessian<T>(q, i)` (∇²g_i) in double and double-double.
+/// Internal: included by constrained_typed.cpp, which measures the constraints typed after
+/// --constraint and the test problems (given in the same language).
 #pragma once
 
 #include <algorithm>
@@ -31,52 +29,18 @@
 
 namespace vibook::verify::constrained_detail {
 
-// A problem whose V and g are templates on the scalar (`static constexpr bool autodiff = true`,
-// the test problems) gets its derivatives by AutoDiff. A typed problem brings its own
-// `derivatives` and `hessian` (constrained_typed.cpp: compiled tapes, which cost the compiler
-// far less than the expression tree on nested AutoDiff).
-
-// ∇V and G = ∂g/∂q at q in T (g too when asked).
+// ∇V and G = ∂g/∂q at q in T (g too when asked): the problem's own (constrained_typed.cpp:
+// compiled tapes, which cost the compiler far less than nested AutoDiff on the expression tree).
 template <class P, class T>
 void first_derivatives(const P& prob, const Vec<T, P::N>& q, Vec<T, P::N>& gradV,
                        Eigen::Matrix<T, P::M, P::N>& G, Vec<T, P::M>* g = nullptr) {
-  if constexpr (requires { P::autodiff; }) {
-    constexpr int N = P::N;
-    const int m = prob.m();
-    using D = ad::Dual<N, T>;
-    Vec<D, N> x;
-    for (int i = 0; i < N; ++i) x(i) = D(q(i), N, i);
-    gradV = prob.template potential<D>(x).derivatives();
-    const Vec<D, P::M> c = prob.template constraint<D>(x);
-    G.resize(m, N);
-    if (g) g->resize(m);
-    for (int i = 0; i < m; ++i) {
-      G.row(i) = c(i).derivatives().transpose();
-      if (g) (*g)(i) = c(i).value();
-    }
-  } else {
-    prob.template derivatives<T>(q, gradV, G, g);
-  }
+  prob.template derivatives<T>(q, gradV, G, g);
 }
 
-// ∇²g_i(q), the Hessian of constraint i, in T (nested AutoDiff for a templated problem).
+// ∇²g_i(q) in T.
 template <class P, class T>
 Mat<T, P::N> constraint_hessian(const P& prob, const Vec<T, P::N>& q, int i) {
-  if constexpr (requires { P::autodiff; }) {
-    constexpr int N = P::N;
-    T value;
-    Vec<T, N> grad;
-    Mat<T, N> H;
-    value_gradient_hessian<N, T>(
-        [&](const auto& x) {
-          using S = scalar_t<decltype(x)>;
-          return S(prob.template constraint<S>(Vec<S, N>(x))(i));
-        },
-        q, value, grad, H);
-    return H;
-  } else {
-    return prob.template hessian<T>(q, i);
-  }
+  return prob.template hessian<T>(q, i);
 }
 
 // pᵀ ∇²g_i(q) p for each constraint i (the hidden constraint's time derivative's curvature term).

@@ -98,6 +98,12 @@ struct TypedConstrained {
   }
 };
 
+template <int N>
+Step rattle_map(const TypedConstrained<N>& prob, bool project) {
+  return naming_failures(
+      [prob, project](Eigen::VectorXd& z, double h) { rattle_step(prob, project, z, h); }, N);
+}
+
 std::string constraints_text(const TypedDiscreteLagrangian& sys) {
   std::string s;
   for (int i = 0; i < sys.constraint_count(); ++i)
@@ -136,8 +142,7 @@ void measure_n(const TypedDiscreteLagrangian& sys, const ConstrainedTexts& texts
         "with G(q1) p1 = 0; Newton on (q1, h lambda), L_d's derivatives from its compiled tape");
   } else {
     const bool project = kind == ConstrainedStep::rattle;
-    s.step = naming_failures(
-        [prob, project](Eigen::VectorXd& z, double h) { rattle_step(prob, project, z, h); }, N);
+    s.step = rattle_map(prob, project);
     s.symmetric_claimed = true;
     s.symmetric_note = "";
     rep.line("method", project ? "rattle: RATTLE (Andersen 1983; HLW VII.1.4), symplectic, "
@@ -195,14 +200,25 @@ void measure_constrained_typed(const TypedDiscreteLagrangian& sys, const Constra
 
 void set_constrained_typed_system(MapStudy& study, const TypedDiscreteLagrangian& sys,
                                   const std::string& potential, const std::vector<double>& q0,
-                                  const std::vector<double>& p0) {
+                                  const std::vector<double>& p0, const std::string& where) {
   check_constrained(sys);
   with_dim(sys.dim(), [&](auto dim) {
     constexpr int N = decltype(dim)::value;
     if constexpr (N >= 2 && N <= kMaxConstrainedDim)
-      set_constrained_system(TypedConstrained<N>(sys, potential), "of the --constraint equations",
-                             q0, p0, study);
+      set_constrained_system(TypedConstrained<N>(sys, potential), where, q0, p0, study);
   });
+}
+
+Step typed_rattle_step(const TypedDiscreteLagrangian& sys, const std::string& potential,
+                       bool project) {
+  check_constrained(sys);
+  Step step;
+  with_dim(sys.dim(), [&](auto dim) {
+    constexpr int N = decltype(dim)::value;
+    if constexpr (N >= 2 && N <= kMaxConstrainedDim)
+      step = rattle_map(TypedConstrained<N>(sys, potential), project);
+  });
+  return step;
 }
 
 }  // namespace vibook::verify
