@@ -69,7 +69,11 @@ struct TypedConstrained {
   }
   int m() const { return static_cast<int>(constraints.size()); }
   double energy_potential(const Vec<double, N>& q) const {
-    return sys->template potential<N, double>(q);
+    if (!potential) return 0.0;
+    double value = 0;
+    Vec<double, N> gradient;
+    potential->template at<double>(q, value, gradient, nullptr);  // V((q + q)/2) = V(q)
+    return value;
   }
   template <class T>
   void derivatives(const Vec<T, N>& q, Vec<T, N>& gradV, Eigen::Matrix<T, M, N>& G,
