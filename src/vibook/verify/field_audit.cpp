@@ -33,6 +33,7 @@
 #include "vibook/verify/map_study.hpp"
 #include "vibook/verify/method_study.hpp"
 #include "vibook/verify/method_symbolic.hpp"
+#include "vibook/verify/tableau_study.hpp"
 #include "vibook/verify/typed_system.hpp"
 
 namespace vibook::verify {
@@ -283,6 +284,16 @@ void measure_forced(const AuditEntry& a, const std::string& problem_name, MapStu
     study.expected = a.expected.value_or(2);
     study.symmetric_claimed = a.symmetric_claimed;
     measure_map(study, rep);
+    return;
+  }
+  if (!a.tableau_json.empty()) {  // as `vibook verify --tableau FILE --potential V(x, t)`
+    TypedTexts t{"", f.potential, "", "p^2/2 + V(q)", 0};
+    t.system_only = true;
+    t.allow_time = true;
+    const TypedDiscreteLagrangian sys(t);
+    const TableauSpec spec = parse_tableau(a.tableau_json, a.info.id);
+    const std::string line = set_typed_potential(study, sys, f.potential, q0, p0);
+    measure_tableau_typed(spec, sys, q0, p0, study, line, true, false, rep);
     return;
   }
   if (!a.splitting.empty()) {  // as `vibook verify --splitting NAME --potential V(x, t)`
@@ -569,6 +580,9 @@ claims::ClaimResult judge_audit_entry(const AuditEntry& a) {
       : !a.constrained.empty()
           ? "A constrained method: no composition conditions; its multipliers solved by Newton's "
             "method to the rounding of the constraints"
+      : a.forced && !a.tableau_json.empty()
+          ? "A partitioned Runge–Kutta tableau (its symplecticity and order conditions checked "
+            "by the route at 120 digits)"
       : a.forced ? "A method for a time-dependent system (the time in the state): no composition "
                    "conditions"
       : a.method.empty() ? "Order conditions not evaluated"
@@ -644,6 +658,8 @@ claims::ClaimResult judge_audit_entry(const AuditEntry& a) {
         : !a.constrained.empty() ? "--method " + a.constrained + " --problem PROBLEM"
         : a.forced && !a.method.empty()
             ? "--method " + a.method + " --lagrangian L(q, v, t) --q0 0.5 --p0 0"
+        : a.forced && !a.tableau_json.empty()
+            ? "--tableau lobatto3-iiia-iiib.json --potential V(x, t) --q0 0.5 --p0 0 --symmetric"
         : a.forced && !a.coefficients.empty()
             ? "--composition ld --coefficients " + a.coefficients +
                   " --ld L_d(t, q0, q1, h) --potential V(x, t) --q0 0.5 --p0 0 --symmetric"
@@ -944,6 +960,25 @@ const std::vector<AuditEntry>& audit_entries() {
       stale.forced_time = "t";
       stale.problems = forced;
       r.push_back(stale);
+      // The tableau family: Lobatto IIIA-IIIB with three stages (examples/tableaus), each stage at
+      // t + c_i h.
+      AuditEntry tab;
+      tab.forced = true;
+      tab.problems = forced;
+      tab.tableau_json = R"({"name": "Lobatto IIIA-IIIB", "order": 4, "symmetric": true,
+        "a": [["0", "0", "0"], ["5/24", "1/3", "-1/24"], ["1/6", "2/3", "1/6"]],
+        "b": ["1/6", "2/3", "1/6"],
+        "ahat": [["1/6", "-1/6", "0"], ["1/6", "1/3", "0"], ["1/6", "5/6", "0"]],
+        "bhat": ["1/6", "2/3", "1/6"]})";
+      tab.info = {"A-FORCED-TABLEAU-LOBATTO3", "A",
+                  "Hairer, Lubich & Wanner, GNI, §II.2.2 (Lobatto IIIA-IIIB)",
+                  "forced: the Lobatto IIIA-IIIB tableau with three stages, its stages at "
+                  "t + c_i h: order 4, symplectic, symmetric"};
+      tab.statement =
+          "The three-stage Lobatto IIIA-IIIB pair is a symmetric symplectic partitioned "
+          "Runge–Kutta method of order 4; on H(q, p, t) the time is a position of the extended "
+          "system, each stage at t + c_i h, and the same holds.";
+      r.push_back(tab);
       // The black-box family: a C library of the ABI's version 2 (the step's start time an
       // argument), examples/black_box/forced_steppers.cpp, right and with the time stale.
       AuditEntry box;

@@ -45,10 +45,14 @@ struct AuditEntry {
   /// (constrained.hpp), or empty.
   std::string constrained;
   /// A row on the forced systems (forced_problems(), section "Time-dependent systems"): with
-  /// `method` a Galerkin method on the typed L(q, v, t), with `splitting` a splitting of
+  /// `method` a Galerkin method on the typed L(q, v, t), with `tableau_json` a tableau on
+  /// V(q, t), with `stepper` a C library of ABI version 2, with `splitting` a splitting of
   /// V(q, t); otherwise the midpoint rule as a typed L_d(t, q0, q1, h) with the forcing at the
   /// time `forced_time` ("t+h/2", or the wrong "t").
   bool forced = false;
+  /// A forced row's partitioned Runge–Kutta tableau, as the JSON of a `--tableau` file (the audit
+  /// reads no files), or empty.
+  std::string tableau_json;
   std::string forced_time;
 };
 

@@ -157,10 +157,13 @@ TableauSpec read_tableau(const std::string& path) {
   content.resize(static_cast<std::size_t>(in.gcount()));
   if (content.size() > kMaxTableauBytes)
     bad(path, fmt::format("is larger than {} bytes", kMaxTableauBytes));
-  std::stringstream text(content);
+  return parse_tableau(content, path);
+}
+
+TableauSpec parse_tableau(const std::string& content, const std::string& path) {
   json j;
   try {
-    j = json::parse(text.str());
+    j = json::parse(content);
   } catch (const json::exception& e) {
     bad(path, std::string("is not JSON (") + e.what() + ")");
   }

@@ -79,6 +79,8 @@ constexpr int kRknConditionsOrder = 10;
 /// read, is not JSON, or whose entries are missing, of the wrong shape, not numbers, or more
 /// than kMaxTableauStages stages. `expected` is set from the file's order when present.
 TableauSpec read_tableau(const std::string& path);
+/// The same from the file's text; `path` names it in the messages (and in TableauSpec::file).
+TableauSpec parse_tableau(const std::string& content, const std::string& path);
 
 /// Measure the method on `problem` from (q0, p0) with the settings of `study` (its step,
 /// state, field, energy and expected order are set here; reversibility is required when
