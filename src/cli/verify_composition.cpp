@@ -43,10 +43,7 @@ constexpr double kMaxCoefficient = 1e3;
 // --expected-order, when given.
 void check_expected(const CompositionOptions& o, verify::CompositionSpec& spec) {
   if (!o.expected_given) return;
-  const double e = parse_number("--expected-order", o.expected);
-  if (!(e > 0 && e <= verify::kMaxOrder))
-    throw ArgumentError("--expected-order",
-                        fmt::format("must lie in (0, {:g}]", verify::kMaxOrder));
+  const double e = check_expected_order(o.expected);
   spec.expected = e;
 }
 

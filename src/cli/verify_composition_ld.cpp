@@ -87,10 +87,7 @@ int run_timed_ld(const CompositionOptions& o) {
   MapStudy study;
   check_typed_initial_state(o, dl->dim(), q0, p0, study);
   check_study_options(o, study);
-  study.expected = parse_number("--expected-order", o.expected);
-  if (!(study.expected > 0 && study.expected <= verify::kMaxOrder))
-    throw ArgumentError("--expected-order",
-                        fmt::format("must lie in (0, {:g}]", verify::kMaxOrder));
+  study.expected = check_expected_order(o.expected);
   if (o.json_given) check_output_path(o.json_out, "--json-out", true);
   MapReport rep;
   verify::measure_timed_ld(*dl, {o.ld, o.potential, o.lagrangian, o.hamiltonian, q0, p0}, study,

@@ -54,12 +54,7 @@ int run_constrained_typed(const ConstrainedOptions& o) {
   check_typed_initial_state(o, sys->dim(), q0, p0, study);
   check_study_options(o, study);
   study.expected = 2;
-  if (o.expected_given || del) {
-    study.expected = parse_number("--expected-order", o.expected);
-    if (!(study.expected > 0 && study.expected <= verify::kMaxOrder))
-      throw ArgumentError("--expected-order",
-                          fmt::format("must lie in (0, {:g}]", verify::kMaxOrder));
-  }
+  if (o.expected_given || del) study.expected = check_expected_order(o.expected);
   if (o.json_given) check_output_path(o.json_out, "--json-out", true);
   MapReport rep;
   verify::measure_constrained_typed(*sys, {o.potential, o.ld}, o.step, q0, p0, study, rep);

@@ -113,6 +113,15 @@ void check_initial_state(const Options& o, const TestProblem& problem, std::vect
   }
 }
 
+/// --expected-order as a number in (0, kMaxOrder] (an ArgumentError naming it otherwise).
+inline double check_expected_order(const std::string& text) {
+  const double e = parse_number("--expected-order", text);
+  if (!(e > 0 && e <= verify::kMaxOrder))
+    throw ArgumentError("--expected-order",
+                        fmt::format("must lie in (0, {:g}]", verify::kMaxOrder));
+  return e;
+}
+
 /// The same for a system typed as an expression with `n` degrees of freedom: --q0 and --p0
 /// default to 0.1 in every component.
 template <class Options>

@@ -78,12 +78,7 @@ Plan check_constrained(const MethodOptions& o) {
       throw ArgumentError("--t-end", "must lie in (0, 1e4]");
   }
   p.study.expected = 2;
-  if (o.expected_given) {
-    p.study.expected = parse_number("--expected-order", o.expected);
-    if (!(p.study.expected > 0 && p.study.expected <= verify::kMaxOrder))
-      throw ArgumentError("--expected-order",
-                          fmt::format("must lie in (0, {:g}]", verify::kMaxOrder));
-  }
+  if (o.expected_given) p.study.expected = check_expected_order(o.expected);
   check_study_options(o, p.study);
   if (o.json_given) check_output_path(o.json_out, "--json-out", true);
   return p;
@@ -123,10 +118,7 @@ Plan check(const MethodOptions& o) {
   p.spec.expected = p.spec.rule.order;
   p.spec.expected_from = "documented";
   if (o.expected_given) {
-    p.spec.expected = parse_number("--expected-order", o.expected);
-    if (!(p.spec.expected > 0 && p.spec.expected <= verify::kMaxOrder))
-      throw ArgumentError("--expected-order",
-                          fmt::format("must lie in (0, {:g}]", verify::kMaxOrder));
+    p.spec.expected = check_expected_order(o.expected);
     p.spec.expected_from = "--expected-order";
   }
   p.symbolic = verify::parse_symbolic_use(o.symbolic);

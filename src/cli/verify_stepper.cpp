@@ -167,10 +167,7 @@ Plan check(const StepperOptions& o) {
     throw ArgumentError("--expected-order",
                         "is required with a black-box stepper: the order it is documented to "
                         "have (the verdict tests it)");
-  p.expected = parse_number("--expected-order", o.expected);
-  if (!(p.expected > 0 && p.expected <= verify::kMaxOrder))
-    throw ArgumentError("--expected-order",
-                        fmt::format("must lie in (0, {:g}]", verify::kMaxOrder));
+  p.expected = check_expected_order(o.expected);
   check_study_options(o, p.study);
   if (!o.timeout.empty()) {
     p.timeout = parse_number("--stepper-timeout", o.timeout);

@@ -44,10 +44,7 @@ Plan check(const TableauOptions& o) {
     check_initial_state(o, *p.problem, p.q0, p.p0, p.study);
   }
   if (o.expected_given) {
-    p.spec.expected = parse_number("--expected-order", o.expected);
-    if (!(p.spec.expected > 0 && p.spec.expected <= verify::kMaxOrder))
-      throw ArgumentError("--expected-order",
-                          fmt::format("must lie in (0, {:g}]", verify::kMaxOrder));
+    p.spec.expected = check_expected_order(o.expected);
     p.spec.expected_from = "--expected-order";
   } else if (!p.spec.documented_order) {
     throw ArgumentError("--expected-order",

@@ -12,10 +12,12 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdint>
 #include <memory>
 #include <mutex>
 #include <random>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <fmt/format.h>
@@ -44,6 +46,28 @@ struct Symmetry {
   std::string how;
 };
 
+// max |x + y| / max(|x|, |y|) over 16 random points (q0 near 0.3, q1 within 0.05 of it, h in
+// [0.05, 0.1], with `timed` a time t in [-2, 2]), where (x, y) = parts(q0, q1, h, t): an L_d and
+// its mirror image, which sum to zero when L_d is symmetric.
+template <int N, class Parts>
+double random_asymmetry(Parts&& parts, std::uint64_t seed, bool timed) {
+  std::mt19937_64 rng(seed);
+  std::uniform_real_distribution<double> u(-0.5, 0.5);
+  double worst = 0;
+  for (int k = 0; k < 16; ++k) {
+    Vec<double, N> a, b;
+    for (int i = 0; i < N; ++i) {
+      a(i) = 0.3 + u(rng);
+      b(i) = a(i) + 0.1 * u(rng);
+    }
+    const double h = 0.05 + 0.05 * (u(rng) + 0.5), t = timed ? 4 * u(rng) : 0.0;
+    const auto [x, y] = parts(a, b, h, t);
+    const double scale = std::max({std::abs(x), std::abs(y), 1e-300});
+    worst = std::max(worst, std::abs(x + y) / scale);
+  }
+  return worst;
+}
+
 // L_d(q0, q1, h) + L_d(q1, q0, −h) ≡ 0: first on GiNaC symbols (the engine's zero test);
 // where the engine cannot reduce it to zero, at 16 random points in double (relative 1e-13).
 template <int N>
@@ -65,20 +89,11 @@ Symmetry decide_symmetry(const TypedDiscreteLagrangian& dl) {
       // not decided symbolically (e.g. a function the engine does not expand); numerically below
     }
   }
-  std::mt19937_64 rng(20261127);
-  std::uniform_real_distribution<double> u(-0.5, 0.5);
-  double worst = 0;
-  for (int k = 0; k < 16; ++k) {
-    Vec<double, N> a, b;
-    for (int i = 0; i < N; ++i) {
-      a(i) = 0.3 + u(rng);
-      b(i) = a(i) + 0.1 * u(rng);
-    }
-    const double h = 0.05 + 0.05 * (u(rng) + 0.5);
-    const double x = Ld(a, b, h), y = Ld(b, a, -h);
-    const double scale = std::max({std::abs(x), std::abs(y), 1e-300});
-    worst = std::max(worst, std::abs(x + y) / scale);
-  }
+  const double worst = random_asymmetry<N>(
+      [&Ld](const Vec<double, N>& a, const Vec<double, N>& b, double h, double) {
+        return std::pair{double(Ld(a, b, h)), double(Ld(b, a, -h))};
+      },
+      20261127, false);
   if (worst <= 1e-13)
     return {true, fmt::format("symmetric: L_d(q0, q1, h) + L_d(q1, q0, -h) = 0 to {:.1e} "
                               "(relative) at 16 random points; the engine did not reduce it to "
@@ -112,21 +127,12 @@ struct TimedLd {
 // points (t among them), relative 1e-13; no symbolic attempt (the engine is autonomous).
 template <int N>
 Symmetry decide_timed_symmetry(const TypedDiscreteLagrangian& dl) {
-  std::mt19937_64 rng(20261129);
-  std::uniform_real_distribution<double> u(-0.5, 0.5);
-  double worst = 0;
-  for (int k = 0; k < 16; ++k) {
-    Vec<double, N> a, b;
-    for (int i = 0; i < N; ++i) {
-      a(i) = 0.3 + u(rng);
-      b(i) = a(i) + 0.1 * u(rng);
-    }
-    const double h = 0.05 + 0.05 * (u(rng) + 0.5), t = 4 * u(rng);
-    const double x = dl.evaluate<N, double>(a, b, h, t),
-                 y = dl.evaluate<N, double>(b, a, -h, t + h);
-    const double scale = std::max({std::abs(x), std::abs(y), 1e-300});
-    worst = std::max(worst, std::abs(x + y) / scale);
-  }
+  const double worst = random_asymmetry<N>(
+      [&dl](const Vec<double, N>& a, const Vec<double, N>& b, double h, double t) {
+        return std::pair{dl.evaluate<N, double>(a, b, h, t),
+                         dl.evaluate<N, double>(b, a, -h, t + h)};
+      },
+      20261129, true);
   if (worst <= 1e-13)
     return {true, fmt::format("symmetric: L_d(t, q0, q1, h) + L_d(t + h, q1, q0, -h) = 0 to "
                               "{:.1e} (relative) at 16 random points",
