@@ -19,13 +19,11 @@
 
 #include <fmt/format.h>
 
-#include "vibook/core/autodiff.hpp"
 #include "vibook/core/errors.hpp"
 #include "vibook/core/newton.hpp"
 #include "vibook/core/precision.hpp"
 #include "vibook/mechanics/discrete_lagrangian.hpp"
 #include "vibook/verify/map_study.hpp"
-#include "vibook/verify/reference.hpp"
 
 namespace vibook::verify::constrained_detail {
 

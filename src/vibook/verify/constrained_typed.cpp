@@ -57,11 +57,10 @@ class PointTape {
 template <int N_>
 struct TypedConstrained {
   static constexpr int N = N_, M = Eigen::Dynamic;
-  const TypedDiscreteLagrangian* sys = nullptr;
   std::shared_ptr<const PointTape<N>> potential;  ///< null: V = 0
   std::vector<std::shared_ptr<const PointTape<N>>> constraints;
 
-  TypedConstrained(const TypedDiscreteLagrangian& s, const std::string& potential_text) : sys(&s) {
+  TypedConstrained(const TypedDiscreteLagrangian& s, const std::string& potential_text) {
     std::lock_guard<std::mutex> lock(modified::ginac_mutex());
     if (!potential_text.empty()) potential = std::make_shared<const PointTape<N>>(potential_text);
     for (int i = 0; i < s.constraint_count(); ++i)
@@ -127,17 +126,16 @@ void measure_n(const TypedDiscreteLagrangian& sys, const ConstrainedTexts& texts
   if (kind == ConstrainedStep::del) {
     // L_d's derivatives from its compiled tape, interpreted (tape.hpp): the tape keeps the
     // last q0 and h, so each step has its own copy.
-    std::shared_ptr<const CompiledDiscreteLagrangian<N>> ld;
+    // L_d's derivatives from its compiled tape, interpreted (tape.hpp); one tape for the study's
+    // steps, which run one after another (it keeps the last q0 and h, and recomputes what
+    // depends on them when they change).
+    std::shared_ptr<CompiledDiscreteLagrangian<N>> ld;
     {
       std::lock_guard<std::mutex> lock(modified::ginac_mutex());
-      ld = std::make_shared<const CompiledDiscreteLagrangian<N>>(sys, false);
+      ld = std::make_shared<CompiledDiscreteLagrangian<N>>(sys, false);
     }
     s.step = naming_failures(
-        [prob, ld](Eigen::VectorXd& z, double h) {
-          const CompiledDiscreteLagrangian<N> mine = *ld;
-          constrained_del_step(prob, mine, z, h);
-        },
-        N);
+        [prob, ld](Eigen::VectorXd& z, double h) { constrained_del_step(prob, *ld, z, h); }, N);
     rep.line("discrete Lagrangian", fmt::format("L_d(q0, q1, h) = {} (--ld)", texts.ld));
     rep.line(
         "",
