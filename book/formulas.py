@@ -142,9 +142,10 @@ SS = {
                                     "(Vi322; not read from the display): equal to the generic "
                                     "solver on (3.20) and to the composition to round-off"),
     "(4.1)": ("none", "a definition: the second-order system of §4"),
-    "(4.2)–(4.4b)": ("none", "the modified equation of a two-step method: the construction "
-                             "Vermeeren's (8)–(10) give, which the engine implements; its "
-                             "instances in §4 are compared"),
+    "(4.2)–(4.3)": ("none", "the modified equation of a two-step method: the construction "
+                            "Vermeeren's (8)–(10) give, which the engine implements; its "
+                            "instances in §4 are compared, and so are the derivatives "
+                            "(4.4a)–(4.4b) built from it"),
     "(4.5a)–(4.5c)": ("used", "Nyström methods: the four tableaux of Theorem 10's comparison "
                               "(modified/engine.hpp)"),
     "(4.7)": ("none", "a step of the proof of Theorem 10 (the internal stages); the result "

@@ -278,6 +278,16 @@ TEST_CASE("check-modified: every printed formula against the engine") {
         const bool corrected = !cmp.corrected.empty() || !cmp.verified.empty();
         CHECK(corrected);
       }
+      // (4.4a)-(4.4b), read in one and three degrees of freedom: every line but the expanded
+      // (4.4b) is wrong already in one; that one only in three (the order of f_xv's arguments)
+      if (r.id == "SS-ERR-4.4a" || r.id == "SS-ERR-4.4b") {
+        REQUIRE(r.comparisons.size() == 2);
+        for (const auto& cmp : r.comparisons) {
+          const bool expanded_44b =
+              r.id == "SS-ERR-4.4b" && cmp.part.find("expanded") != std::string::npos;
+          CHECK(cmp.detail.rfind(expanded_44b ? "N = 3: " : "N = 1: ", 0) == 0);
+        }
+      }
     } else if (misprinted.count(r.id)) {
       CHECK(r.status == claims::Status::erratum);
       CHECK(r.cause == "misprint");
