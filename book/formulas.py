@@ -155,8 +155,9 @@ SS = {
                              "compared"),
     "(4.26)–(4.27)": ("measured", "SS-T13", "Theorem 13's one-period LRL changes, predicted "
                                             "from the modified Lagrangians and measured "
-                                            "(check-ss-t13); the brackets of Δ|A| and Δω are "
-                                            "compared in the proof (L662, L666)"),
+                                            "(check-ss-t13); Theorem 16's Δ|A| and Δω (L662, "
+                                            "L666) are compared with them, each with the "
+                                            "formula its label names"),
     "(4.28)": ("none", "a step of the proof of Theorem 13"),
     "(A1)–(A4)": ("none", "the differential equation of arcsin² and its series ansatz in "
                           "Appendix A; the coefficients a_{2k} (L768) and (A5) are compared"),

@@ -905,20 +905,66 @@ void kepler_lrl(Compared& cmp, std::vector<claims::ClaimResult>& out,
     const ex x1 = Jv.x(0, 0), x2 = Jv.x(0, 1), v1 = Jv.x(1, 0), v2 = Jv.x(1, 1);
     const ex dA1 = el[0] * (-x2 * v2) + el[1] * (2 * x1 * v2 - v1 * x2);
     const ex dA2 = el[0] * (2 * x2 * v1 - x1 * v2) + el[1] * (-x1 * v1);
-    // the brackets' contents pointwise (their period averages are taken of equal functions)
+    // The two one-period changes of Theorem 16's proof, each against Theorem 13 for its label:
+    // Δ|A| = −εT[EL(L̄)·v_{A_2}] (4.26), Δω = (εT/e)[EL(L̄)·v_{A_1}] (4.27), with ε = h/2 and
+    // L̄ = −∇φ·ẋ + 2αφ_{x_2}ẋ_2 (the proof's own). The brackets are compared pointwise, before
+    // the average: equal integrands have equal averages. The label decides the target, so a
+    // bracket written under the other label differs even where its own equality holds (that
+    // equality is shown beside it, a cross-check).
+    const GiNaC::symbol& hv = Jv.h();
+    const ex T = GiNaC::symbol("T"), e = GiNaC::symbol("e");
+    JetNotation nl = nv;
+    nl.constant("T", Value::scalar(T)).constant("e", Value::scalar(e));
+    nl.constant("\\Delta", Value::scalar(1)).constant("\\omega", Value::scalar(0));
+    nl.constant("\\mathbf{A}", Value::vector({0, 0}));
+    const std::string el_g =
+        R"(\text{EL}\left(2\alpha\frac{\partial\phi}{\partial x_2}\dot{x}_2\right) \cdot )";
+    const std::string b1 = R"(-12\alpha\frac{Hx_1x_2^2}{|x|^5} + 12\alpha\frac{A_2x_1x_2}{|x|^5})",
+                      b2 = R"(12\alpha\frac{Hx_1^2x_2}{|x|^5} - 12\alpha\frac{A_1x_1x_2}{|x|^5})";
+    auto line = [&](bool eccentricity, bool as_printed) {
+      const std::string lhs = eccentricity ? R"(\Delta|\mathbf{A}| = -\frac{hT}{2})"
+                                           : R"(\Delta\omega = \frac{hT}{2e})";
+      const bool first = eccentricity == as_printed;  // v_{A_1} and its bracket
+      return lhs + R"(\left[)" + el_g + (first ? "v_{A_1}" : "v_{A_2}") + R"(\right] = )" +
+             (eccentricity ? R"(-\frac{hT}{2})" : R"(\frac{hT}{2e})") + R"(\left[)" +
+             (first ? b1 : b2) + R"(\right].)";
+    };
+    const std::string swap_edit =
+        "the brackets of Δ|A| and Δω exchanged, each with its v_A: Theorem 13 ((4.26)–(4.27)) "
+        "pairs Δ|A| with v_{A_2} and Δω with v_{A_1}; both averages vanish on Kepler's orbits "
+        "(the proof's next lines), so Theorem 16's conclusion stands";
+    for (const bool ecc : {true, false}) {
+      Spec sl;
+      sl.paper = Paper::SS;
+      sl.display = ecc ? "L662" : "L666";
+      sl.quote = line(ecc, true);
+      sl.members = {1, 2};
+      sl.part = ecc ? "Δ|A| in the proof of Theorem 16 (the brackets pointwise, before the average)"
+                    : "Δω in the proof of Theorem 16 (the brackets pointwise, before the average)";
+      sl.against =
+          ecc ? "Theorem 13's (4.26), −(h/2)T·EL(L̄)·v_{A_2}, with the engine's VI-1 L_mod"
+              : "Theorem 13's (4.27), (h/2)(T/e)·EL(L̄)·v_{A_1}, with the engine's VI-1 L_mod";
+      sl.proposed = line(ecc, false);
+      sl.proposed_edit = swap_edit;
+      sl.prefer_proposed = true;
+      const ex target = ecc ? -hv / 2 * T * dA2 : hv / 2 * T / e * dA1;
+      cmp.spec(sl, {{&nl, Target::exactly(target), ""}});
+    }
     Spec sa;
     sa.paper = Paper::SS;
     sa.display = "L662";
-    sa.quote = R"(-12\alpha\frac{Hx_1x_2^2}{|x|^5} + 12\alpha\frac{A_2x_1x_2}{|x|^5})";
-    sa.part = "the bracket of Δ|A| in the proof of Theorem 16 (pointwise, before the average)";
-    sa.against = "EL(2αφ_{x₂}ẋ₂)·v_{A_1} with the engine's VI-1 L_mod";
+    sa.quote = b1;
+    sa.part = "the bracket under Δ|A| in the proof of Theorem 16, as its own equality";
+    sa.against = "EL(2αφ_{x₂}ẋ₂)·v_{A_1}, the product written beside it";
+    sa.role = "cross-check";
     cmp.spec(sa, {{&nv, Target::exactly(dA1), ""}});
     Spec sw;
     sw.paper = Paper::SS;
     sw.display = "L666";
-    sw.quote = R"(12\alpha\frac{Hx_1^2x_2}{|x|^5} - 12\alpha\frac{A_1x_1x_2}{|x|^5})";
-    sw.part = "the bracket of Δω in the proof of Theorem 16 (pointwise, before the average)";
-    sw.against = "EL(2αφ_{x₂}ẋ₂)·v_{A_2} with the engine's VI-1 L_mod";
+    sw.quote = b2;
+    sw.part = "the bracket under Δω in the proof of Theorem 16, as its own equality";
+    sw.against = "EL(2αφ_{x₂}ẋ₂)·v_{A_2}, the product written beside it";
+    sw.role = "cross-check";
     cmp.spec(sw, {{&nv, Target::exactly(dA2), ""}});
   }
   claims::ClaimResult r = claim(
@@ -926,8 +972,16 @@ void kepler_lrl(Compared& cmp, std::vector<claims::ClaimResult>& out,
       "The formulas of Theorems 14 and 16 read from the paper: L̄ of Störmer–Verlet (4.29) "
       "against the engine's L_mod, EL(L̄)·v_{A_2} on Kepler's orbits, (4.30) and the brackets of "
       "Δ|A| and Δω against the Euler–Lagrange expression of the engine's VI-1 L_mod (H, m, A and "
-      "v_A from Propositions 2 and 4; EL(L) = d/dt ∂L/∂ẋ − ∂L/∂x).");
-  printed::conclude(r, cmp.take(), errata);
+      "v_A from Propositions 2 and 4; EL(L) = d/dt ∂L/∂ẋ − ∂L/∂x). Each one-period change is "
+      "compared with Theorem 13 for the quantity it names.");
+  // the two lines of Theorem 16's proof carry one slip (their labels exchanged): one erratum
+  printed::conclude(r, cmp.take(), errata, {{"L666", "SS-ERR-L662"}});
+  for (auto& e : errata)
+    if (e.id == "SS-ERR-L662")
+      e.note +=
+          " Independently, SymPy finds each bracket equal to the product beside it and the two "
+          "products different (tests/cli/ss_t16_labels_sympy.py, a test of its own): the label "
+          "decides which one Theorem 13 gives.";
   out.push_back(r);
   // (3.13) and the energy identity in the proof of Proposition 4.
   ns.callable("L",
