@@ -138,6 +138,46 @@ std::vector<claims::ClaimResult> sharma_prints(std::vector<claims::ClaimResult>&
         "the library's extended_midpoint_dl (25), the template EpAVI steps with, divided by Δa", nd,
         Target::exactly(target));
   }
+  // The inline expansions before (58), in the sentence "Using the power series expansions for
+  // …": q_{k±1}(a) and t_{k±1}(a) about the step's midpoint a (their Δa/2 and Δa²/8 say so, and
+  // (58)'s first form is built on them: (q_{k+1} − q_k)/Δa = q' + Δa²/24 q''' + …), i.e. the
+  // Taylor series of q(a ± Δa/2), each sign, through Δa³. Their left-hand sides name q_{k+1}
+  // and q_k loosely (k ± 1 for both ends of one step); only the right-hand sides are compared.
+  for (const int curve : {0, 1}) {
+    std::vector<JetNotation> ns(2, n);
+    std::vector<Case> cases;
+    std::vector<ex> taylor[2];
+    for (int s = 0; s < 2; ++s) {
+      const int sign = s == 0 ? 1 : -1;
+      ns[s].pm_sign(sign).discrete_index('k');
+      numeric fact = 1;
+      for (int k = 0; k <= 4; ++k) {
+        if (k > 0) fact *= k;
+        taylor[s].push_back(GiNaC::pow(numeric(sign, 2), k) / fact * J->x(k, curve));
+      }
+    }
+    for (int s = 0; s < 2; ++s)
+      cases.push_back({&ns[s], Target::scalar_series(taylor[s], 3),
+                       s == 0 ? "the upper sign" : "the lower sign"});
+    const std::string c = curve == 0 ? "q" : "t";
+    auto quote = [&c](const std::string& third) {
+      return c + R"(_{k\pm 1}(a) = )" + c + R"((a) \pm \frac{\Delta a}{2})" + c +
+             R"('(a) + \frac{\Delta a^2}{8})" + c + R"(''(a) \pm \frac{\Delta a^3}{)" + third +
+             "}" + c + R"('''(a) + O(\Delta a^4))";
+    };
+    Spec sp;
+    sp.paper = Paper::S;
+    sp.quote = quote("24");
+    sp.members = {1};
+    sp.part = "the inline expansion of " + c + " about the step's midpoint before (58), each sign";
+    sp.against = "the Taylor series of " + c + "(a ± Δa/2) through Δa³";
+    sp.proposed = quote("48");
+    sp.prefer_proposed = true;
+    sp.proposed_edit =
+        "Δa³/24 read as Δa³/48: (Δa/2)³/3! (the expansion is about the midpoint, "
+        "as its Δa/2 and Δa²/8 are)";
+    cmp.spec(sp, cases);
+  }
   cmp(Paper::S,
       R"(\bar{\mathfrak{L}}_{disc}([\bar{q}], \Delta a) &= \left( t' + \frac{\Delta a^2}{24}t''' + \dots \right) \left( \frac{1}{2}m \left( \frac{q' + \frac{\Delta a^2}{24}q''' + \dots}{t' + \frac{\Delta a^2}{24}t''' + \dots} \right)^2 - V\left(q + \frac{\Delta a^2}{8}q'' + \dots\right) \right))",
       "the expansion (58), first form (through Δa², where its dots begin)", eng + "L_disc", n,
@@ -201,9 +241,17 @@ std::vector<claims::ClaimResult> sharma_prints(std::vector<claims::ClaimResult>&
   r.note =
       "Midpoint rule in the time-transformed setting, 1 DOF, V generic, m symbolic; the discrete "
       "Lagrangian is EpAVI's template (25) on (q, t); only q'' is solved for (t', t'', … free). "
-      "The definition (46) in this setting, and (56)–(66), read from the paper and compared with "
-      "the engine.";
-  printed::conclude(r, cmp.take(), errata);
+      "The definition (46) in this setting, the inline expansions of q and t that lead to (58), "
+      "and (56)–(66), read from the paper and compared with the engine.";
+  // the two inline expansions carry one slip, the same coefficient in both: one erratum
+  printed::conclude(r, cmp.take(), errata, {{"I401.2", "S-ERR-I401"}});
+  for (auto& e : errata)
+    if (e.id == "S-ERR-I401")
+      e.note +=
+          " Independently, SymPy's Taylor series of q(a ± Δa/2) has Δa³/48, and only that "
+          "coefficient gives (58)'s q' + Δa²/24 q''' (tests/cli/s_i401_sympy.py, a test of its "
+          "own). The left-hand sides name the step's two ends q_{k+1}, q_k as q_{k±1}; only the "
+          "right-hand sides are compared.";
   return {r};
 }
 
