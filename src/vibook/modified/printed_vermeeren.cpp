@@ -90,14 +90,36 @@ void stormer_verlet(Compared& cmp, std::vector<claims::ClaimResult>& out,
   const auto& lmod = E.l_mod();
   const std::string sv = "the engine's ";
   const Target f5 = Target::vector_series(f, 5);
+  // The same method in two degrees of freedom: §5's displays are stated for x in ℝ^N (the
+  // Remark after L_mod,5 reads U^{(3)}(U', ẋ, ẋ) and U''(U''ẋ, ẋ) as tensors), and products of
+  // derivative tensors that coincide in one dimension (U^{(3)}(U''ẋ, ẋ) and U''U^{(3)}(ẋ, ẋ))
+  // differ in two. Every display that holds the tensors is read in both.
+  Engine E2(modified::make_discrete_lagrangian(Method::sv, Potential::generic, 2), 5);
+  JetNotation n2 = engine_notation(E2);
+  n2.field("U", "", n2.abstract_field({{0, 1}})).discrete_index('j');
+  auto both = [&](const std::string& quote, const std::string& part, const std::string& against,
+                  const Target& t1, const Target& t2, std::vector<std::size_t> members = {},
+                  const std::string& proposed = {}, const std::string& edit = {}) {
+    Spec sp;
+    sp.paper = Paper::V;
+    sp.quote = quote;
+    sp.part = part;
+    sp.against = against + " (one and two degrees of freedom)";
+    sp.members = std::move(members);
+    sp.proposed = proposed;
+    sp.proposed_edit = edit;
+    sp.prefer_proposed = !proposed.empty();
+    cmp.spec(std::move(sp), {{&n, t1, "N = 1"}, {&n2, t2, "N = 2"}});
+  };
+  const Target f5_2 = Target::vector_series(E2.modified_equation(), 5);
 
   // Example 2 (§3.2) and (22): the modified equation.
   cmp(Paper::V,
       R"(\ddot{x} = -U' + \frac{h^2}{12} \left( U^{(3)}(\dot{x}, \dot{x}) - U''U \right) + \mathcal{O}(h^4),)",
       "the modified equation of Example 2", sv + "modified equation of Störmer–Verlet", n, f5);
-  cmp(Paper::V,
+  both(
       R"(\ddot{x} = -U' + \frac{h^2}{12} \left( U^{(3)}(\dot{x}, \dot{x}) - U''U' \right) + \mathcal{O}(h^4),)",
-      "the modified equation (22)", sv + "modified equation of Störmer–Verlet", n, f5);
+      "the modified equation (22)", sv + "modified equation of Störmer–Verlet", f5, f5_2);
   // The Taylor expansion of Example 2, for either sign of ±.
   {
     std::vector<Case> cases;
@@ -180,23 +202,30 @@ void stormer_verlet(Compared& cmp, std::vector<claims::ClaimResult>& out,
   std::vector<claims::FormulaComparison> sv2 = cmp.take();
 
   // §5.1.2: fourth order.
-  cmp(Paper::V,
+  both(
       R"(\mathcal{L}_{\text{disc}}([x],h) &= \frac{1}{2} |\dot{x}|^2 - U + \frac{h^2}{24} \left( -3U''(\dot{x},\dot{x}) - 3U'\ddot{x} + \left\langle \dot{x}, x^{(3)} \right\rangle \right) \\ &+ \frac{h^4}{5760} \left( -45U''(\ddot{x},\ddot{x}) - 90U^{(3)}(\ddot{x},\dot{x},\dot{x}) - 60U''(x^{(3)},\dot{x}) \right. \\ &+ 5 \left| x^{(3)} \right|^2 - 15U^{(4)}(\dot{x},\dot{x},\dot{x},\dot{x}) - 15U'x^{(4)} + 3\left\langle \dot{x}, x^{(5)} \right\rangle \right) + \mathcal{O}(h^6))",
-      "L_disc([x], h) to h⁴", sv + "L_disc (13) of Störmer–Verlet", n, Target::scalar_series(ld, 5),
-      {1});
-  cmp(Paper::V,
+      "L_disc([x], h) to h⁴", sv + "L_disc (13) of Störmer–Verlet", Target::scalar_series(ld, 5),
+      Target::scalar_series(E2.l_disc(), 5), {1});
+  both(
       R"(\mathcal{L}_{\text{mesh}}([x],h) &= \frac{1}{2} |\dot{x}|^2 - U + \frac{h^2}{24} \left( -2U''(\dot{x},\dot{x}) - 2U'\ddot{x} - |\ddot{x}|^2 \right) \\ &+ \frac{h^4}{720} \Big( 3U''(\ddot{x},\ddot{x}) + 6U^{(3)}(\ddot{x},\dot{x},\dot{x}) + 4U''(x^{(3)},\dot{x}) + 2|x^{(3)}|^2 \\ &+ U^{(4)}(\dot{x},\dot{x},\dot{x},\dot{x}) + U'x^{(4)} + \left\langle \ddot{x},x^{(4)} \right\rangle \Big) + \mathcal{O}(h^6).)",
-      "L_mesh to h⁴", sv + "meshed Lagrangian", n, Target::scalar_series(lm, 5), {1});
-  cmp(Paper::V,
+      "L_mesh to h⁴", sv + "meshed Lagrangian", Target::scalar_series(lm, 5),
+      Target::scalar_series(E2.l_mesh(), 5), {1});
+  both(
       R"(\mathcal{L}_{\text{mod},5}(x,\dot{x},h) &= \frac{1}{2} |\dot{x}|^2 - U + \frac{h^2}{24} \left( U'U' - 2U''(\dot{x},\dot{x}) \right) \\ &+ \frac{h^4}{720} \left( 3U''(U',U') - 6U^{(3)}(U',\dot{x},\dot{x}) - 2U''(U''\dot{x},\dot{x}) + U^{(4)}(\dot{x},\dot{x},\dot{x},\dot{x},\dot{x}) \right).)",
-      "L_mod,5", sv + "modified Lagrangian", n, Target::scalar_series(lmod, 5), {1});
-  cmp(Paper::V,
+      "L_mod,5", sv + "modified Lagrangian", Target::scalar_series(lmod, 5),
+      Target::scalar_series(E2.l_mod(), 5), {1});
+  both(
       R"(\frac{\partial \mathcal{L}_{\text{mesh}}}{\partial x} - \frac{\mathrm{d}}{\mathrm{d}t} \frac{\partial \mathcal{L}_{\text{mesh}}}{\partial \dot{x}} = -\ddot{x} - U' + \frac{h^2}{12} \left( U''\ddot{x} + U^{(3)}(\dot{x}, \dot{x}) \right) + \frac{h^4}{240} \left( -6U^{(4)}(\ddot{x}, \dot{x}, \dot{x}) - 3U^{(3)}(\ddot{x}, \ddot{x}) - 4U^{(3)}(x^{(3)}, \dot{x}) - U''x^{(4)} - U^{(5)}(\dot{x}, \dot{x}, \dot{x}, \dot{x}) \right) + \mathcal{O}(h^6).)",
-      "the Euler–Lagrange expression of L_mesh to h⁴", sv + "∂L_mesh/∂x − d/dt ∂L_mesh/∂ẋ", n,
-      Target::vector_series(E.euler_lagrange_two_term(lm), 5), {0, 1});
-  cmp(Paper::V,
+      "the Euler–Lagrange expression of L_mesh to h⁴", sv + "∂L_mesh/∂x − d/dt ∂L_mesh/∂ẋ",
+      Target::vector_series(E.euler_lagrange_two_term(lm), 5),
+      Target::vector_series(E2.euler_lagrange_two_term(E2.l_mesh()), 5), {0, 1});
+  both(
       R"(\ddot{x} &= -U' + \frac{h^2}{12} \left( U^{(3)}(\dot{x}, \dot{x}) - U''U' \right) \\ &+ \frac{h^4}{720} \left( 20U^{(3)}(U''\dot{x}, \dot{x}) - 8U''(U''U') + 18U^{(4)}(U', \dot{x}, \dot{x}) \\ &- 9U^{(3)}(U', U') - 3U^{(5)}(\dot{x}, \dot{x}, \dot{x}, \dot{x}) \right) + \mathcal{O}(h^6).)",
-      "the modified equation to h⁴", sv + "modified equation of Störmer–Verlet", n, f5);
+      "the modified equation to h⁴", sv + "modified equation of Störmer–Verlet", f5, f5_2, {},
+      R"(\ddot{x} &= -U' + \frac{h^2}{12} \left( U^{(3)}(\dot{x}, \dot{x}) - U''U' \right) \\ &+ \frac{h^4}{720} \left( 12U^{(3)}(U''\dot{x}, \dot{x}) + 8U''U^{(3)}(\dot{x}, \dot{x}) - 8U''(U''U') + 18U^{(4)}(U', \dot{x}, \dot{x}) \\ &- 9U^{(3)}(U', U') - 3U^{(5)}(\dot{x}, \dot{x}, \dot{x}, \dot{x}) \right) + \mathcal{O}(h^6).)",
+      "20U^{(3)}(U''ẋ, ẋ) split as 12U^{(3)}(U''ẋ, ẋ) + 8U''U^{(3)}(ẋ, ẋ): the two products are "
+      "one number in one dimension (as printed, the display holds there) and different vectors "
+      "in two or more");
   std::vector<claims::FormulaComparison> sv4 = cmp.take();
 
   // Lemma 6 / Definition 6: L_mesh from L_disc with the coefficients (2^{1−2i} − 1)B_{2i}/(2i)!
@@ -220,9 +249,10 @@ void stormer_verlet(Compared& cmp, std::vector<claims::ClaimResult>& out,
 
   claims::ClaimResult r_ex2 = claim(
       "V-EX2",
-      "Störmer–Verlet, generic U (one degree of freedom): Example 2's modified equation and (22) "
-      "read from the paper and compared with the engine's modified equation (from the meshed "
-      "Lagrangian, §4.6) through h³; Example 2's Taylor expansion of x(t ± h) for each sign.");
+      "Störmer–Verlet, generic U (one degree of freedom; (22) also in two): Example 2's modified "
+      "equation and (22) read from the paper and compared with the engine's modified equation "
+      "(from the meshed Lagrangian, §4.6) through h³; Example 2's Taylor expansion of x(t ± h) "
+      "for each sign.");
   const int direct_same = powers_agreeing(E.modified_equation_direct(), f, 5);
   r_ex2.values.push_back({"direct_route_terms_agreeing", static_cast<double>(direct_same)});
   r_ex2.note += fmt::format(
@@ -258,8 +288,16 @@ void stormer_verlet(Compared& cmp, std::vector<claims::ClaimResult>& out,
       "V-SV4",
       "Störmer–Verlet, generic U, fourth order (§5.1.2): L_disc, L_mesh, L_mod,5, the "
       "Euler–Lagrange expression of L_mesh and the modified equation, each read from the paper "
-      "and compared with the engine through h⁵.");
+      "and compared with the engine through h⁵, in one and in two degrees of freedom (the "
+      "paper's setting is x in ℝ^N).");
   printed::conclude(r_sv4, std::move(sv4), errata, {{"L883", "V-ERR-SV4"}});
+  for (auto& e : errata)
+    if (e.id == "V-ERR-L896")
+      e.note +=
+          " The display holds in one degree of freedom, where U^{(3)}(U''ẋ, ẋ) and "
+          "U''U^{(3)}(ẋ, ẋ) are one number, and not in two. Independently, SymPy derives the h⁴ "
+          "term from the recurrence x(t+h) − 2x(t) + x(t−h) = −h²U'(x(t)) with an undefined U "
+          "and finds the same (tests/cli/v_sv4_sympy.py, a test of its own).";
   out.push_back(r_sv4);
 
   claims::ClaimResult r_l6 = claim(
