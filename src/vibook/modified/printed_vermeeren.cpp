@@ -169,35 +169,40 @@ void stormer_verlet(Compared& cmp, std::vector<claims::ClaimResult>& out,
     }
   }
   // §5.1.1's L_disc([x], h): the first form (through h², where its dots begin) and the result.
-  cmp(Paper::V,
+  both(
       R"(\left| \dot{x} + \frac{h^2}{24} x^{(3)} + \dots \right|^2 - \frac{1}{2} U \left( x - \frac{h}{2} \dot{x} + \frac{1}{2} \left( \frac{h}{2} \right)^2 \ddot{x} - \dots \right) - \frac{1}{2} U \left( x + \frac{h}{2} \dot{x} + \frac{1}{2} \left( \frac{h}{2} \right)^2 \ddot{x} + \dots \right))",
-      "the expansion of L_disc([x], h), first form", sv + "L_disc (13) of Störmer–Verlet", n,
-      Target::scalar_series(ld, 2));
-  cmp(Paper::V,
+      "the expansion of L_disc([x], h), first form", sv + "L_disc (13) of Störmer–Verlet",
+      Target::scalar_series(ld, 2), Target::scalar_series(E2.l_disc(), 2));
+  both(
       R"(= \frac{1}{2} |\dot{x}|^2 - U + \frac{h^2}{24} \left( \left\langle \dot{x}, x^{(3)} \right\rangle - 3U' \ddot{x} - 3U'' (\dot{x}, \dot{x}) \right) + \mathcal{O}(h^4),)",
-      "the expansion of L_disc([x], h), result", sv + "L_disc (13) of Störmer–Verlet", n,
-      Target::scalar_series(ld, 5));
+      "the expansion of L_disc([x], h), result", sv + "L_disc (13) of Störmer–Verlet",
+      Target::scalar_series(ld, 5), Target::scalar_series(E2.l_disc(), 5));
   // (21): the definition through L_disc, the intermediate line pair and the result.
-  cmp(Paper::V,
+  both(
       R"(\mathcal{L}_{\text{mesh}}([x],h) = \mathcal{L}_{\text{disc}}([x],h) - \frac{h^2}{24} \frac{d^2}{dt^2} \mathcal{L}_{\text{disc}}([x],h) + \mathcal{O}(h^4))",
-      "L_mesh from L_disc (its definition)", sv + "meshed Lagrangian", n,
-      Target::scalar_series(lm, 5), {1});
-  cmp(Paper::V,
+      "L_mesh from L_disc (its definition)", sv + "meshed Lagrangian", Target::scalar_series(lm, 5),
+      Target::scalar_series(E2.l_mesh(), 5), {1});
+  both(
       R"(= \frac{1}{2} |\dot{x}|^2 - U + \frac{h^2}{24} \left( -|\ddot{x}|^2 - 2U'\ddot{x} - 2U''(\dot{x},\dot{x}) \right) + \mathcal{O}(h^4). \tag{21})",
-      "L_mesh (21), result", sv + "meshed Lagrangian", n, Target::scalar_series(lm, 5));
-  cmp(Paper::V,
+      "L_mesh (21), result", sv + "meshed Lagrangian", Target::scalar_series(lm, 5),
+      Target::scalar_series(E2.l_mesh(), 5));
+  both(
       R"(\mathcal{O}(h^4) = \frac{\partial \mathcal{L}_{\text{mesh}}}{\partial x} - \frac{\mathrm{d}}{\mathrm{d}t} \frac{\partial \mathcal{L}_{\text{mesh}}}{\partial \dot{x}} = -\ddot{x} - U' + \frac{h^2}{12} \left( U'' \ddot{x} + U^{(3)}(\dot{x}, \dot{x}) \right).)",
-      "the Euler–Lagrange expression of L_mesh, through h³", sv + "∂L_mesh/∂x − d/dt ∂L_mesh/∂ẋ", n,
-      Target::vector_series(E.euler_lagrange_two_term(lm), 3), {1, 2});
-  cmp(Paper::V,
+      "the Euler–Lagrange expression of L_mesh, through h³", sv + "∂L_mesh/∂x − d/dt ∂L_mesh/∂ẋ",
+      Target::vector_series(E.euler_lagrange_two_term(lm), 3),
+      Target::vector_series(E2.euler_lagrange_two_term(E2.l_mesh()), 3), {1, 2});
+  both(
       R"(\mathcal{L}_{\text{mod},3}(x,\dot{x},h) = \frac{1}{2}|\dot{x}|^2 - U + \frac{h^2}{24} \left( \left| U' \right|^2 - 2U''(\dot{x},\dot{x}) \right).)",
-      "L_mod,3 (23)", sv + "modified Lagrangian", n, Target::scalar_series(lmod, 3), {1});
+      "L_mod,3 (23)", sv + "modified Lagrangian", Target::scalar_series(lmod, 3),
+      Target::scalar_series(E2.l_mod(), 3), {1});
   {
-    std::vector<ex> lmod3(lmod.begin(), lmod.begin() + 4);
-    cmp(Paper::V,
+    std::vector<ex> lmod3(lmod.begin(), lmod.begin() + 4),
+        lmod3_2(E2.l_mod().begin(), E2.l_mod().begin() + 4);
+    both(
         R"(-\ddot{x} - U' + \frac{h^2}{12} \left( U''U' + U^{(3)}(\dot{x}, \dot{x}) + 2U''\ddot{x} \right) = 0.)",
-        "the Euler–Lagrange equation of L_mod,3", sv + "Euler–Lagrange expression of L_mod,3", n,
-        Target::vector_series(E.euler_lagrange(lmod3), 3), {0});
+        "the Euler–Lagrange equation of L_mod,3", sv + "Euler–Lagrange expression of L_mod,3",
+        Target::vector_series(E.euler_lagrange(lmod3), 3),
+        Target::vector_series(E2.euler_lagrange(lmod3_2), 3), {0});
   }
   std::vector<claims::FormulaComparison> sv2 = cmp.take();
 
@@ -398,15 +403,30 @@ void symplectic_euler(Compared& cmp, std::vector<claims::ClaimResult>& out,
       "the symplectic Euler discrete Lagrangian",
       "the library's symplectic_euler_adjoint_dl, divided by h", d.n,
       Target::exactly(discrete_lagrangian(se_dl, d.q0, d.q1, h) / h));
-  cmp(Paper::V,
+  // The three Lagrangians also in two degrees of freedom (x in ℝ^N, as for §5.1).
+  Engine E2(modified::make_discrete_lagrangian(Method::se_adjoint, Potential::generic, 2), 2);
+  JetNotation n2 = engine_notation(E2);
+  n2.field("U", "", n2.abstract_field({{0, 1}}));
+  auto both = [&](const std::string& quote, const std::string& part, const std::string& against,
+                  const std::vector<ex>& s1, const std::vector<ex>& s2) {
+    Spec sp;
+    sp.paper = Paper::V;
+    sp.quote = quote;
+    sp.part = part;
+    sp.against = against + " (one and two degrees of freedom)";
+    sp.members = {1};
+    cmp.spec(std::move(sp), {{&n, Target::scalar_series(s1, 2), "N = 1"},
+                             {&n2, Target::scalar_series(s2, 2), "N = 2"}});
+  };
+  both(
       R"(\mathcal{L}_{\rm disc}([x],h) = \frac{1}{2}|\dot{x}|^2 - U + \frac{h}{2}U'\dot{x} + \frac{h^2}{24}\left(\left\langle \dot{x}, x^{(3)} \right\rangle - 3U'\ddot{x} - 3U''(\dot{x},\dot{x})\right) + \mathcal{O}(h^3))",
-      "L_disc([x], h)", eng + "L_disc (13)", n, Target::scalar_series(E.l_disc(), 2), {1});
-  cmp(Paper::V,
+      "L_disc([x], h)", eng + "L_disc (13)", E.l_disc(), E2.l_disc());
+  both(
       R"(\mathcal{L}_{\text{mesh}}([x],h) = \frac{1}{2}|\dot{x}|^2 - U + \frac{h}{2}U'\dot{x} - \frac{h^2}{24}\left(|\ddot{x}|^2 + 2U'\ddot{x} + 2U''(\dot{x},\dot{x})\right) + \mathcal{O}(h^3).)",
-      "L_mesh", eng + "meshed Lagrangian", n, Target::scalar_series(E.l_mesh(), 2), {1});
-  cmp(Paper::V,
+      "L_mesh", eng + "meshed Lagrangian", E.l_mesh(), E2.l_mesh());
+  both(
       R"(\mathcal{L}_{\text{mod},2}(x,\dot{x},h) = \frac{1}{2}|\dot{x}|^2 - U + \frac{h}{2}U'\dot{x} + \frac{h^2}{24}\left(U'U' - 2U''(\dot{x},\dot{x})\right).)",
-      "L_mod,2 (24)", eng + "modified Lagrangian", n, Target::scalar_series(E.l_mod(), 2), {1});
+      "L_mod,2 (24)", eng + "modified Lagrangian", E.l_mod(), E2.l_mod());
   // (25): the general formula for H = ½p² + U and its value, against the engine's series
   // Legendre transform of L_mod,2.
   {
@@ -458,7 +478,8 @@ void symplectic_euler(Compared& cmp, std::vector<claims::ClaimResult>& out,
       "V-SE",
       "Symplectic Euler L_disc = ½((x_{j+1} − x_j)/h)² − U(x_j) (vibook's se-adjoint), generic U: "
       "the discrete Lagrangian against the library's template, L_disc([x], h), L_mesh, L_mod,2 "
-      "(24), the Legendre map and its inverse, and H_mod,2 (25) both as the general formula "
+      "(24) (these three also in two degrees of freedom), the Legendre map and its inverse, and "
+      "H_mod,2 (25) both as the general formula "
       "(with H = ½p² + U) and as its value, each read from the paper and compared with the "
       "engine's series Legendre transform through h².");
   printed::conclude(r, cmp.take(), errata);
