@@ -115,10 +115,27 @@ auto mechanical_2d(std::vector<std::pair<int, ex>> phi) {
 // §4: Störmer–Verlet (4.13)–(4.15) and symplectic Euler (4.16)–(4.20), Theorem 11.
 void sv_and_symplectic_euler(Compared& cmp, std::vector<claims::ClaimResult>& out,
                              std::vector<claims::ClaimResult>& errata) {
+  // The displays in x and its derivatives are read in two and in three degrees of freedom
+  // (φ_xxx is a third-order tensor; the paper's x is in ℝ^n): one case each.
+  auto two = [&cmp](const JetNotation& n2, const Target& t2, const JetNotation& n3,
+                    const Target& t3, const std::string& quote, const std::string& part,
+                    const std::string& against, std::vector<std::size_t> members = {},
+                    bool equation = false, const std::string& display = {}) {
+    Spec sp;
+    sp.paper = Paper::SS;
+    sp.quote = quote;
+    sp.display = display;
+    sp.part = part;
+    sp.against = against + " (two and three degrees of freedom)";
+    sp.members = std::move(members);
+    sp.equation = equation;
+    cmp.spec(std::move(sp), {{&n2, t2, "N = 2"}, {&n3, t3, "N = 3"}});
+  };
   {
     Engine E(modified::make_discrete_lagrangian(Method::sv, Potential::generic, 2), 3);
+    Engine E3(modified::make_discrete_lagrangian(Method::sv, Potential::generic, 3), 3);
     const GiNaC::symbol h = E.jets().h();
-    JetNotation n = ss_notation(E, {{0, 1}});
+    JetNotation n = ss_notation(E, {{0, 1}}), n3 = ss_notation(E3, {{0, 1}});
     Discrete2 d;
     JetNotation nd = n;
     d.install(nd);
@@ -127,22 +144,19 @@ void sv_and_symplectic_euler(Compared& cmp, std::vector<claims::ClaimResult>& ou
         "the Störmer–Verlet discrete Lagrangian (4.13)",
         "the library's stormer_verlet_dl, divided by h", nd,
         Target::exactly(d.L(stormer_verlet_dl(mechanical_2d({{0, 1}})), d.q0, d.q1, h) / h), {1});
-    cmp(Paper::SS,
+    two(n, Target::scalar_series(E.l_mod(), 3), n3, Target::scalar_series(E3.l_mod(), 3),
         R"(\mathbb{L}_{\text{mod}}^{\text{SV}}(x, \dot{x}, h) = \frac{1}{2} |\dot{x}|^2 - \phi(x) + \frac{h^2}{24} (|\nabla \phi|^2 - 2\phi_{xx} \langle \dot{x}, \dot{x} \rangle) + \mathcal{O}(h^4))",
-        "L_mod of Störmer–Verlet (4.14)", "the engine's modified Lagrangian (generic φ, 2-D)", n,
-        Target::scalar_series(E.l_mod(), 3), {1});
-    Spec sp;
-    sp.paper = Paper::SS;
-    sp.display = "(4.15)";
-    sp.quote =
-        R"(\ddot{x} = -\nabla \phi + \frac{h^2}{12} (\phi_{xxx} \langle \dot{x}, \dot{x} \rangle - \phi_{xx} \nabla \phi) + \mathcal{O}(h^4).)";
-    sp.part = "the modified equation of Störmer–Verlet (4.15)";
-    sp.against = "the engine's modified equation (generic φ, 2-D)";
-    cmp.spec(sp, {{&n, Target::vector_series(E.modified_equation(), 3), ""}});
+        "L_mod of Störmer–Verlet (4.14)", "the engine's modified Lagrangian (generic φ)", {1});
+    two(n, Target::vector_series(E.modified_equation(), 3), n3,
+        Target::vector_series(E3.modified_equation(), 3),
+        R"(\ddot{x} = -\nabla \phi + \frac{h^2}{12} (\phi_{xxx} \langle \dot{x}, \dot{x} \rangle - \phi_{xx} \nabla \phi) + \mathcal{O}(h^4).)",
+        "the modified equation of Störmer–Verlet (4.15)",
+        "the engine's modified equation (generic φ)", {}, false, "(4.15)");
   }
   Engine E(modified::make_discrete_lagrangian(Method::se, Potential::generic, 2), 3);
+  Engine E3(modified::make_discrete_lagrangian(Method::se, Potential::generic, 3), 3);
   const GiNaC::symbol h = E.jets().h();
-  JetNotation n = ss_notation(E, {{0, 1}});
+  JetNotation n = ss_notation(E, {{0, 1}}), n3 = ss_notation(E3, {{0, 1}});
   const std::string eng = "the engine's ";
   Discrete2 d;
   JetNotation nd = n;
@@ -157,37 +171,30 @@ void sv_and_symplectic_euler(Compared& cmp, std::vector<claims::ClaimResult>& ou
       "its discrete Euler–Lagrange equation",
       "−1/h × the discrete Euler–Lagrange equation of the library's symplectic_euler_dl", nd,
       Target::exactly(d.del(dl, h)), {}, true);
-  cmp(Paper::SS,
+  two(n, Target::scalar_series(E.l_mod(), 3), n3, Target::scalar_series(E3.l_mod(), 3),
       R"(\mathbb{L}_{\text{mod}}^{\text{symE}}(x, \dot{x}, h) = \frac{1}{2} |\dot{x}|^2 - \phi - \frac{h}{2} \nabla \phi \cdot \dot{x} + \frac{h^2}{24} (|\nabla \phi|^2 - 2\phi_{xx} \langle \dot{x}, \dot{x} \rangle) + \mathcal{O}(h^4))",
-      "L_mod (4.17)", eng + "modified Lagrangian", n, Target::scalar_series(E.l_mod(), 3), {1});
-  {
-    Spec sp;
-    sp.paper = Paper::SS;
-    sp.display = "L521";
-    sp.quote =
-        R"(\ddot{x} = -\nabla \phi + \frac{h^2}{12} (\phi_{xxx} \langle \dot{x}, \dot{x} \rangle - \phi_{xx} \nabla \phi) + \mathcal{O}(h^4).)";
-    sp.part = "the modified equation of symplectic Euler";
-    sp.against = eng + "modified equation";
-    cmp.spec(sp, {{&n, Target::vector_series(E.modified_equation(), 3), ""}});
-  }
-  cmp(Paper::SS,
+      "L_mod (4.17)", eng + "modified Lagrangian", {1});
+  two(n, Target::vector_series(E.modified_equation(), 3), n3,
+      Target::vector_series(E3.modified_equation(), 3),
+      R"(\ddot{x} = -\nabla \phi + \frac{h^2}{12} (\phi_{xxx} \langle \dot{x}, \dot{x} \rangle - \phi_{xx} \nabla \phi) + \mathcal{O}(h^4).)",
+      "the modified equation of symplectic Euler", eng + "modified equation", {}, false, "L521");
+  two(n, Target::scalar_series(E.l_disc(), 3), n3, Target::scalar_series(E3.l_disc(), 3),
       R"(\mathbb{L}^{\text{symE}}([x], h) &= \frac{1}{2} \frac{|x(t+h) - x(t)|^2}{h^2} - \phi(x(t+h)) \\ &= \frac{1}{2} |\dot{x}|^2 - \phi(x) - \frac{h}{2} \nabla \phi \cdot \dot{x} + \frac{h^2}{24} (\dot{x}^\top x^{(3)} - 3\nabla \phi \ddot{x} - 3\phi_{xx} \langle \dot{x}, \dot{x} \rangle) \\ &\quad - \frac{h^3}{48} (\nabla \phi \cdot x^{(3)} + 3\phi_{xx} \langle \dot{x}, \ddot{x} \rangle + \phi_{xxx} \langle \dot{x}, \dot{x}, \dot{x} \rangle) + \mathcal{O}(h^4).)",
       "the expansion 𝕃^symE([x], h) in the proof of Theorem 11, both forms",
-      eng + "L_disc (jets at t + h/2)", n, Target::scalar_series(E.l_disc(), 3), {1, 2});
-  cmp(Paper::SS,
+      eng + "L_disc (jets at t + h/2)", {1, 2});
+  two(n, Target::scalar_series(E.l_mesh(), 3), n3, Target::scalar_series(E3.l_mesh(), 3),
       R"(\mathbb{L}_{\text{mod}}^{\text{symE}}(x, \dot{x}, h) &= \mathbb{L}^{\text{symE}}([x], h) - \frac{h^2}{24} \frac{d^2}{dt^2} \mathbb{L}^{\text{symE}}([x], h) + \mathcal{O}(h^4) \\ &= \frac{1}{2} |\dot{x}|^2 - \phi - \frac{h}{2} \nabla \phi \cdot \dot{x} + \frac{h^2}{24} (-|\dot{x}|^2 - 2\nabla \phi \cdot \ddot{x} - 2\phi_{xx} \langle \dot{x}, \dot{x} \rangle) \\ &\quad - \frac{h^3}{48} \left(\nabla \phi \cdot x^{(3)} + 3\phi_{xx} \langle \dot{x}, \ddot{x} \rangle + \phi_{xxx} \langle \dot{x}, \dot{x}, \dot{x} \rangle - \frac{d^2}{dt^2} (\nabla \phi \cdot \dot{x}) \right) + \mathcal{O}(h^4).)",
       "the meshed Lagrangian (4.18), from its definition and written out",
-      eng + "meshed Lagrangian", n, Target::scalar_series(E.l_mesh(), 3), {1, 2});
+      eng + "meshed Lagrangian", {1, 2});
   // (4.19): two identities of the time derivative.
   {
     const GiNaC::symbol x1 = E.jets().x(0, 0);
     (void)x1;
     cmp(Paper::SS, R"(\nabla \phi \cdot \dot{x} = \frac{d\phi}{dt},)", "(4.19), first identity",
         "zero (the two sides are equal)", n, Target::exactly(ex(0)), {}, true);
-    cmp(Paper::SS,
+    two(n, Target::exactly(ex(0)), n3, Target::exactly(ex(0)),
         R"(\nabla \phi \cdot x^{(3)} + 3\phi_{xx} \langle \dot{x}, \ddot{x} \rangle + \phi_{xxx} \langle \dot{x}, \dot{x}, \dot{x} \rangle = \frac{d^3 \phi}{dt^3},)",
-        "(4.19), second identity", "zero (the two sides are equal)", n, Target::exactly(ex(0)), {},
-        true);
+        "(4.19), second identity", "zero (the two sides are equal)", {}, true);
   }
   {
     // Shen & Sun's EL(L) = d/dt ∂L/∂ẋ − ∂L/∂x. The printed right side has ẍ replaced by −∇φ
@@ -202,9 +209,11 @@ void sv_and_symplectic_euler(Compared& cmp, std::vector<claims::ClaimResult>& ou
         "the Euler–Lagrange equation of L_mod (end of the proof of Theorem 11), on "
         "solutions of the modified equation";
     sp.against = "zero: both sides vanish on solutions of the engine's modified equation (h⁰…h³)";
-    Target zero = Target::exactly({ex(0), ex(0)});
+    Target zero = Target::exactly({ex(0), ex(0)}), zero3 = Target::exactly({ex(0), ex(0), ex(0)});
     zero.reduce = on_shell(E.jets(), {0, 1}, E.modified_equation(), 3);
-    cmp.spec(sp, {{&n, zero, ""}});
+    zero3.reduce = on_shell(E3.jets(), {0, 1, 2}, E3.modified_equation(), 3);
+    sp.against += " (two and three degrees of freedom)";
+    cmp.spec(sp, {{&n, zero, "N = 2"}, {&n3, zero3, "N = 3"}});
   }
   std::vector<claims::FormulaComparison> t11 = cmp.take();
   // (4.20): H_mod,1 of symplectic Euler, one degree of freedom (the pendulum's setting).
