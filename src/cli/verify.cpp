@@ -4,7 +4,6 @@
 // double-double), symplecticity, reversibility, the energy of the intended system judged by
 // magnitude and trend, and the modified equation, Lagrangian and Hamiltonian from the engine.
 // Every part that was computed is printed and written, even when a later part fails.
-#include <unistd.h>
 
 #include <algorithm>
 #include <filesystem>
@@ -34,46 +33,17 @@
 
 namespace vibook::cli {
 
-std::filesystem::path report_path(const std::string& dir) {
-  std::filesystem::path d = std::filesystem::path(dir).lexically_normal();
-  if (d.filename().empty()) d = d.parent_path();  // "rep/"
-  return d;
-}
-
 namespace {
-
-void check_report_dir(const std::string& dir) {
-  namespace fs = std::filesystem;
-  std::error_code ec;
-  if (dir.empty()) throw ArgumentError("--report", "is empty");
-  const fs::path d = report_path(dir);
-  if (d.empty() || d.filename() == "." || d.filename() == "..")
-    throw ArgumentError("--report", "'" + dir + "' does not name a new directory");
-  const auto st = fs::symlink_status(d, ec);
-  if (fs::exists(st)) {
-    if (fs::is_symlink(st) || !fs::is_directory(st))
-      throw ArgumentError("--report", "'" + dir + "' exists and is not a directory");
-    const bool empty = fs::is_empty(d, ec);
-    if (!empty && !(fs::exists(d / "index.html") && fs::exists(d / "verify.json")))
-      throw ArgumentError("--report", "'" + dir +
-                                          "' exists and is not an earlier report (index.html and "
-                                          "verify.json); give a new name");
-  }
-  const fs::path parent = d.has_parent_path() ? d.parent_path() : fs::path(".");
-  if (!fs::is_directory(parent, ec) || ::access(parent.c_str(), W_OK) != 0)
-    throw ArgumentError("--report", "cannot create '" + dir + "': '" + parent.string() +
-                                        "' is not a writable directory");
-}
 
 // --report DIR on every route, before any work: a new directory (or an earlier report) in a
 // writable one, and not the place of --json-out.
 void check_report(const VerifyOptions& o) {
-  if (o.report_given) check_report_dir(o.report);
+  if (o.report_given) check_report_directory(o.report, "--report");
   if (o.json_given && o.report_given) {
     // The JSON file may not be the report directory, nor lie inside it (the report replaces
     // its own entries).
     const auto j = std::filesystem::absolute(o.json_out).lexically_normal();
-    const auto r = std::filesystem::absolute(report_path(o.report)).lexically_normal();
+    const auto r = std::filesystem::absolute(report_directory(o.report)).lexically_normal();
     const auto rel = j.lexically_relative(r);
     if (j == r || (!rel.empty() && *rel.begin() != ".."))
       throw ArgumentError("--json-out", "'" + o.json_out +
@@ -157,7 +127,7 @@ int run_typed(const VerifyOptions& o, const verify::TypedDiscreteLagrangian& dl,
   if (!st.error_line.empty()) eprint(st.error_line);
   if (o.json_given) write_output_file(o.json_out, st.js.dump(2) + "\n", "--json-out");
   if (!o.report_given) return st.status;
-  const std::filesystem::path final_dir = report_path(o.report);
+  const std::filesystem::path final_dir = report_directory(o.report);
   const std::string render_error = verify::write_ld_report(st, s, command_line(), final_dir);
   std::cout << "report: " << (final_dir / "index.html").string() << '\n';
   if (!render_error.empty() && st.status == kOk) {

@@ -110,7 +110,7 @@ int MapReport::finish(const StudyOptions& o) {
   if (rc == kNumerical) eprint("vibook: error: verify: " + first_error + "\n");
   if (o.json_given) write_output_file(o.json_out, js.dump(2) + "\n", "--json-out");
   if (o.report_given) {
-    const std::filesystem::path dir = report_path(o.report);
+    const std::filesystem::path dir = report_directory(o.report);
     verify::write_map_report(*this, command_line(), dir);
     std::cout << "report: " << (dir / "index.html").string() << '\n';
   }

@@ -1,8 +1,7 @@
-// `vibook verify`: the options as typed (every route), and where --report writes. The study
+// `vibook verify`: the options as typed (every route). The study
 // of a typed discrete Lagrangian itself is the library's (vibook/verify/ld_study.hpp).
 #pragma once
 
-#include <filesystem>
 #include <optional>
 #include <string>
 #include <vector>
@@ -23,9 +22,5 @@ struct VerifyOptions {
   bool json_given = false, report_given = false, timings = false, symmetric = false,
        progress = false, reference = false;
 };
-
-// --report DIR: a new name in an existing writable directory, or an earlier report (a
-// directory holding index.html and verify.json), which is replaced; nothing else is.
-std::filesystem::path report_path(const std::string& dir);
 
 }  // namespace vibook::cli

@@ -331,3 +331,36 @@ void remove_temporaries() noexcept {
 }  // t.mutex stays locked (see above)
 
 }  // namespace vibook
+
+namespace vibook {
+
+std::filesystem::path report_directory(const std::string& dir) {
+  std::filesystem::path d = std::filesystem::path(dir).lexically_normal();
+  if (d.filename().empty()) d = d.parent_path();  // "rep/"
+  return d;
+}
+
+void check_report_directory(const std::string& dir, const std::string& arg) {
+  namespace fs = std::filesystem;
+  std::error_code ec;
+  if (dir.empty()) throw ArgumentError(arg, "is empty");
+  const fs::path d = report_directory(dir);
+  if (d.empty() || d.filename() == "." || d.filename() == "..")
+    throw ArgumentError(arg, "'" + dir + "' does not name a new directory");
+  const auto st = fs::symlink_status(d, ec);
+  if (fs::exists(st)) {
+    if (fs::is_symlink(st) || !fs::is_directory(st))
+      throw ArgumentError(arg, "'" + dir + "' exists and is not a directory");
+    const bool empty = fs::is_empty(d, ec);
+    if (!empty && !(fs::exists(d / "index.html") && fs::exists(d / "verify.json")))
+      throw ArgumentError(arg, "'" + dir +
+                                   "' exists and is not an earlier report (index.html and "
+                                   "verify.json); give a new name");
+  }
+  const fs::path parent = d.has_parent_path() ? d.parent_path() : fs::path(".");
+  if (!fs::is_directory(parent, ec) || ::access(parent.c_str(), W_OK) != 0)
+    throw ArgumentError(
+        arg, "cannot create '" + dir + "': '" + parent.string() + "' is not a writable directory");
+}
+
+}  // namespace vibook

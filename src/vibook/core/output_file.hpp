@@ -18,6 +18,16 @@
 
 namespace vibook {
 
+/// The directory a report path names ("rep/" is "rep").
+std::filesystem::path report_directory(const std::string& dir);
+
+/// Checks, before any work starts, that the directory `dir` may receive a report (an HTML page
+/// with its files, written by the verify studies): a new name in a writable directory, an empty
+/// directory, or an earlier report (index.html and verify.json), which is replaced. Throws
+/// ArgumentError naming `arg` otherwise (a file, a symbolic link, a directory holding anything
+/// else).
+void check_report_directory(const std::string& dir, const std::string& arg);
+
 /// How an output path will be written.
 enum class OutputKind {
   standard_output,  ///< "-"
