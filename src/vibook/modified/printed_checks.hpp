@@ -27,6 +27,12 @@ using printed::Value;
 /// Σ c[k] h^k.
 ex series_sum(const std::vector<ex>& c, const GiNaC::symbol& h, int through = -1);
 
+/// The Taylor coefficients of a curve shifted by `step` times the step size:
+/// c[k] = step^k / k! · x^{(k)} of degree of freedom `dof`, for k = 0 … K (x(t + step·h) =
+/// Σ c[k] h^k). The displays that expand x(t ± h) or x(a ± Δa/2) are compared with these.
+std::vector<ex> shifted_taylor(const modified::JetSpace& J, int dof, const GiNaC::numeric& step,
+                               int K);
+
 /// The comparisons of one check, collected as they are made.
 struct Compared {
   std::string check;

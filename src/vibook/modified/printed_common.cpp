@@ -6,6 +6,17 @@
 
 namespace vibook::checks::printed_detail {
 
+std::vector<ex> shifted_taylor(const modified::JetSpace& J, int dof, const GiNaC::numeric& step,
+                               int K) {
+  std::vector<ex> c;
+  GiNaC::numeric fact = 1;
+  for (int k = 0; k <= K; ++k) {
+    if (k > 0) fact *= k;
+    c.push_back(GiNaC::pow(step, k) / fact * J.x(k, dof));
+  }
+  return c;
+}
+
 ex series_sum(const std::vector<ex>& c, const GiNaC::symbol& h, int through) {
   ex s = 0;
   for (std::size_t k = 0; k < c.size(); ++k) {

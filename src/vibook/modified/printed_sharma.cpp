@@ -146,19 +146,12 @@ std::vector<claims::ClaimResult> sharma_prints(std::vector<claims::ClaimResult>&
   for (const int curve : {0, 1}) {
     std::vector<JetNotation> ns(2, n);
     std::vector<Case> cases;
-    std::vector<ex> taylor[2];
-    for (int s = 0; s < 2; ++s) {
-      const int sign = s == 0 ? 1 : -1;
-      ns[s].pm_sign(sign).discrete_index('k');
-      numeric fact = 1;
-      for (int k = 0; k <= 4; ++k) {
-        if (k > 0) fact *= k;
-        taylor[s].push_back(GiNaC::pow(numeric(sign, 2), k) / fact * J->x(k, curve));
-      }
-    }
+    for (int s = 0; s < 2; ++s) ns[s].pm_sign(s == 0 ? 1 : -1).discrete_index('k');
     for (int s = 0; s < 2; ++s)
-      cases.push_back({&ns[s], Target::scalar_series(taylor[s], 3),
-                       s == 0 ? "the upper sign" : "the lower sign"});
+      cases.push_back(
+          {&ns[s],
+           Target::scalar_series(shifted_taylor(*J, curve, numeric(s == 0 ? 1 : -1, 2), 4), 3),
+           s == 0 ? "the upper sign" : "the lower sign"});
     const std::string c = curve == 0 ? "q" : "t";
     auto quote = [&c](const std::string& third) {
       return c + R"(_{k\pm 1}(a) = )" + c + R"((a) \pm \frac{\Delta a}{2})" + c +

@@ -124,18 +124,9 @@ void stormer_verlet(Compared& cmp, std::vector<claims::ClaimResult>& out,
   {
     std::vector<Case> cases;
     std::vector<JetNotation> ns(2, n);
-    std::vector<ex> taylor[2];
-    for (int s = 0; s < 2; ++s) {
-      const int sign = s == 0 ? 1 : -1;
-      ns[s].pm_sign(sign);
-      numeric fact = 1;
-      for (int k = 0; k <= 7; ++k) {
-        if (k > 0) fact *= k;
-        taylor[s].push_back(GiNaC::pow(sign, k) / fact * J->x(k, 0));
-      }
-    }
+    for (int s = 0; s < 2; ++s) ns[s].pm_sign(s == 0 ? 1 : -1);
     for (int s = 0; s < 2; ++s)
-      cases.push_back({&ns[s], Target::scalar_series(taylor[s], 5),
+      cases.push_back({&ns[s], Target::scalar_series(shifted_taylor(*J, 0, s == 0 ? 1 : -1, 7), 5),
                        s == 0 ? "the upper sign" : "the lower sign"});
     Spec sp;
     sp.paper = Paper::V;
@@ -534,13 +525,8 @@ void harmonic(Compared& cmp, std::vector<claims::ClaimResult>& out,
     for (int s = 0; s < 2; ++s) {
       const int sign = s == 0 ? 1 : -1;
       ns[s].pm_sign(sign).discrete_index('j');
-      numeric fact = 1;
-      for (int k = 0; k <= 7; ++k) {
-        if (k > 0) fact *= k;
-        const ex c = GiNaC::pow(sign, k) / fact * J->x(k, 0);
-        taylor[s].push_back(c);
-        tail[s].push_back(k >= 5 ? c : ex(0));
-      }
+      taylor[s] = shifted_taylor(*J, 0, sign, 7);
+      for (int k = 0; k <= 7; ++k) tail[s].push_back(k >= 5 ? taylor[s][k] : ex(0));
     }
     for (int line = 0; line < 2; ++line) {
       Spec sp;
