@@ -23,17 +23,6 @@ namespace vibook::cli {
 /// end and a verdict failed (the report names which).
 enum Exit : int { kOk = 0, kFailure = 1, kBadArgument = 2, kNumerical = 3, kIo = 4, kVerdict = 5 };
 
-/// A run stopped by SIGINT, SIGTERM or SIGHUP: the command exits with 128 + signal after
-/// saying where it stopped and what it kept (`vibook run` keeps its rows in FILE.partial).
-class Interrupted : public NumericalError {
- public:
-  Interrupted(int signal, const std::string& what) : NumericalError(what), signal_(signal) {}
-  int signal() const { return signal_; }
-
- private:
-  int signal_;
-};
-
 /// One message to standard error that never throws and never aborts: a closed or full stderr
 /// loses the message but not the exit status (every error path of the command goes through it).
 /// A message is one line: its newlines and tabs become spaces, and past kMaxMessage characters

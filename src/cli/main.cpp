@@ -472,7 +472,7 @@ int main(int argc, char** argv) {
   } catch (const ArgumentError& e) {
     vibook::cli::eprint(fmt::format("vibook: error: {}\n", e.what()));
     return cli::kBadArgument;
-  } catch (const cli::Interrupted& e) {
+  } catch (const Interrupted& e) {
     vibook::cli::eprint(fmt::format("vibook: {}\n", e.what()));
     return 128 + e.signal();
   } catch (const NumericalError& e) {

@@ -32,6 +32,17 @@ class NumericalError : public std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
+/// A run stopped by SIGINT, SIGTERM or SIGHUP (the command exits with 128 + signal after
+/// saying where it stopped and what it kept; `vibook run` keeps its rows in FILE.partial).
+class Interrupted : public NumericalError {
+ public:
+  Interrupted(int signal, const std::string& what) : NumericalError(what), signal_(signal) {}
+  int signal() const { return signal_; }
+
+ private:
+  int signal_;
+};
+
 /// An output could not be written: a full disk, a closed pipe, a failed rename (command line:
 /// exit status 4).
 class IoError : public std::runtime_error {
