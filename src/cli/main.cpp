@@ -161,46 +161,9 @@ int cmd_claims(bool json, const std::string& json_out, const std::string& html_d
   // What the ledger was measured with (the commit as given, the compiler, the libraries).
   nlohmann::json js = ledger.to_json();
   js["provenance"] = claims::provenance(commit);
-  int pending = 0;
-  for (const auto& row : ledger.rows()) pending += row.result.status == claims::Status::pending;
   if (!json_out.empty()) write_output_file(json_out, js.dump(2) + "\n", "--json-out");
-  if (!html_dir.empty()) {
-    // The book's tables: all claims, one table per paper, one per check (its claims only).
-    const auto write = [&](const std::string& name, const std::string& text) {
-      write_output_file((fs::path(html_dir) / name).string(), text, "--html-dir");
-    };
-    write("claims.html", ledger.to_html());
-    write("summary.html", ledger.to_summary_html());
-    write("provenance.html", claims::provenance_html(js["provenance"], pending));
-    for (const char* paper : {"S", "V", "SS", "A"})
-      write(fmt::format("claims-{}.html", paper), ledger.to_html(paper));
-    // A chapter shows each claim once: a claim measured by several checks is shown with the
-    // most specific of them (the one measuring the fewest claims; the first of equals in the
-    // registry's order), and the others link to its row instead of repeating it.
-    std::map<std::string, const figures::Check*> owner;
-    for (const auto* list : {&figures::registry(), &figures::long_studies()})
-      for (const auto& c : *list)
-        for (const auto& id : c.claims) {
-          const auto it = owner.find(id);
-          if (it == owner.end() || c.claims.size() < it->second->claims.size()) owner[id] = &c;
-        }
-    for (const auto* list : {&figures::registry(), &figures::long_studies()}) {
-      for (const auto& c : *list) {
-        std::vector<std::string> own, elsewhere;
-        for (const auto& id : c.claims) (owner[id] == &c ? own : elsewhere).push_back(id);
-        std::string html = own.empty() ? std::string() : ledger.to_html({}, own);
-        if (!elsewhere.empty()) {
-          html +=
-              "<p class=\"vibook-claims-elsewhere\">Also measured here, and shown with its own "
-              "check:";
-          for (const auto& id : elsewhere)
-            html += fmt::format(" <a href=\"report.html#claim-{0}\">{0}</a>", id);
-          html += ".</p>\n";
-        }
-        write(c.id + ".html", html);
-      }
-    }
-  }
+  if (!html_dir.empty())
+    figures::write_claim_tables(ledger, js["provenance"], html_dir, "--html-dir");
   // The ledger is printed whatever else was written (--json-out and --html-dir write "also").
   if (json)
     std::cout << js.dump(2) << '\n';

@@ -2,8 +2,12 @@
 
 #include <algorithm>
 #include <fstream>
+#include <map>
 #include <stdexcept>
 
+#include <fmt/format.h>
+
+#include "vibook/claims/provenance.hpp"
 #include "vibook/core/errors.hpp"
 #include "vibook/core/output_file.hpp"
 #include "vibook/core/parallel.hpp"
@@ -196,6 +200,48 @@ claims::Ledger measure_all(unsigned jobs, const std::optional<std::filesystem::p
       }
   }
   return ledger;
+}
+
+}  // namespace vibook::figures
+
+namespace vibook::figures {
+
+void write_claim_tables(const claims::Ledger& ledger, const nlohmann::json& provenance,
+                        const std::filesystem::path& dir, const std::string& arg) {
+  const auto write = [&](const std::string& name, const std::string& text) {
+    write_output_file((dir / name).string(), text, arg);
+  };
+  int pending = 0;
+  for (const auto& row : ledger.rows()) pending += row.result.status == claims::Status::pending;
+  write("claims.html", ledger.to_html());
+  write("summary.html", ledger.to_summary_html());
+  write("provenance.html", claims::provenance_html(provenance, pending));
+  for (const char* paper : {"S", "V", "SS", "A"})
+    write(fmt::format("claims-{}.html", paper), ledger.to_html(paper));
+  // Each claim with the check naming the fewest claims (the first of equals in order).
+  std::map<std::string, const Check*> owner;
+  for (const auto* list : {&registry(), &long_studies()})
+    for (const auto& c : *list)
+      for (const auto& id : c.claims) {
+        const auto it = owner.find(id);
+        if (it == owner.end() || c.claims.size() < it->second->claims.size()) owner[id] = &c;
+      }
+  for (const auto* list : {&registry(), &long_studies()}) {
+    for (const auto& c : *list) {
+      std::vector<std::string> own, elsewhere;
+      for (const auto& id : c.claims) (owner[id] == &c ? own : elsewhere).push_back(id);
+      std::string html = own.empty() ? std::string() : ledger.to_html({}, own);
+      if (!elsewhere.empty()) {
+        html +=
+            "<p class=\"vibook-claims-elsewhere\">Also measured here, and shown with its own "
+            "check:";
+        for (const auto& id : elsewhere)
+          html += fmt::format(" <a href=\"report.html#claim-{0}\">{0}</a>", id);
+        html += ".</p>\n";
+      }
+      write(c.id + ".html", html);
+    }
+  }
 }
 
 }  // namespace vibook::figures

@@ -63,4 +63,13 @@ std::vector<std::vector<claims::ClaimResult>> run_checks(const std::vector<const
 claims::Ledger measure_all(unsigned jobs = 0,
                            const std::optional<std::filesystem::path>& figures_dir = {});
 
+/// The book's claim tables, written into `dir` (each file through core/output_file; a write
+/// error names `arg`): claims.html, summary.html, provenance.html (from `provenance`, the
+/// ledger's `claims::provenance`), claims-S/V/SS/A.html (one paper each), and one table per
+/// check, ID.html. A chapter shows each claim once: a claim measured by several checks is
+/// shown with the most specific of them (the one naming the fewest claims; the first of equals
+/// in the registry's order), and the others link to its row instead of repeating it.
+void write_claim_tables(const claims::Ledger& ledger, const nlohmann::json& provenance,
+                        const std::filesystem::path& dir, const std::string& arg);
+
 }  // namespace vibook::figures
