@@ -27,6 +27,11 @@ using printed::Value;
 /// Σ c[k] h^k.
 ex series_sum(const std::vector<ex>& c, const GiNaC::symbol& h, int through = -1);
 
+/// Appends `text` to the note of the erratum `id` among `errata`, when the comparisons found
+/// it (the independent evidence of a misprint, named where the erratum is written).
+void add_evidence(std::vector<claims::ClaimResult>& errata, const std::string& id,
+                  const std::string& text);
+
 /// The Taylor coefficients of a curve shifted by `step` times the step size:
 /// c[k] = step^k / k! · x^{(k)} of degree of freedom `dof`, for k = 0 … K (x(t + step·h) =
 /// Σ c[k] h^k). The displays that expand x(t ± h) or x(a ± Δa/2) are compared with these.

@@ -6,6 +6,12 @@
 
 namespace vibook::checks::printed_detail {
 
+void add_evidence(std::vector<claims::ClaimResult>& errata, const std::string& id,
+                  const std::string& text) {
+  for (auto& e : errata)
+    if (e.id == id) e.note += text;
+}
+
 std::vector<ex> shifted_taylor(const modified::JetSpace& J, int dof, const GiNaC::numeric& step,
                                int K) {
   std::vector<ex> c;

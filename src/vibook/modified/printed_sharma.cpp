@@ -238,13 +238,12 @@ std::vector<claims::ClaimResult> sharma_prints(std::vector<claims::ClaimResult>&
       "and (56)–(66), read from the paper and compared with the engine.";
   // the two inline expansions carry one slip, the same coefficient in both: one erratum
   printed::conclude(r, cmp.take(), errata, {{"I401.2", "S-ERR-I401"}});
-  for (auto& e : errata)
-    if (e.id == "S-ERR-I401")
-      e.note +=
-          " Independently, SymPy's Taylor series of q(a ± Δa/2) has Δa³/48, and only that "
-          "coefficient gives (58)'s q' + Δa²/24 q''' (tests/cli/s_i401_sympy.py, a test of its "
-          "own). The left-hand sides name the step's two ends q_{k+1}, q_k as q_{k±1}; only the "
-          "right-hand sides are compared.";
+  add_evidence(
+      errata, "S-ERR-I401",
+      " Independently, SymPy's Taylor series of q(a ± Δa/2) has Δa³/48, and only that "
+      "coefficient gives (58)'s q' + Δa²/24 q''' (tests/cli/s_i401_sympy.py, a test of its "
+      "own). The left-hand sides name the step's two ends q_{k+1}, q_k as q_{k±1}; only the "
+      "right-hand sides are compared.");
   return {r};
 }
 

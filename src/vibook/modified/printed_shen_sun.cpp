@@ -800,13 +800,13 @@ void nystrom(Compared& cmp, std::vector<claims::ClaimResult>& out,
       " The construction the proof rests on, the derivatives (4.4a)–(4.4b) along the modified "
       "equation, is read line by line in one and three degrees of freedom.";
   printed::conclude(r, cmp.take(), errata);
-  for (auto& e : errata)
-    if (e.id == "SS-ERR-4.4a" || e.id == "SS-ERR-4.4b")
-      e.note +=
-          " Independently, with undefined functions f, f^[1], f^[2] in one, two and three "
-          "degrees of freedom, SymPy finds the same (tests/cli/ss_eq44_sympy.py, a test of its "
-          "own): each printed line differs from the total derivative, each corrected line "
-          "equals it.";
+  for (const char* id : {"SS-ERR-4.4a", "SS-ERR-4.4b"})
+    add_evidence(
+        errata, id,
+        " Independently, with undefined functions f, f^[1], f^[2] in one, two and three "
+        "degrees of freedom, SymPy finds the same (tests/cli/ss_eq44_sympy.py, a test of its "
+        "own): each printed line differs from the total derivative, each corrected line "
+        "equals it.");
   out.push_back(r);
 }
 
@@ -985,12 +985,11 @@ void kepler_lrl(Compared& cmp, std::vector<claims::ClaimResult>& out,
       "compared with Theorem 13 for the quantity it names.");
   // the two lines of Theorem 16's proof carry one slip (their labels exchanged): one erratum
   printed::conclude(r, cmp.take(), errata, {{"L666", "SS-ERR-L662"}});
-  for (auto& e : errata)
-    if (e.id == "SS-ERR-L662")
-      e.note +=
-          " Independently, SymPy finds each bracket equal to the product beside it and the two "
-          "products different (tests/cli/ss_t16_labels_sympy.py, a test of its own): the label "
-          "decides which one Theorem 13 gives.";
+  add_evidence(
+      errata, "SS-ERR-L662",
+      " Independently, SymPy finds each bracket equal to the product beside it and the two "
+      "products different (tests/cli/ss_t16_labels_sympy.py, a test of its own): the label "
+      "decides which one Theorem 13 gives.");
   out.push_back(r);
   // (3.13) and the energy identity in the proof of Proposition 4.
   ns.callable("L",

@@ -287,13 +287,12 @@ void stormer_verlet(Compared& cmp, std::vector<claims::ClaimResult>& out,
       "and compared with the engine through h⁵, in one and in two degrees of freedom (the "
       "paper's setting is x in ℝ^N).");
   printed::conclude(r_sv4, std::move(sv4), errata, {{"L883", "V-ERR-SV4"}});
-  for (auto& e : errata)
-    if (e.id == "V-ERR-L896")
-      e.note +=
-          " The display holds in one degree of freedom, where U^{(3)}(U''ẋ, ẋ) and "
-          "U''U^{(3)}(ẋ, ẋ) are one number, and not in two. Independently, SymPy derives the h⁴ "
-          "term from the recurrence x(t+h) − 2x(t) + x(t−h) = −h²U'(x(t)) with an undefined U "
-          "and finds the same (tests/cli/v_sv4_sympy.py, a test of its own).";
+  add_evidence(
+      errata, "V-ERR-L896",
+      " The display holds in one degree of freedom, where U^{(3)}(U''ẋ, ẋ) and "
+      "U''U^{(3)}(ẋ, ẋ) are one number, and not in two. Independently, SymPy derives the h⁴ "
+      "term from the recurrence x(t+h) − 2x(t) + x(t−h) = −h²U'(x(t)) with an undefined U "
+      "and finds the same (tests/cli/v_sv4_sympy.py, a test of its own).");
   out.push_back(r_sv4);
 
   claims::ClaimResult r_l6 = claim(
