@@ -504,15 +504,17 @@ void modified_equation_derivatives(Compared& cmp) {
       R"(\tilde{f}_{xx}\langle \dot{x}, \dot{x} \rangle + 2\tilde{f}_{xv}\langle \dot{x}, \tilde{f} \rangle + \tilde{f}_x \tilde{f} + \tilde{f}_{vv}\langle \tilde{f}, \tilde{f} \rangle + \tilde{f}_v \tilde{f}_x \dot{x} + \tilde{f}_v \tilde{f}_v \tilde{f})",
       "f̃_vv⟨f̃, ẋ⟩ read as f̃_vv⟨f̃, f̃⟩ (the v-derivative of f̃_v f̃ meets ẍ = f̃ twice; wrong in "
       "every dimension), and, in two or more dimensions, the arguments of f̃_xv written in the "
-      "order of its subscripts, ⟨ẋ, f̃⟩ (ẋ fills the x slot; the paper does not state the "
-      "convention, and under the opposite one this part is right)");
+      "order of its subscripts, ⟨ẋ, f̃⟩ (ẋ fills the x slot, as in the paper's own "
+      "2L_{xẋ}⟨ẋ, f⟩ of the h² line after (4.12); the paper does not state the convention, "
+      "and under the opposite one this part is right)");
   compare(
       R"(f_{xx}\langle \dot{x}, \dot{x} \rangle + f_x f + h(f_{xx}^{[1]}\langle \dot{x}, \dot{x} \rangle + 2f_{xv}^{[1]}\langle f, \dot{x} \rangle + f_x^{[1]}f + f_x f^{[1]} + f_{vv}^{[1]}\langle f, f \rangle + f_v^{[1]}f_x v) + \dots)",
       "(4.4b)", "x^(4) expanded in h, through h (the second line of (4.4b))", true, 1,
       R"(f_{xx}\langle \dot{x}, \dot{x} \rangle + f_x f + h(f_{xx}^{[1]}\langle \dot{x}, \dot{x} \rangle + 2f_{xv}^{[1]}\langle \dot{x}, f \rangle + f_x^{[1]}f + f_x f^{[1]} + f_{vv}^{[1]}\langle f, f \rangle + f_v^{[1]}f_x v) + \dots)",
       "in two or more dimensions only: the arguments of f_xv^[1] in the order of its subscripts, "
-      "⟨ẋ, f⟩ (ẋ fills the x slot; the paper does not state the convention, and under the "
-      "opposite one this line is right; in one dimension it agrees as printed)");
+      "⟨ẋ, f⟩ (ẋ fills the x slot, as in the paper's own 2L_{xẋ}⟨ẋ, f⟩ of the h² line after "
+      "(4.12); the paper does not state the convention, and under the opposite one this line "
+      "is right; in one dimension it agrees as printed)");
 }
 
 // ---------------------------------------------------------------------------------------------
