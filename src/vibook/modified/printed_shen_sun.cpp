@@ -369,7 +369,7 @@ struct FourthDerivatives {
     std::vector<ex> xv = X;
     xv.insert(xv.end(), V.begin(), V.end());
     const std::vector<ex> mx = monomials(X), mxv = monomials(xv);
-    int k = 0;  // coefficients ±(1 … 29), each (function, component, monomial) its own
+    int k = 0;  // coefficients ±(1 … 29)/(1 … 5), fixed and none zero
     auto coefficient = [&k] {
       ++k;
       return numeric((k * 7) % 29 + 1) * (k % 2 ? 1 : -1) / numeric(k % 5 + 1);
