@@ -12,7 +12,6 @@
 #include <fstream>
 #include <numbers>
 #include <random>
-#include <ranges>
 
 #include <fmt/format.h>
 #include <fmt/ranges.h>
@@ -486,14 +485,14 @@ std::vector<claims::ClaimResult> run_existence(const Context& ctx) {
   c.values.push_back({"e0.7_t0.3_roots_found", double(roots.size())});
   c.values.push_back({"e0.7_t0.3_step_taken", chosen});
   if (roots.size() >= 2) c.values.push_back({"e0.7_t0.3_far_root", roots.back()});
+  std::vector<std::string> root_text;
+  for (const double x : roots) root_text.push_back(fmt::format("{:.3g}", x));
   txt += fmt::format(
       "The spurious root: at e = 0.7, h0 = 1e-3, t ≈ 0.3 the same scan finds {} sign change(s), "
       "near Δt = {}; the step taken is {:.4g}, and the far root ({:.3g}× larger) lies outside the "
       "factor-64 bracket grown from the previous step, so it is never taken. ",
-      roots.size(),
-      fmt::join(roots | std::views::transform([](double x) { return fmt::format("{:.3g}", x); }),
-                ", "),
-      chosen, roots.size() >= 2 ? roots.back() / chosen : NAN);
+      roots.size(), fmt::join(root_text, ", "), chosen,
+      roots.size() >= 2 ? roots.back() / chosen : NAN);
   c.values.push_back({"e0.8_h0_0.001_scan_min_energy_residual", g_min});
   c.values.push_back({"e0.8_h0_0.001_scan_sign_changes", double(sign_changes)});
   txt += fmt::format(

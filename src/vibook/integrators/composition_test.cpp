@@ -282,10 +282,11 @@ TEST_CASE("splitting: the two-flow order conditions against known orders, and wr
   // degree 2n - 1) and Lobatto (SBAB_n, n + 1 nodes, the same degree): the words with a single
   // kick B vanish up to weight 2n (their error is O(h^2n eps + h^2 eps^2)). A node or weight
   // typed wrong breaks this, though not the generic order 2.
-  for (const auto& [name, n] :
+  for (const auto& method :
        {std::pair{"saba-2", 2}, std::pair{"saba-3", 3}, std::pair{"saba-4", 4},
         std::pair{"sbab-2", 2}, std::pair{"sbab-3", 3}}) {
-    INFO(name);
+    const auto& [name, n] = method;
+    INFO(method.first);  // (the pair's member: doctest's INFO captures it in a lambda)
     const comp::TwoLetterAlgebra T(2 * n);
     const auto L = comp::splitting_log(
         T, comp::parse_sequence<R>("--splitting", comp::find_splitting(name)->flows));

@@ -168,7 +168,10 @@ std::vector<claims::ClaimResult> run_p4(const Context&) {
   std::uniform_real_distribution<double> U(-1.0, 1.0);
   std::vector<double> worst(inv.size(), 0.0);
   for (int s = 0; s < 500; ++s) {
-    const Vec<double, 2> x(2.0 + U(rng), U(rng)), v(U(rng), U(rng)), a(U(rng), U(rng));
+    // (Drawn one by one, the second component first: argument evaluation order is unspecified,
+    // GCC and clang differ, and this is the order the book's numbers were first drawn in.)
+    const double xy = U(rng), xx = 2.0 + U(rng), vy = U(rng), vx = U(rng), ay = U(rng), ax = U(rng);
+    const Vec<double, 2> x(xx, xy), v(vx, vy), a(ax, ay);
     const double r3 = std::pow(x.norm(), 3);
     const Vec<double, 2> N = a + x / r3;  // the Kepler equation of motion, ẍ + x/|x|³
     Vec<double, 4> z;

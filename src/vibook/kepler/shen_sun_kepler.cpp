@@ -49,7 +49,11 @@ std::vector<claims::ClaimResult> run_t6(const Context&) {
     for (int m = 0; m < 4; ++m) {
       // One step from 200 random states (|x| ∈ [0.5, 1.7], h ∈ [0.01, 0.1]).
       for (int s = 0; s < 200; ++s) {
-        const Vec<double, 2> q0(1.0 + U(rng), U(rng)), p0(U(rng), 1.0 + U(rng));
+        // (Drawn one by one, the second component first: the order in which a function's
+        // arguments are evaluated is unspecified, GCC and clang differ, and this is the order in
+        // which the book's numbers were first drawn.)
+        const double q0y = U(rng), q0x = 1.0 + U(rng), p0y = 1.0 + U(rng), p0x = U(rng);
+        const Vec<double, 2> q0(q0x, q0y), p0(p0x, p0y);
         const double h = 0.055 + 0.09 * U(rng);
         Vec<double, 2> qa = q0, pa = p0, qb = q0, pb = p0;
         SplittingKernel<Split>(split, methods[m]).step(qa, pa, h);

@@ -424,7 +424,9 @@ TEST_CASE("engine: the first-order vector field of H_mod gives back the modified
   for (const Method m : {Method::sv, Method::midpoint}) {
     Engine E(make_discrete_lagrangian(m, Potential::harmonic, 1), 6);
     const JetSpace& J = E.jets();
-    const auto [xdot, pdot] = E.vector_field();
+    const auto field = E.vector_field();  // (not a structured binding: a lambda captures it)
+    const auto& xdot = field.first;
+    const auto& pdot = field.second;
     const auto& f = E.modified_equation();
     const GiNaC::symbol& h = J.h();
     const ex x = J.x(0, 0), v = J.x(1, 0), p = J.p(0);

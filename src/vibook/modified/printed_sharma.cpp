@@ -457,8 +457,13 @@ std::vector<claims::FormulaComparison> sharma_discrete_prints(
       std::vector<Point> pts;
       for (int k = 0; k < 1000; ++k) {
         Point P;
-        P.q0 = Vec<double, 2>(U(rng), U(rng));
-        P.q1 = P.q0 + Vec<double, 2>(0.1 * U(rng), 0.1 * U(rng));
+        // (Drawn one by one, the second component first: argument evaluation order is
+        // unspecified, GCC and clang differ, and this is the order the book's numbers were
+        // first drawn in.)
+        const double y0 = U(rng), x0 = U(rng);
+        P.q0 = Vec<double, 2>(x0, y0);
+        const double dy = 0.1 * U(rng), dx = 0.1 * U(rng);
+        P.q1 = P.q0 + Vec<double, 2>(dx, dy);
         P.t0 = U(rng);
         P.t1 = P.t0 + H(rng);
         pts.push_back(P);

@@ -723,7 +723,7 @@ void nystrom(Compared& cmp, std::vector<claims::ClaimResult>& out,
     const ex lhs = GiNaC::expand((x1 - 2 * x0 + xmm) / (hh * hh)).subs(v0 == vm + hh * bG);
     JetNotation n(J);
     n.constant("s", Value::scalar(s));
-    auto idx = [s](const printed::Atom& a, const printed::Reader& r) {
+    auto idx = [=](const printed::Atom& a, const printed::Reader& r) {
       const auto i = r.bound(a.sub_text().empty() ? 'i' : a.sub_text()[0]);
       if (!i) printed::unbound_index(a.sub_text()[0]);
       if (*i < 1 || *i > s) throw printed::IllFormed("an index beyond the stages");

@@ -753,7 +753,7 @@ std::vector<claims::FormulaComparison> vermeeren_example1(const std::string& che
   {
     JetNotation n = d.n;
     const auto dl = stormer_verlet_dl(L);
-    n.callable("L", [&dl, &d, h](const printed::Atom& a, const std::vector<Value>& args) -> Value {
+    n.callable("L", [&dl, h](const printed::Atom& a, const std::vector<Value>& args) -> Value {
       if (a.sub_text() != "disc" || args.size() != 3) throw printed::ReadError("L_disc(a, b, h)");
       return Value::scalar(discrete_lagrangian(dl, args[0].as_scalar("x_j"),
                                                args[1].as_scalar("x_{j+1}"),

@@ -90,6 +90,7 @@ void set_mechanical(MapStudy& s, const P& prob, const std::vector<double>& q0,
   }
   s.z0 = z0;
   s.field = [prob](const std::vector<dd_real>& y) {
+    constexpr int N = P::N;  // (declared again: a lambda cannot capture a constexpr local in clang)
     Vec<dd_real, N> q;
     for (int i = 0; i < N; ++i) q(i) = y[static_cast<std::size_t>(i)];
     const Vec<dd_real, N> g = prob.template gradient<dd_real>(q);
