@@ -151,7 +151,9 @@ Eigen::MatrixXd step_jacobian_along(const Step& step, const Eigen::VectorXd& z, 
       step(w, h);
       return w;
     };
-    JU.col(j) = (8 * (at(1) - at(-1)) - (at(2) - at(-2))) / (12 * d);
+    // (the four steps in a fixed order, as in step_jacobian: verify.hpp)
+    const Eigen::VectorXd m2 = at(-2), p2 = at(2), m1 = at(-1), p1 = at(1);
+    JU.col(j) = (8 * (p1 - m1) - (p2 - m2)) / (12 * d);
   }
   return JU;
 }

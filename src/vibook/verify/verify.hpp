@@ -224,7 +224,11 @@ inline Eigen::MatrixXd step_jacobian(const Step& step, const Eigen::VectorXd& z,
       step(w, h);
       return w;
     };
-    J.col(j) = (8 * (at(1) - at(-1)) - (at(2) - at(-2))) / (12 * d);
+    // The four steps in a fixed order: the operands of one expression are evaluated in an
+    // unspecified order (GCC and clang differ), and a stateful black box would see it. This is
+    // the order GCC took when the book's numbers were first measured.
+    const Eigen::VectorXd m2 = at(-2), p2 = at(2), m1 = at(-1), p1 = at(1);
+    J.col(j) = (8 * (p1 - m1) - (p2 - m2)) / (12 * d);
   }
   return J;
 }
