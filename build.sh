@@ -1,22 +1,26 @@
 #!/usr/bin/env bash
 # vibook build driver.
-#   ./build.sh book   [--sanitize]  install missing Debian packages, build, regenerate every
-#                                   figure and the claims report, build the HTML book
-#   ./build.sh test   [--sanitize]  same set-up and book, then every test through ctest
-#   ./build.sh bench                build and run the Google Benchmark suite (tests/bench)
-#   ./build.sh cli                  build only the library and the `vibook` command
-# --sanitize uses the ASan+UBSan preset (build tree build-sanitize/).
+#   ./build.sh book [--gcc|--sanitize]  install missing Debian packages, build, regenerate
+#                                       every figure and the claims report, build the HTML book
+#   ./build.sh test [--gcc|--sanitize]  same set-up and book, then every test through ctest
+#   ./build.sh bench                    build and run the Google Benchmark suite (tests/bench)
+#   ./build.sh cli                      build only the library and the `vibook` command
+# The build uses clang++ (about four fifths of g++'s compile time, the same outputs).
+# --gcc builds with g++ instead (build tree build-gcc/); --sanitize uses the ASan+UBSan preset
+# (g++, build tree build-sanitize/).
 set -euo pipefail
 cd "$(dirname "${BASH_SOURCE[0]}")"
 
-usage() { sed -n '2,8p' "$0" | sed 's/^# \{0,1\}//'; }
+usage() { sed -n '2,10p' "$0" | sed 's/^# \{0,1\}//'; }
 
 action=${1:-}
 [ $# -gt 0 ] && shift
 sanitize=0
+gcc=0
 for arg in "$@"; do
   case "$arg" in
     --sanitize) sanitize=1 ;;
+    --gcc) gcc=1 ;;
     -h|--help) usage; exit 0 ;;
     *) echo "build.sh: unknown option '$arg' (see ./build.sh --help)" >&2; exit 2 ;;
   esac
@@ -29,7 +33,7 @@ case "$action" in
 esac
 
 # --- Debian 12 packages -------------------------------------------------------------------
-packages=(g++ cmake ninja-build pkg-config libeigen3-dev doctest-dev libcli11-dev
+packages=(g++ clang cmake ninja-build pkg-config libeigen3-dev doctest-dev libcli11-dev
   nlohmann-json3-dev libfmt-dev libboost-dev libbenchmark-dev gnuplot-nox doxygen
   libjs-mathjax fonts-mathjax python3 libpng-dev libosmesa6-dev libegl-dev libopengl-dev
   libqd-dev libmpfr-dev libgmp-dev libginac-dev python3-sympy)
@@ -57,9 +61,12 @@ fi
 
 # --- configure and build -----------------------------------------------------------------
 preset=dev
-[ $sanitize -eq 1 ] && preset=sanitize
 bdir=build
-[ $sanitize -eq 1 ] && bdir=build-sanitize
+if [ $sanitize -eq 1 ]; then
+  preset=sanitize bdir=build-sanitize
+elif [ $gcc -eq 1 ]; then
+  preset=gcc bdir=build-gcc
+fi
 cmake --preset "$preset" >/dev/null
 jobs=$(nproc 2>/dev/null || echo 2)
 
