@@ -12,12 +12,6 @@
 
 namespace vibook::cli {
 
-namespace {
-void require(bool ok, const std::string& arg, const std::string& msg) {
-  if (!ok) throw ArgumentError(arg, msg);
-}
-}  // namespace
-
 // The whole text as one number (a leading '+' allowed); anything else names the argument.
 double parse_number(const std::string& arg, const std::string& text) {
   const char* first = text.data();
@@ -25,21 +19,24 @@ double parse_number(const std::string& arg, const std::string& text) {
   if (first != last && *first == '+') ++first;
   double v = 0;
   const auto [ptr, ec] = std::from_chars(first, last, v);
-  require(!text.empty(), arg, "expects a number, got an empty value");
-  require(ec != std::errc::result_out_of_range, arg,
-          fmt::format("'{}' is out of the range of double", text));
-  require(ec == std::errc() && ptr == last, arg, fmt::format("'{}' is not a number", text));
+  require_argument(!text.empty(), arg, "expects a number, got an empty value");
+  require_argument(ec != std::errc::result_out_of_range, arg,
+                   fmt::format("'{}' is out of the range of double", text));
+  require_argument(ec == std::errc() && ptr == last, arg,
+                   fmt::format("'{}' is not a number", text));
   return v;
 }
 
 long long parse_integer(const std::string& arg, const std::string& text) {
   long long v = 0;
   const auto [ptr, ec] = std::from_chars(text.data(), text.data() + text.size(), v);
-  require(!text.empty(), arg, "expects an integer, got an empty value");
-  require(ec != std::errc::result_out_of_range, arg, fmt::format("'{}' is out of range", text));
+  require_argument(!text.empty(), arg, "expects an integer, got an empty value");
+  require_argument(ec != std::errc::result_out_of_range, arg,
+                   fmt::format("'{}' is out of range", text));
   // Base 10, whole: "010" is ten (never octal), and "0x2", " 2", "+2", "2x" are refused.
-  require(ec == std::errc() && ptr == text.data() + text.size(), arg,
-          fmt::format("'{}' is not an integer (digits in base 10, an optional leading '-')", text));
+  require_argument(
+      ec == std::errc() && ptr == text.data() + text.size(), arg,
+      fmt::format("'{}' is not an integer (digits in base 10, an optional leading '-')", text));
   return v;
 }
 
@@ -50,8 +47,8 @@ std::vector<std::string> split_list(const std::string& arg, const std::string& t
     const std::size_t comma = text.find(',', start);
     std::string item =
         text.substr(start, comma == std::string::npos ? std::string::npos : comma - start);
-    require(!item.empty(), arg,
-            fmt::format("'{}': number {} of the comma-separated list is empty", text, i));
+    require_argument(!item.empty(), arg,
+                     fmt::format("'{}': number {} of the comma-separated list is empty", text, i));
     out.push_back(std::move(item));
     if (comma == std::string::npos) break;
     start = comma + 1;
@@ -68,14 +65,14 @@ std::vector<double> parse_list(const std::string& arg, const std::string& text) 
 std::vector<double> parse_step_list(const std::string& arg, const std::string& text, double t_end,
                                     int max_steps_log10) {
   std::vector<double> hs = parse_list(arg, text);
-  require(hs.size() >= 3, arg, "needs at least 3 step sizes");
+  require_argument(hs.size() >= 3, arg, "needs at least 3 step sizes");
   for (double h : hs)
-    require(h > 0 && h <= t_end && t_end / h <= std::pow(10.0, max_steps_log10), arg,
-            fmt::format("{} is not a step size in (T/1e{}, T]", h, max_steps_log10));
+    require_argument(h > 0 && h <= t_end && t_end / h <= std::pow(10.0, max_steps_log10), arg,
+                     fmt::format("{} is not a step size in (T/1e{}, T]", h, max_steps_log10));
   std::vector<double> sorted = hs;
   std::sort(sorted.begin(), sorted.end());
-  require(std::adjacent_find(sorted.begin(), sorted.end()) == sorted.end(), arg,
-          "gives a step size twice; an order needs distinct steps");
+  require_argument(std::adjacent_find(sorted.begin(), sorted.end()) == sorted.end(), arg,
+                   "gives a step size twice; an order needs distinct steps");
   return hs;
 }
 

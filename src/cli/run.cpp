@@ -26,10 +26,6 @@ struct RunOptions : run::Settings {
       alpha_text, digits_text, every_text, q0_text, p0_text, max_seconds_text;
 };
 
-void require(bool ok, const std::string& arg, const std::string& msg) {
-  if (!ok) throw ArgumentError(arg, msg);
-}
-
 /// The problem a method is implemented for when it is only one (what --problem defaults to);
 /// otherwise ArgumentError naming --problem.
 std::string problem_of(const std::string& method) {
@@ -127,15 +123,16 @@ std::function<int()> add_run_command(CLI::App& app) {
     if (given("--every")) o->every = parse_integer("--every", o->every_text);
     if (given("--max-seconds")) {
       o->max_seconds = parse_number("--max-seconds", o->max_seconds_text);
-      require(o->max_seconds > 0 && o->max_seconds <= 1e7, "--max-seconds",
-              "must be a positive number of seconds, at most 1e7");
+      require_argument(o->max_seconds > 0 && o->max_seconds <= 1e7, "--max-seconds",
+                       "must be a positive number of seconds, at most 1e7");
     }
     if (given("--digits")) {
       const long long d = parse_integer("--digits", o->digits_text);
-      require(d >= kMpfrMinDigits && d <= kMpfrMaxDigits, "--digits",
-              fmt::format("must lie in [{}, {}], got {} (the solvers' tolerances are doubles, "
-                          "which end near 1e-308)",
-                          kMpfrMinDigits, kMpfrMaxDigits, d));
+      require_argument(
+          d >= kMpfrMinDigits && d <= kMpfrMaxDigits, "--digits",
+          fmt::format("must lie in [{}, {}], got {} (the solvers' tolerances are doubles, "
+                      "which end near 1e-308)",
+                      kMpfrMinDigits, kMpfrMaxDigits, d));
       o->digits = static_cast<unsigned>(d);
     }
     o->plan_arg = given("--h0")  ? "--h0"
@@ -144,53 +141,59 @@ std::function<int()> add_run_command(CLI::App& app) {
                   : o->t_end     ? "--t-end"
                   : o->tau_end   ? "--tau-end"
                                  : "--h";
-    require(std::isfinite(o->h) && o->h > 0, "--h", "must be a positive finite number");
+    require_argument(std::isfinite(o->h) && o->h > 0, "--h", "must be a positive finite number");
     if (o->t_end)
-      require(std::isfinite(*o->t_end) && *o->t_end > 0, "--t-end",
-              "must be a positive finite number");
+      require_argument(std::isfinite(*o->t_end) && *o->t_end > 0, "--t-end",
+                       "must be a positive finite number");
     if (o->periods)
-      require(std::isfinite(*o->periods) && *o->periods > 0, "--periods",
-              "must be a positive finite number");
+      require_argument(std::isfinite(*o->periods) && *o->periods > 0, "--periods",
+                       "must be a positive finite number");
     if (o->h0)
-      require(std::isfinite(*o->h0) && *o->h0 > 0, "--h0", "must be a positive finite number");
-    require(o->every >= 1, "--every", "must be at least 1");
-    if (o->e) require(*o->e >= 0 && *o->e < 1, "--e", "eccentricity must lie in [0, 1)");
+      require_argument(std::isfinite(*o->h0) && *o->h0 > 0, "--h0",
+                       "must be a positive finite number");
+    require_argument(o->every >= 1, "--every", "must be at least 1");
+    if (o->e) require_argument(*o->e >= 0 && *o->e < 1, "--e", "eccentricity must lie in [0, 1)");
     // Options of one family of methods are refused elsewhere, never silently ignored.
     const bool adaptive = o->method == "epavi" || o->method == "avi1" || o->method == "avi2";
     const bool epavi = o->method == "epavi";
-    require(adaptive || !given("--h0"), "--h0",
-            "applies to the adaptive methods epavi, avi1, avi2");
-    require(epavi || !given("--tol"), "--tol",
-            "applies to epavi only (the other implicit methods use Newton at 4 ulp)");
-    require(epavi || !given("--energy-target"), "--energy-target", "applies to epavi only");
-    require(epavi || !given("--solver"), "--solver", "applies to epavi only");
-    require(epavi || o->precision == "double", "--precision",
-            "only epavi is templated on the scalar; the other methods run in double");
-    require(!o->digits || o->precision == "mpfr", "--digits", "applies to --precision mpfr only");
-    require(o->method == "del-generic" || !given("--discrete-lagrangian"), "--discrete-lagrangian",
-            "applies to --method del-generic only");
+    require_argument(adaptive || !given("--h0"), "--h0",
+                     "applies to the adaptive methods epavi, avi1, avi2");
+    require_argument(epavi || !given("--tol"), "--tol",
+                     "applies to epavi only (the other implicit methods use Newton at 4 ulp)");
+    require_argument(epavi || !given("--energy-target"), "--energy-target",
+                     "applies to epavi only");
+    require_argument(epavi || !given("--solver"), "--solver", "applies to epavi only");
+    require_argument(epavi || o->precision == "double", "--precision",
+                     "only epavi is templated on the scalar; the other methods run in double");
+    require_argument(!o->digits || o->precision == "mpfr", "--digits",
+                     "applies to --precision mpfr only");
+    require_argument(o->method == "del-generic" || !given("--discrete-lagrangian"),
+                     "--discrete-lagrangian", "applies to --method del-generic only");
     if (o->tol) {
-      require(std::isfinite(*o->tol) && *o->tol > 0, "--tol", "must be a positive number");
+      require_argument(std::isfinite(*o->tol) && *o->tol > 0, "--tol", "must be a positive number");
       // The range ExtendedDelIntegrator accepts, checked here so that no output starts first.
       const double u =
           with_precision(parse_precision(o->precision), o->digits.value_or(18), [](auto zero) {
             using T = decltype(zero);
             return to_double(unit_roundoff<T>());
           });
-      require(*o->tol >= u && *o->tol < 1e-2, "--tol",
-              fmt::format("must lie in [{:.3g}, 1e-2) (the round-off of --precision {} up to "
-                          "1e-2), got {:.3g}",
-                          u, o->precision, *o->tol));
+      require_argument(
+          *o->tol >= u && *o->tol < 1e-2, "--tol",
+          fmt::format("must lie in [{:.3g}, 1e-2) (the round-off of --precision {} up to "
+                      "1e-2), got {:.3g}",
+                      u, o->precision, *o->tol));
     }
-    require(!(given("--h") && given("--h0")), "--h0",
-            "give --h0 or --h (the first step of an adaptive method), not both");
+    require_argument(!(given("--h") && given("--h0")), "--h0",
+                     "give --h0 or --h (the first step of an adaptive method), not both");
     if (o->c) {
-      require(std::isfinite(*o->c) && *o->c > 0, "--c", "the speed of light must be positive");
+      require_argument(std::isfinite(*o->c) && *o->c > 0, "--c",
+                       "the speed of light must be positive");
       // c² and c⁴ occur in the energy and the exact orbit: they must be finite numbers.
-      require(std::isfinite(*o->c * *o->c * *o->c * *o->c), "--c",
-              fmt::format("{:.3g} is too large (c^4 overflows); the limit c → ∞ is --problem "
-                          "kepler",
-                          *o->c));
+      require_argument(
+          std::isfinite(*o->c * *o->c * *o->c * *o->c), "--c",
+          fmt::format("{:.3g} is too large (c^4 overflows); the limit c → ∞ is --problem "
+                      "kepler",
+                      *o->c));
     }
     // The output path, checked now (it is opened only when the run starts).
     check_output_path(o->csv, "--csv");
@@ -199,24 +202,28 @@ std::function<int()> add_run_command(CLI::App& app) {
     const bool splitting = o->method == "vi1" || o->method == "vi1-adjoint" || o->method == "vi2" ||
                            o->method == "vi2-adjoint";
     if (rel) {
-      require(rel_only || o->method == "vi2", "--method",
-              "relativistic-kepler takes k-symplectic, vi or vi2");
+      require_argument(rel_only || o->method == "vi2", "--method",
+                       "relativistic-kepler takes k-symplectic, vi or vi2");
     } else {
-      require(!rel_only, "--method", "k-symplectic and vi are for --problem relativistic-kepler");
-      require(!splitting || o->problem == "kepler", "--method",
-              "vi1, vi1-adjoint, vi2 and vi2-adjoint split the Kepler potential: use --problem "
-              "kepler");
+      require_argument(!rel_only, "--method",
+                       "k-symplectic and vi are for --problem relativistic-kepler");
+      require_argument(
+          !splitting || o->problem == "kepler", "--method",
+          "vi1, vi1-adjoint, vi2 and vi2-adjoint split the Kepler potential: use --problem "
+          "kepler");
     }
-    require(!o->alpha || (splitting && !rel), "--alpha",
-            "applies to the splitting methods vi1, vi1-adjoint, vi2, vi2-adjoint on kepler");
+    require_argument(
+        !o->alpha || (splitting && !rel), "--alpha",
+        "applies to the splitting methods vi1, vi1-adjoint, vi2, vi2-adjoint on kepler");
     if (rel) {
-      require(o->c.has_value(), "--c", "the speed of light is required for relativistic-kepler");
-      require(!o->t_end && !o->periods, o->t_end ? "--t-end" : "--periods",
-              "relativistic-kepler runs in proper time: use --tau-end");
-      require(!o->e, "--e", "does not apply to relativistic-kepler; give --q0 and --p0");
+      require_argument(o->c.has_value(), "--c",
+                       "the speed of light is required for relativistic-kepler");
+      require_argument(!o->t_end && !o->periods, o->t_end ? "--t-end" : "--periods",
+                       "relativistic-kepler runs in proper time: use --tau-end");
+      require_argument(!o->e, "--e", "does not apply to relativistic-kepler; give --q0 and --p0");
     } else {
-      require(!o->c, "--c", "only applies to --problem relativistic-kepler");
-      require(!o->tau_end, "--tau-end", "only applies to --problem relativistic-kepler");
+      require_argument(!o->c, "--c", "only applies to --problem relativistic-kepler");
+      require_argument(!o->tau_end, "--tau-end", "only applies to --problem relativistic-kepler");
     }
     const DeferSignals signals;  // from here on, an interruption keeps FILE.partial
     run::Hooks hooks;

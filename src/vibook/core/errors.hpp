@@ -26,6 +26,11 @@ class ArgumentError : public std::invalid_argument {
   std::string argument_;
 };
 
+/// The one check of a user's argument: throws ArgumentError(argument, message) unless ok.
+inline void require_argument(bool ok, const std::string& argument, const std::string& message) {
+  if (!ok) throw ArgumentError(argument, message);
+}
+
 /// A numerical method could not produce a valid result (command line: exit status 3).
 class NumericalError : public std::runtime_error {
  public:

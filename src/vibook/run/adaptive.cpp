@@ -20,9 +20,9 @@ void integrate_adaptive_kepler(const Settings& o, const Hooks& hooks) {
   constexpr int N = 2;
   const Kepler P;
   const double h0 = o.h0.value_or(o.h);
-  require(std::isfinite(h0) && h0 > 0, "--h0", "must be a positive finite number");
+  require_argument(std::isfinite(h0) && h0 > 0, "--h0", "must be a positive finite number");
   const bool from_state = !o.q0.empty() || !o.p0.empty();
-  require(!(o.e && from_state), "--e", "give either --e or --q0/--p0, not both");
+  require_argument(!(o.e && from_state), "--e", "give either --e or --q0/--p0, not both");
   State<N> s0 = o.e ? kepler_perihelion_state(*o.e) : kepler_perihelion_state(0.5);
   if (from_state) {
     s0.q = vector_arg<N>(o.q0, "--q0");
@@ -44,28 +44,31 @@ void integrate_adaptive_kepler(const Settings& o, const Hooks& hooks) {
   {
     const double a = orbit.semi_major_axis(), ecc = orbit.eccentricity();
     const double rp = a * (1 - ecc), vp = std::sqrt((1 + ecc) / rp);
-    require(h0 * vp <= rp, o.h0 ? "--h0" : "--h",
-            fmt::format("the first step {:.3g} moves the body {:.3g} at the pericentre, farther "
-                        "than its distance {:.3g} from the centre (e = {:.9g}): take a first "
-                        "step below {:.3g}",
-                        h0, h0 * vp, rp, ecc, rp / vp));
+    require_argument(
+        h0 * vp <= rp, o.h0 ? "--h0" : "--h",
+        fmt::format("the first step {:.3g} moves the body {:.3g} at the pericentre, farther "
+                    "than its distance {:.3g} from the centre (e = {:.9g}): take a first "
+                    "step below {:.3g}",
+                    h0, h0 * vp, rp, ecc, rp / vp));
   }
   const double Tend = o.periods ? *o.periods * (from_state ? orbit.period() : 2 * std::numbers::pi)
                                 : o.t_end.value_or(10.0);
-  require(std::isfinite(Tend) && Tend > 0, o.periods ? "--periods" : "--t-end",
-          "must be a positive number");
+  require_argument(std::isfinite(Tend) && Tend > 0, o.periods ? "--periods" : "--t-end",
+                   "must be a positive number");
   // The steps are the method's; at least about Tend/h0 of them are planned for.
   step_plan(Tend, h0, o.plan_arg);
 
   const bool epavi = o.method == "epavi";
   if (!epavi) {
-    require(o.precision == "double", "--precision",
-            "only epavi is templated on the scalar; avi1 and avi2 run in double");
-    require(!o.tol, "--tol", "applies to epavi only (avi1/avi2 use Newton at 4 ulp)");
-    require(o.energy_target == "previous", "--energy-target", "applies to epavi only");
+    require_argument(o.precision == "double", "--precision",
+                     "only epavi is templated on the scalar; avi1 and avi2 run in double");
+    require_argument(!o.tol, "--tol", "applies to epavi only (avi1/avi2 use Newton at 4 ulp)");
+    require_argument(o.energy_target == "previous", "--energy-target", "applies to epavi only");
   }
-  require(!o.digits || o.precision == "mpfr", "--digits", "applies to --precision mpfr only");
-  if (o.tol) require(std::isfinite(*o.tol) && *o.tol > 0, "--tol", "must be a positive number");
+  require_argument(!o.digits || o.precision == "mpfr", "--digits",
+                   "applies to --precision mpfr only");
+  if (o.tol)
+    require_argument(std::isfinite(*o.tol) && *o.tol > 0, "--tol", "must be a positive number");
   OutputFile csv(o.csv, "--csv");
   std::vector<std::string> cols = {"step", "t", "dt", "q1",  "q2",   "p1",
                                    "p2",   "H", "L",  "ecc", "omega"};

@@ -35,7 +35,8 @@ void integrate(const Problem& P, Stepper stepper, bool implicit, const Settings&
   State<N> s;
   if constexpr (kepler) {
     if (o.e) {
-      require(o.q0.empty() && o.p0.empty(), "--e", "give either --e or --q0/--p0, not both");
+      require_argument(o.q0.empty() && o.p0.empty(), "--e",
+                       "give either --e or --q0/--p0, not both");
       s = kepler_perihelion_state(*o.e);
     } else if (!o.q0.empty() || !o.p0.empty()) {
       s.q = vector_arg<N>(o.q0, "--q0");
@@ -44,7 +45,7 @@ void integrate(const Problem& P, Stepper stepper, bool implicit, const Settings&
       s = kepler_perihelion_state(0.5);
     }
   } else {
-    require(!o.e, "--e", "only applies to --problem kepler");
+    require_argument(!o.e, "--e", "only applies to --problem kepler");
     s.q = o.q0.empty() ? Vec<double, N>::Constant(1.0) : vector_arg<N>(o.q0, "--q0");
     s.p = o.p0.empty() ? Vec<double, N>::Zero() : vector_arg<N>(o.p0, "--p0");
   }
@@ -62,7 +63,8 @@ void integrate(const Problem& P, Stepper stepper, bool implicit, const Settings&
   // End time.
   double T = 0;
   if (o.periods) {
-    require(std::isfinite(*o.periods) && *o.periods > 0, "--periods", "must be a positive number");
+    require_argument(std::isfinite(*o.periods) && *o.periods > 0, "--periods",
+                     "must be a positive number");
     double period = 0;
     if constexpr (kepler) {
       // From --e the orbit has a = 1 by construction: period exactly 2π.
@@ -79,7 +81,7 @@ void integrate(const Problem& P, Stepper stepper, bool implicit, const Settings&
     T = *o.periods * period;
   } else {
     T = o.t_end.value_or(10.0);
-    require(std::isfinite(T) && T > 0, "--t-end", "must be a positive number");
+    require_argument(std::isfinite(T) && T > 0, "--t-end", "must be a positive number");
   }
   const auto [steps, last_h] = step_plan(T, o.h, o.plan_arg);
 
@@ -161,7 +163,7 @@ void integrate_relativistic(const relativistic::Problem& P, Method method, const
     throw ArgumentError("--q0/--p0/--c", e.what());
   }
   const double T = o.tau_end.value_or(40.0);
-  require(std::isfinite(T) && T > 0, "--tau-end", "must be a positive number");
+  require_argument(std::isfinite(T) && T > 0, "--tau-end", "must be a positive number");
   const auto [steps, last_h] = step_plan(T, o.h, o.plan_arg);
   OutputFile out(o.csv, "--csv");
   const std::vector<std::string> cols = {"step", "tau", "t",      "x1", "x2",   "gamma",

@@ -23,10 +23,6 @@
 
 namespace vibook::run::detail {
 
-inline void require(bool ok, const std::string& arg, const std::string& msg) {
-  if (!ok) throw ArgumentError(arg, msg);
-}
-
 // At most this many steps in one run (a plan of more is a typing error, or a study for the
 // benchmarks, not for `vibook run`).
 constexpr double kMaxSteps = 1e12;
@@ -36,14 +32,16 @@ constexpr double kMaxSteps = 1e12;
 // steps, the last one shortened so that the run ends at T. `arg` is named when the plan has no
 // step or more than kMaxSteps.
 inline std::pair<long long, double> step_plan(double T, double h, const std::string& arg) {
-  require(h <= T * (1 + 64 * kEps), arg,
-          fmt::format("the step {:.6g} is longer than the whole run (to {:.6g}): no step to take",
-                      h, T));
+  require_argument(
+      h <= T * (1 + 64 * kEps), arg,
+      fmt::format("the step {:.6g} is longer than the whole run (to {:.6g}): no step to take", h,
+                  T));
   const double ratio = T / h;
-  require(ratio <= kMaxSteps, arg,
-          fmt::format("step {:.3g} up to {:.3g} makes {:.3g} steps, more than the 1e12 a run may "
-                      "take",
-                      h, T, ratio));
+  require_argument(
+      ratio <= kMaxSteps, arg,
+      fmt::format("step {:.3g} up to {:.3g} makes {:.3g} steps, more than the 1e12 a run may "
+                  "take",
+                  h, T, ratio));
   const double n = std::nearbyint(ratio);
   if (std::abs(ratio - n) <= 64 * kEps * std::max(1.0, ratio)) {
     return {static_cast<long long>(n), h};
@@ -116,11 +114,11 @@ class Progress {
 
 template <int N>
 Vec<double, N> vector_arg(const std::vector<double>& v, const char* name) {
-  require(v.size() == N, name,
-          fmt::format("expects {} comma-separated number(s) for this problem", N));
+  require_argument(v.size() == N, name,
+                   fmt::format("expects {} comma-separated number(s) for this problem", N));
   Vec<double, N> out;
   for (int i = 0; i < N; ++i) {
-    require(std::isfinite(v[i]), name, "values must be finite");
+    require_argument(std::isfinite(v[i]), name, "values must be finite");
     out(i) = v[i];
   }
   return out;
