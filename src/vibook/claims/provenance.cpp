@@ -59,7 +59,11 @@ nlohmann::json provenance(const std::string& commit) {
   nlohmann::json j;
   j["commit"] = commit.empty() ? "unknown" : commit;
   j["vibook"] = VIBOOK_VERSION;
+#if defined(__clang__)
+  j["compiler"] = fmt::format("clang++ {}", __clang_version__);
+#else
   j["compiler"] = fmt::format("g++ {}", __VERSION__);
+#endif
   j["eigen"] =
       fmt::format("{}.{}.{}", EIGEN_WORLD_VERSION, EIGEN_MAJOR_VERSION, EIGEN_MINOR_VERSION);
   std::string boost = BOOST_LIB_VERSION;

@@ -181,3 +181,26 @@ TEST_CASE("reference_solution: GBS in double-double against the exact harmonic o
   CHECK_THROWS_AS(verify::reference_solution<dd_real>(blow, {dd_real(1)}, 2.0, 1e-26, 0, 1L << 10),
                   NumericalError);
 }
+
+TEST_CASE("step_jacobian: the map is called in one fixed order, whatever the compiler") {
+  // A black box may keep state from call to call (a deliberately wrong stepper of the field
+  // audit does); the order of its calls must then not depend on how a compiler evaluates the
+  // operands of one expression. Per column: the increments -2, +2, -1, +1 (times delta), in
+  // this order; and the Jacobian of a linear map is exact.
+  std::vector<double> seen;
+  const Eigen::VectorXd z = Eigen::Vector2d(0.5, -0.25);
+  const verify::Step linear = [&](Eigen::VectorXd& w, double h) {
+    seen.push_back(w(0) - z(0) + w(1) - z(1));
+    w = Eigen::Vector2d(w(0) + h * w(1), w(1) - h * w(0));
+  };
+  const Eigen::MatrixXd J = verify::step_jacobian(linear, z, 0.1, 1e-3);
+  REQUIRE(seen.size() == 8);
+  const double d = 1e-3;  // delta * max(1, |z_j|)
+  const double want[] = {-2 * d, 2 * d, -d, d, -2 * d, 2 * d, -d, d};
+  for (std::size_t i = 0; i < 8; ++i)
+    CHECK(std::abs(seen[i] - want[i]) <= 1e-15);  // (z + s d) - z: round-off of 0.5 at most
+  CHECK(std::abs(J(0, 0) - 1.0) <= 1e-12);
+  CHECK(std::abs(J(0, 1) - 0.1) <= 1e-12);
+  CHECK(std::abs(J(1, 0) + 0.1) <= 1e-12);
+  CHECK(std::abs(J(1, 1) - 1.0) <= 1e-12);
+}
