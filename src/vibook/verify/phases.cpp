@@ -151,9 +151,7 @@ Eigen::MatrixXd step_jacobian_along(const Step& step, const Eigen::VectorXd& z, 
       step(w, h);
       return w;
     };
-    // (the four steps in a fixed order, as in step_jacobian: verify.hpp)
-    const Eigen::VectorXd m2 = at(-2), p2 = at(2), m1 = at(-1), p1 = at(1);
-    JU.col(j) = (8 * (p1 - m1) - (p2 - m2)) / (12 * d);
+    JU.col(j) = central_difference(at, d);
   }
   return JU;
 }

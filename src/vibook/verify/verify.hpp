@@ -208,6 +208,17 @@ inline PlateauFit fit_order_plateau(const std::vector<double>& h, const std::vec
 // Symplecticity and reversibility of the one-step map
 // -------------------------------------------------------------------------------------------
 
+/// The fourth-order central difference (8(Φ(+d) − Φ(−d)) − (Φ(+2d) − Φ(−2d)))/(12d) of a
+/// displaced step `at(s)` (the state after one step from the start moved by s·d). The four
+/// steps are taken in one fixed order, −2, +2, −1, +1: the operands of one expression are
+/// evaluated in an unspecified order (GCC and clang differ), and a stateful black box would
+/// see it. This is the order GCC took when the book's numbers were first measured.
+template <class At>
+Eigen::VectorXd central_difference(const At& at, double d) {
+  const Eigen::VectorXd m2 = at(-2.0), p2 = at(2.0), m1 = at(-1.0), p1 = at(1.0);
+  return (8 * (p1 - m1) - (p2 - m2)) / (12 * d);
+}
+
 /// Jacobian of the one-step map z ↦ Φ_h(z) by fourth-order central differences with relative
 /// increment `delta` in each coordinate (error ~ delta⁴ + (solver tolerance)/delta).
 inline Eigen::MatrixXd step_jacobian(const Step& step, const Eigen::VectorXd& z, double h,
@@ -224,11 +235,7 @@ inline Eigen::MatrixXd step_jacobian(const Step& step, const Eigen::VectorXd& z,
       step(w, h);
       return w;
     };
-    // The four steps in a fixed order: the operands of one expression are evaluated in an
-    // unspecified order (GCC and clang differ), and a stateful black box would see it. This is
-    // the order GCC took when the book's numbers were first measured.
-    const Eigen::VectorXd m2 = at(-2), p2 = at(2), m1 = at(-1), p1 = at(1);
-    J.col(j) = (8 * (p1 - m1) - (p2 - m2)) / (12 * d);
+    J.col(j) = central_difference(at, d);
   }
   return J;
 }
