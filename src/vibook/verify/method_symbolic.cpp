@@ -244,39 +244,6 @@ void install(Derivation d, SymbolicUse use, MapStudy& study) {
   };
 }
 
-}  // namespace
-
-void derive_galerkin_variational_order(const MethodSpec& spec, int dim,
-                                       modified::SymbolicLagrangian L, SymbolicUse use,
-                                       MapStudy& study) {
-  const std::optional<modified::ExactQuadrature> rule =
-      modified::exact_quadrature(spec.rule.name, spec.stages);
-  Derivation d;
-  d.dim = dim;
-  d.L = L;
-  d.source =
-      "engine: the Galerkin L_d (quadrature action of the degree-S polynomial, exact nodes and "
-      "weights), its interior control points eliminated as series in h; L_d - L_d^E along the "
-      "solutions of the intended L, expanded about the step's midpoint (Marsden & West 2001, "
-      "Sec. 2.3.1 and 2.6)";
-  if (!rule)
-    d.skip = fmt::format(
-        "not derived: the nodes of {} are nested radicals, and the engine's zero test is exact "
-        "only over the rationals and their square roots",
-        spec.name);
-  else
-    d.make_dl = [rule = *rule, L, name = spec.name](std::shared_ptr<modified::JetSpace> J) {
-      return modified::galerkin_dl(rule, L, std::move(J), name);
-    };
-  install(std::move(d), use, study);
-}
-
-// --- compositions -----------------------------------------------------------------------------
-
-namespace {
-
-using ExactStages = std::vector<std::pair<modified::ex, bool>>;  // coefficient, adjoint
-
 // A decimal or a ratio of decimals, exactly ("-25/24", "0.125"); nullopt for anything else.
 std::optional<GiNaC::numeric> exact_number(const std::string& t) {
   auto decimal = [](const std::string& s) -> std::optional<GiNaC::numeric> {
@@ -323,6 +290,40 @@ GiNaC::numeric rational_of(const mpfr_real& x, int digits) {
 // (Kahan & Li's, as published) has 26 digits, which leaves terms near 1e-27; a coefficient off
 // in its eleventh digit leaves terms near 1e-12 (the field audit's A-WRONG-DIGIT).
 const GiNaC::numeric kZeroBelow = GiNaC::numeric(1) / GiNaC::numeric(10).power(20);
+
+}  // namespace
+
+void derive_galerkin_variational_order(const MethodSpec& spec, int dim,
+                                       modified::SymbolicLagrangian L, SymbolicUse use,
+                                       MapStudy& study) {
+  const std::optional<modified::ExactQuadrature> rule =
+      modified::exact_quadrature(spec.rule.name, spec.stages);
+  Derivation d;
+  d.dim = dim;
+  d.L = L;
+  d.source =
+      "engine: the Galerkin L_d (quadrature action of the degree-S polynomial, exact nodes and "
+      "weights), its interior control points eliminated as series in h; L_d - L_d^E along the "
+      "solutions of the intended L, expanded about the step's midpoint (Marsden & West 2001, "
+      "Sec. 2.3.1 and 2.6)";
+  if (!rule)
+    d.skip = fmt::format(
+        "not derived: the nodes of {} are nested radicals, and the engine's zero test is exact "
+        "only over the rationals and their square roots",
+        spec.name);
+  else
+    d.make_dl = [rule = *rule, L, name = spec.name](std::shared_ptr<modified::JetSpace> J) {
+      return modified::galerkin_dl(rule, L, std::move(J), name);
+    };
+  install(std::move(d), use, study);
+}
+
+// --- compositions -----------------------------------------------------------------------------
+
+namespace {
+
+using ExactStages = std::vector<std::pair<modified::ex, bool>>;  // coefficient, adjoint
+
 // Coefficients typed as decimals are the rationals they spell, and the order conditions hold
 // them to 1e-12 (composition_study.cpp, kConditionTol: decimals rounded to double leave
 // 1e-15 to 1e-13, a wrong eleventh digit 1e-11). The engine takes the same tolerance: Forest
