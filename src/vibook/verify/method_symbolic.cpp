@@ -76,6 +76,9 @@ struct Derivation {
   /// says so in the report. Unset: the zero test is exact.
   std::optional<GiNaC::numeric> zero_below;
   std::string precision;
+  /// A Galerkin rule cut to finite precision (cut_quadrature): by default derived in one
+  /// degree of freedom only.
+  bool cut_rule = false;
   /// The coefficients are a catalogue entry's 120-digit values (long numbers: the derivation
   /// is skipped by default where it would take minutes).
   bool long_digits = false;
@@ -83,17 +86,23 @@ struct Derivation {
   bool typed = false;  ///< stages of a typed L_d (--composition ld)
 };
 
+// The number of one term of an expanded polynomial (a numeric, or a product's numeric factors).
+GiNaC::numeric term_number(const modified::ex& t) {
+  GiNaC::numeric c = 1;
+  if (GiNaC::is_a<GiNaC::numeric>(t)) {
+    c = GiNaC::ex_to<GiNaC::numeric>(t);
+  } else if (GiNaC::is_a<GiNaC::mul>(t)) {
+    for (std::size_t k = 0; k < t.nops(); ++k)
+      if (GiNaC::is_a<GiNaC::numeric>(t.op(k))) c *= GiNaC::ex_to<GiNaC::numeric>(t.op(k));
+  }
+  return c;
+}
+
 // The largest number in an expanded polynomial's terms (its coefficients), in absolute value.
 GiNaC::numeric largest_coefficient(const modified::ex& e) {
   GiNaC::numeric top = 0;
   auto term = [&top](const modified::ex& t) {
-    GiNaC::numeric c = 1;
-    if (GiNaC::is_a<GiNaC::numeric>(t)) {
-      c = GiNaC::ex_to<GiNaC::numeric>(t);
-    } else if (GiNaC::is_a<GiNaC::mul>(t)) {
-      for (std::size_t k = 0; k < t.nops(); ++k)
-        if (GiNaC::is_a<GiNaC::numeric>(t.op(k))) c *= GiNaC::ex_to<GiNaC::numeric>(t.op(k));
-    }
+    const GiNaC::numeric c = term_number(t);
     if (abs(c) > top) top = abs(c);
   };
   const modified::ex x = GiNaC::expand(e);
@@ -102,6 +111,48 @@ GiNaC::numeric largest_coefficient(const modified::ex& e) {
   else if (!x.is_zero())
     term(x);
   return top;
+}
+
+// The fraction with the smallest denominator among the continued-fraction convergents of x
+// that lie within tol of it.
+GiNaC::numeric simplest_within(GiNaC::numeric x, const GiNaC::numeric& tol) {
+  using GiNaC::numeric;
+  const bool negative = x < 0;
+  if (negative) x = -x;
+  numeric n = x.numer(), d = x.denom(), h2 = 0, h1 = 1, k2 = 1, k1 = 0;
+  for (int it = 0; it < 1000 && !d.is_zero(); ++it) {
+    const numeric a = GiNaC::iquo(n, d), h = a * h1 + h2, k = a * k1 + k2;
+    if (abs(x - h / k) <= tol) return negative ? -h / k : h / k;
+    h2 = h1;
+    h1 = h;
+    k2 = k1;
+    k1 = k;
+    const numeric r = n - a * d;
+    n = d;
+    d = r;
+  }
+  return negative ? -x : x;
+}
+
+// A term of L_d − L_d^E derived from coefficients cut to finite precision, as the report shows
+// it: the terms whose number is below `below` left out, and each other number the simplest
+// fraction within 1e-25 of it relative (the cut moves the numbers near 1e-40 relative: the
+// Galerkin methods' true coefficients, rationals with small denominators, come back exactly).
+modified::ex shown_term(const modified::ex& e, const GiNaC::numeric& below) {
+  using GiNaC::numeric;
+  const modified::ex x = GiNaC::expand(e);
+  const numeric rel = numeric(1) / numeric(10).power(25);
+  modified::ex kept = 0;
+  auto one = [&](const modified::ex& t) {
+    const numeric c = term_number(t);
+    if (abs(c) < below) return;
+    kept += t / c * simplest_within(c, abs(c) * rel);
+  };
+  if (GiNaC::is_a<GiNaC::add>(x))
+    for (std::size_t k = 0; k < x.nops(); ++k) one(x.op(k));
+  else
+    one(x);
+  return kept;
 }
 
 // Is L polynomial in q and v? (Then the engine is quick in any dimension.)
@@ -158,6 +209,12 @@ void install(Derivation d, SymbolicUse use, MapStudy& study) {
           "minutes (yoshida6 on Hénon–Heiles: about 70 s, suzuki4 on Kepler: about 100 s, on one "
           "core); --symbolic always runs it",
           d.stages, quick ? "" : ", on a Lagrangian that is not polynomial,");
+    if (skip.empty() && use == SymbolicUse::automatic && d.cut_rule && d.dim > 1)
+      skip = fmt::format(
+          "not derived by default: with the nodes cut to 40 digits the engine takes minutes in "
+          "{} dimensions (gauss:4 on Henon-Heiles: about 3.5 minutes on one core, on the "
+          "pendulum about 22 s); --symbolic always runs it",
+          d.dim);
     if (!skip.empty()) {
       rep.line("  derived", skip);
       jv["engine"] = {{"derived", false}, {"reason", skip}};
@@ -197,6 +254,13 @@ void install(Derivation d, SymbolicUse use, MapStudy& study) {
         je["precision"] = d.precision;
       }
       if (r >= 0) first_term = terms[static_cast<std::size_t>(r)].get<std::string>();
+      if (r >= 0 && d.zero_below) {
+        // the first term as shown_term gives it (the JSON keeps it whole under "defect")
+        first_term = modified::canonical_string(
+            shown_term(vo.defect[static_cast<std::size_t>(r)], *d.zero_below),
+            modified::Format::text);
+        je["first_term_shown"] = first_term;
+      }
     } catch (const std::exception& e) {
       // The engine could not reach the answer (interior points that have no series solution, a
       // Lagrangian it cannot expand): reported, and the verdict does not count on it.
@@ -291,7 +355,46 @@ GiNaC::numeric rational_of(const mpfr_real& x, int digits) {
 // in its eleventh digit leaves terms near 1e-12 (the field audit's A-WRONG-DIGIT).
 const GiNaC::numeric kZeroBelow = GiNaC::numeric(1) / GiNaC::numeric(10).power(20);
 
+// A Galerkin rule without a closed form, as rationals: its nodes computed at kCompositionDigits
+// digits (Newton on their defining equation in MPFR, quadrature_in) and cut to their first
+// kGalerkinDigits, placed symmetrically about 1/2 (c and 1 − c from one cut), and the weights
+// those nodes' interpolatory ones, b_i = ∫_0^1 ℓ_i(τ) dτ, in exact arithmetic. The rule is then
+// exactly symmetric and exact on the polynomials of degree below s (up to s for odd s), and
+// only the higher moments that give Gauss and Lobatto their order carry the cut, near
+// 1e-kGalerkinDigits. The terms of L_d − L_d^E this leaves are that small times the Lagrangian's
+// own numbers; the first true term of Gauss 5 (order 10, at h^11) has numbers near its error
+// constant (5!)^4/(11 (10!)^3), about 4e-13, times those of L, and kZeroBelow (1e-20) lies
+// between. Symmetry halves the terms the cut leaves (the odd powers of h vanish exactly), and
+// the engine's cost grows with their number and their length: gauss:4 on the pendulum took
+// 103 s with independently cut nodes and weights at 40 digits.
+constexpr int kGalerkinDigits = 40;
+
 }  // namespace
+
+modified::ExactQuadrature cut_quadrature(const Quadrature& rule) {
+  using GiNaC::numeric;
+  const MpfrDigits digits(kCompositionDigits);
+  const QuadratureT<mpfr_real> r = quadrature_in<mpfr_real>(rule);
+  const std::size_t s = r.c.size();
+  std::vector<numeric> c(s);
+  for (std::size_t i = 0; i < (s + 1) / 2; ++i) {
+    c[i] = 2 * i + 1 == s ? numeric(1, 2) : rational_of(r.c[i], kGalerkinDigits);
+    c[s - 1 - i] = 1 - c[i];
+  }
+  const GiNaC::symbol tau("tau");
+  modified::ExactQuadrature q;
+  for (std::size_t i = 0; i < s; ++i) {
+    modified::ex ell = 1;
+    for (std::size_t j = 0; j < s; ++j)
+      if (j != i) ell *= (tau - c[j]) / (c[i] - c[j]);
+    const modified::ex primitive = GiNaC::integral(tau, 0, 1, GiNaC::expand(ell)).eval_integ();
+    q.c.push_back(c[i]);
+    q.b.push_back(primitive);
+  }
+  return q;
+}
+
+GiNaC::numeric galerkin_zero_below() { return kZeroBelow; }
 
 void derive_galerkin_variational_order(const MethodSpec& spec, int dim,
                                        modified::SymbolicLagrangian L, SymbolicUse use,
@@ -306,15 +409,26 @@ void derive_galerkin_variational_order(const MethodSpec& spec, int dim,
       "weights), its interior control points eliminated as series in h; L_d - L_d^E along the "
       "solutions of the intended L, expanded about the step's midpoint (Marsden & West 2001, "
       "Sec. 2.3.1 and 2.6)";
-  if (!rule)
-    d.skip = fmt::format(
-        "not derived: the nodes of {} are nested radicals, and the engine's zero test is exact "
-        "only over the rationals and their square roots",
-        spec.name);
-  else
-    d.make_dl = [rule = *rule, L, name = spec.name](std::shared_ptr<modified::JetSpace> J) {
-      return modified::galerkin_dl(rule, L, std::move(J), name);
-    };
+  modified::ExactQuadrature q;
+  if (rule) {
+    q = *rule;
+  } else {
+    // Gauss with four nodes or more, Lobatto with six or more: no closed form over the
+    // rationals and their square roots (nested radicals, then roots of quintics and beyond).
+    // The nodes and weights at kCompositionDigits digits (Newton on their defining equations in
+    // MPFR, quadrature_in), each taken as the rational of its first kGalerkinDigits digits; a
+    // term of L_d − L_d^E whose every number is below kZeroBelow counts as zero.
+    q = cut_quadrature(spec.rule);
+    d.cut_rule = true;
+    d.zero_below = kZeroBelow;
+    d.precision = fmt::format(
+        "the nodes and weights of {} to {} digits, a term with every number below 1e-20 "
+        "counted as zero",
+        spec.name, kGalerkinDigits);
+  }
+  d.make_dl = [q, L, name = spec.name](std::shared_ptr<modified::JetSpace> J) {
+    return modified::galerkin_dl(q, L, std::move(J), name);
+  };
   install(std::move(d), use, study);
 }
 
@@ -582,6 +696,24 @@ std::vector<std::pair<GiNaC::numeric, bool>> catalogue_rationals(const std::stri
 }
 
 GiNaC::numeric composition_zero_below() { return kZeroBelow; }
+
+int galerkin_variational_order(const modified::ExactQuadrature& rule, const std::string& problem,
+                               int K, std::optional<GiNaC::numeric> zero_below) {
+  const TestProblem* tp = find_problem(problem);
+  if (!tp) throw std::invalid_argument("galerkin_variational_order: no problem " + problem);
+  const int dim = static_cast<int>(tp->q0.size());
+  const modified::SymbolicLagrangian L = test_problem_lagrangian(problem);
+  std::lock_guard<std::mutex> lock(modified::ginac_mutex());
+  auto J = std::make_shared<modified::JetSpace>(dim);
+  modified::Engine engine(modified::galerkin_dl(rule, L, J, "test"), K);
+  std::vector<modified::ex> x, v;
+  for (int i = 0; i < dim; ++i) {
+    x.push_back(J->x(0, i));
+    v.push_back(J->x(1, i));
+  }
+  const auto vo = engine.variational_order(modified::exact_rationals(L(x, v)));
+  return zero_below ? order_above(vo.defect, *zero_below) : vo.order;
+}
 
 int composition_variational_order(const std::string& base,
                                   const std::vector<std::pair<GiNaC::numeric, bool>>& stages,

@@ -37,11 +37,25 @@ SymbolicUse parse_symbolic_use(const std::string& s);
 
 /// Set `study.derive_variational_order` for the Galerkin method `spec` on the Lagrangian `L` of
 /// `dim` degrees of freedom (1 to 3; the engine's symbols J.x(0, i), J.x(1, i) are passed for
-/// q_i, v_i). With SymbolicUse::never, or a rule without closed-form nodes, the report says
-/// why it was not derived.
+/// q_i, v_i). Gauss with four nodes is derived on cut_quadrature (by default in one degree of
+/// freedom only: in two it takes minutes). With SymbolicUse::never the report says why it was
+/// not derived.
 void derive_galerkin_variational_order(const MethodSpec& spec, int dim,
                                        modified::SymbolicLagrangian L, SymbolicUse use,
                                        MapStudy& study);
+
+/// A Galerkin rule without a closed form (Gauss with four nodes or more) as the engine takes it:
+/// the nodes computed at 120 digits and cut to 40, placed symmetrically about 1/2, the weights
+/// their interpolatory ones in exact arithmetic (method_symbolic.cpp says why the cut and the
+/// threshold galerkin_zero_below() separate rounding from a defect).
+modified::ExactQuadrature cut_quadrature(const Quadrature& rule);
+/// 1e-20, the threshold a derivation on cut_quadrature counts a term below as zero.
+GiNaC::numeric galerkin_zero_below();
+/// The variational order the engine derives for the Galerkin method of `rule` on a test
+/// problem's Lagrangian, through h^{K+1}: the first k whose term of L_d − L_d^E has a number at
+/// or above `zero_below` (any nonzero number when unset); −1 when there is none. For tests.
+int galerkin_variational_order(const modified::ExactQuadrature& rule, const std::string& problem,
+                               int K, std::optional<GiNaC::numeric> zero_below);
 
 /// The same for a composition on a test problem ("pendulum", "kepler", "henon-heiles"): bases
 /// sv, midpoint, se and se-adjoint, coefficients exact rationals (a typed list of exact

@@ -1,6 +1,7 @@
-// Doctests of the engine's variational order of compositions whose coefficients are known to
-// finite precision (method_symbolic.hpp): the catalogue's 120-digit rationals and the
-// threshold below which a term of L_d − L_d^E counts as zero.
+// Doctests of the engine's variational order of compositions and Galerkin rules whose
+// coefficients are known to finite precision (method_symbolic.hpp): the catalogue's 120-digit
+// rationals, Gauss 4's nodes cut to 40 digits, and the threshold below which a term of
+// L_d − L_d^E counts as zero.
 #include <doctest/doctest.h>
 
 #include <cmath>
@@ -61,4 +62,43 @@ TEST_CASE(
   const auto bad = nystrom_theorem10({R(0)}, {{R(0)}}, {R(0)}, {R(2)});
   CHECK(bad.weights_residual == 1.0);
   CHECK(bad.h1_difference + bad.h2_difference > 1e-3);
+}
+
+TEST_CASE(
+    "cut Gauss 4: symmetric, exact below degree four, order beyond h^5, and a twelfth-digit "
+    "error is caught") {
+  using namespace vibook::verify;
+  using GiNaC::numeric;
+  const vibook::modified::ExactQuadrature q = cut_quadrature(vibook::gauss_rule(4));
+  REQUIRE(q.c.size() == 4);
+  auto moment = [](const vibook::modified::ExactQuadrature& r, int k) {
+    numeric m = 0;
+    for (std::size_t i = 0; i < r.c.size(); ++i)
+      m += GiNaC::ex_to<numeric>(r.b[i]) * GiNaC::ex_to<numeric>(r.c[i]).power(k);
+    return m - numeric(1, k + 1);
+  };
+  for (std::size_t i = 0; i < 4; ++i) {
+    INFO("node " << i);
+    CHECK(GiNaC::ex_to<numeric>(q.c[i] + q.c[3 - i]) == 1);  // symmetric, exactly
+    CHECK(GiNaC::ex_to<numeric>(q.b[i] - q.b[3 - i]).is_zero());
+  }
+  const numeric tiny = numeric(1) / numeric(10).power(38);
+  for (int k = 0; k < 8; ++k) {
+    INFO("moment of degree " << k);
+    if (k < 4)
+      CHECK(moment(q, k).is_zero());  // interpolatory weights: exact
+    else
+      CHECK(abs(moment(q, k)) < tiny);  // Gauss's own moments: the 40-digit cut
+  }
+  // nothing through h^5 on the pendulum with the threshold (the cut leaves terms near 1e-43)
+  CHECK(galerkin_variational_order(q, "pendulum", 4, galerkin_zero_below()) == -1);
+  // the outer nodes moved by 1e-12 (symmetrically, weights kept): the moment of degree 2 is off
+  // by about 1e-13, which L_d - L_d^E shows at h^3 (variational order 2); the threshold must
+  // not hide it
+  auto wrong = q;
+  const numeric delta = numeric(1) / numeric(10).power(12);
+  wrong.c[0] = wrong.c[0] + delta;
+  wrong.c[3] = wrong.c[3] - delta;
+  const int r = galerkin_variational_order(wrong, "pendulum", 4, galerkin_zero_below());
+  CHECK(r == 2);
 }
