@@ -195,19 +195,20 @@ void install(Derivation d, SymbolicUse use, MapStudy& study) {
           "polynomial, the engine takes minutes (gauss:3 on Kepler: about 2 minutes on 2 "
           "cores); --symbolic always runs it",
           K + 1, d.dim);
-    // 120-digit coefficients make every number long: by default only the short compositions
-    // on a polynomial Lagrangian (yoshida4 and suzuki4 on Hénon–Heiles: 1.5 and 5.5 s)
+    // Coefficients cut to 40 digits make every number long: by default only the short
+    // compositions on a polynomial Lagrangian (yoshida4 and suzuki4 on Hénon–Heiles)
     if (skip.empty() && use == SymbolicUse::automatic && d.long_digits && d.typed)
       skip =
-          "not derived by default: the stages of a typed L_d with 120-digit coefficients can "
-          "take the engine many minutes (yoshida4 on a typed midpoint rule with a "
-          "position-dependent mass: over 10 minutes); --symbolic always runs it";
+          "not derived by default: the stages of a typed L_d with coefficients cut to 40 digits "
+          "can take the engine many minutes (yoshida4 on a typed midpoint rule with a "
+          "position-dependent mass: over 10 minutes at 120 digits); --symbolic always runs it";
     else if (skip.empty() && use == SymbolicUse::automatic && d.long_digits &&
              (d.stages > 5 || !quick))
       skip = fmt::format(
-          "not derived by default: {} stages with 120-digit coefficients{} take the engine "
-          "minutes (yoshida6 on Hénon–Heiles: about 70 s, suzuki4 on Kepler: about 100 s, on one "
-          "core); --symbolic always runs it",
+          "not derived by default: {} stages with coefficients cut to 40 digits{} take the "
+          "engine a minute or more (yoshida6 on Hénon–Heiles: about 23 s, suzuki4 on Kepler: "
+          "about 50 s, yoshida6 on Kepler: over 5 minutes, on one core); --symbolic always runs "
+          "it",
           d.stages, quick ? "" : ", on a Lagrangian that is not polynomial,");
     if (skip.empty() && use == SymbolicUse::automatic && d.cut_rule && d.dim > 1)
       skip = fmt::format(
@@ -347,27 +348,30 @@ GiNaC::numeric rational_of(const mpfr_real& x, int digits) {
   return *mantissa * GiNaC::numeric(10).power(exponent);
 }
 
-// A catalogue entry's coefficients are irrational (cube roots) or known only numerically
-// (Newton on the order conditions, or published digits). The engine then derives with each
-// coefficient as the rational of its first kCompositionDigits digits, and a term of
-// L_d − L_d^E whose every number is below kZeroBelow counts as zero. The least precise entry
-// (Kahan & Li's, as published) has 26 digits, which leaves terms near 1e-27; a coefficient off
-// in its eleventh digit leaves terms near 1e-12 (the field audit's A-WRONG-DIGIT).
+// Coefficients the engine cannot have exactly: a catalogue composition's (cube roots, or known
+// only numerically: Newton on the order conditions, or published digits) and the nodes of
+// Gauss 4 (nested radicals). They are computed at kCompositionDigits digits and the engine
+// takes each as the rational of its first kEngineDigits; a term of L_d − L_d^E whose every
+// number is below kZeroBelow then counts as zero. The threshold sits between two scales. The
+// cut leaves terms near 1e-40 (times the Lagrangian's own numbers), and the least precise
+// catalogue entry, Kahan & Li's as published, has 26 digits, which leaves terms near 1e-27. A
+// composition coefficient off in its eleventh digit leaves terms near 1e-12 (the field audit's
+// A-WRONG-DIGIT), and the first true term of Gauss 5 (order 10, at h^11) has numbers near its
+// error constant (5!)^4/(11 (10!)^3), about 4e-13, times those of L. The engine's cost grows
+// with the numbers' length: Yoshida's sixth-order composition on Hénon–Heiles took 77 s at
+// 120 digits and takes 23 s at 40, with the same derived order and the same h^7 term.
+constexpr int kEngineDigits = 40;
 const GiNaC::numeric kZeroBelow = GiNaC::numeric(1) / GiNaC::numeric(10).power(20);
 
 // A Galerkin rule without a closed form, as rationals: its nodes computed at kCompositionDigits
 // digits (Newton on their defining equation in MPFR, quadrature_in) and cut to their first
-// kGalerkinDigits, placed symmetrically about 1/2 (c and 1 − c from one cut), and the weights
+// kEngineDigits, placed symmetrically about 1/2 (c and 1 − c from one cut), and the weights
 // those nodes' interpolatory ones, b_i = ∫_0^1 ℓ_i(τ) dτ, in exact arithmetic. The rule is then
 // exactly symmetric and exact on the polynomials of degree below s (up to s for odd s), and
-// only the higher moments that give Gauss and Lobatto their order carry the cut, near
-// 1e-kGalerkinDigits. The terms of L_d − L_d^E this leaves are that small times the Lagrangian's
-// own numbers; the first true term of Gauss 5 (order 10, at h^11) has numbers near its error
-// constant (5!)^4/(11 (10!)^3), about 4e-13, times those of L, and kZeroBelow (1e-20) lies
-// between. Symmetry halves the terms the cut leaves (the odd powers of h vanish exactly), and
-// the engine's cost grows with their number and their length: gauss:4 on the pendulum took
-// 103 s with independently cut nodes and weights at 40 digits.
-constexpr int kGalerkinDigits = 40;
+// only the higher moments that give Gauss its order carry the cut. Symmetry halves the terms
+// the cut leaves (the odd powers of h vanish exactly), and the engine's cost grows with their
+// number: gauss:4 on the pendulum took 103 s with independently cut nodes and weights, and
+// takes 22 s so.
 
 }  // namespace
 
@@ -378,7 +382,7 @@ modified::ExactQuadrature cut_quadrature(const Quadrature& rule) {
   const std::size_t s = r.c.size();
   std::vector<numeric> c(s);
   for (std::size_t i = 0; i < (s + 1) / 2; ++i) {
-    c[i] = 2 * i + 1 == s ? numeric(1, 2) : rational_of(r.c[i], kGalerkinDigits);
+    c[i] = 2 * i + 1 == s ? numeric(1, 2) : rational_of(r.c[i], kEngineDigits);
     c[s - 1 - i] = 1 - c[i];
   }
   const GiNaC::symbol tau("tau");
@@ -413,18 +417,16 @@ void derive_galerkin_variational_order(const MethodSpec& spec, int dim,
   if (rule) {
     q = *rule;
   } else {
-    // Gauss with four nodes or more, Lobatto with six or more: no closed form over the
-    // rationals and their square roots (nested radicals, then roots of quintics and beyond).
-    // The nodes and weights at kCompositionDigits digits (Newton on their defining equations in
-    // MPFR, quadrature_in), each taken as the rational of its first kGalerkinDigits digits; a
-    // term of L_d − L_d^E whose every number is below kZeroBelow counts as zero.
+    // Gauss with four nodes: no closed form over the rationals and their square roots (nested
+    // radicals). The rule cut to kEngineDigits (cut_quadrature); a term of L_d − L_d^E whose
+    // every number is below kZeroBelow counts as zero.
     q = cut_quadrature(spec.rule);
     d.cut_rule = true;
     d.zero_below = kZeroBelow;
     d.precision = fmt::format(
         "the nodes and weights of {} to {} digits, a term with every number below 1e-20 "
         "counted as zero",
-        spec.name, kGalerkinDigits);
+        spec.name, kEngineDigits);
   }
   d.make_dl = [q, L, name = spec.name](std::shared_ptr<modified::JetSpace> J) {
     return modified::galerkin_dl(q, L, std::move(J), name);
@@ -455,7 +457,7 @@ bool types_a_decimal(const std::string& t) {
 }
 
 // The stages as exact rationals: a typed list of exact decimals or ratios, or a catalogue
-// entry (Ruth's exactly; the others at kCompositionDigits digits, `zero_below` and `precision`
+// entry (Ruth's exactly; the others at kEngineDigits digits, `zero_below` and `precision`
 // then set). nullopt, with the reason, otherwise.
 std::optional<ExactStages> exact_stages(const CompositionSpec& spec, std::string& why,
                                         std::optional<GiNaC::numeric>* zero_below = nullptr,
@@ -481,7 +483,7 @@ std::optional<ExactStages> exact_stages(const CompositionSpec& spec, std::string
     *precision = fmt::format(
         "the coefficients of {} to {} digits, a term with every number below 1e-20 counted as "
         "zero",
-        n, kCompositionDigits);
+        n, kEngineDigits);
     return st;
   }
   const std::string list = spec.entry ? std::string(composition::kRuth3Stages) : spec.coefficients;
@@ -691,7 +693,7 @@ std::vector<std::pair<GiNaC::numeric, bool>> catalogue_rationals(const std::stri
   std::vector<std::pair<GiNaC::numeric, bool>> out;
   const MpfrDigits digits(kCompositionDigits);
   for (const auto& stage : composition::catalogue_stages<mpfr_real>(name, kCompositionDigits))
-    out.emplace_back(rational_of(stage.c, kCompositionDigits), stage.adjoint);
+    out.emplace_back(rational_of(stage.c, kEngineDigits), stage.adjoint);
   return out;
 }
 

@@ -63,9 +63,9 @@ int galerkin_variational_order(const modified::ExactQuadrature& rule, const std:
 void derive_composition_variational_order(const CompositionSpec& spec, const std::string& problem,
                                           SymbolicUse use, MapStudy& study);
 
-/// A catalogue entry's coefficients as the engine takes them: the rationals of their first
-/// kCompositionDigits digits (Ruth's exactly), with the adjoint marks. A composition of these
-/// has terms of L_d − L_d^E near the coefficients' rounding; the derivation counts a term
+/// A catalogue entry's coefficients as the engine takes them: computed at kCompositionDigits
+/// digits, the rationals of their first 40 (Ruth's exactly), with the adjoint marks. A composition
+/// of these has terms of L_d − L_d^E near the coefficients' rounding; the derivation counts a term
 /// with every number below kCompositionZeroBelow as zero and says so in the report.
 std::vector<std::pair<GiNaC::numeric, bool>> catalogue_rationals(const std::string& name);
 /// 1e-20: the least precise catalogue entry (Kahan & Li's, as published) has 26 digits.

@@ -1,6 +1,6 @@
 // Doctests of the engine's variational order of compositions and Galerkin rules whose
-// coefficients are known to finite precision (method_symbolic.hpp): the catalogue's 120-digit
-// rationals, Gauss 4's nodes cut to 40 digits, and the threshold below which a term of
+// coefficients are known to finite precision (method_symbolic.hpp): the catalogue's
+// coefficients and Gauss 4's nodes cut to 40 digits, and the threshold below which a term of
 // L_d − L_d^E counts as zero.
 #include <doctest/doctest.h>
 
@@ -11,11 +11,11 @@
 #include "vibook/verify/method_symbolic.hpp"
 
 TEST_CASE(
-    "derived variational order at 120 digits: yoshida4 is 4 and an eleventh-digit error is 2") {
+    "derived variational order at 40 digits: yoshida4 is 4 and an eleventh-digit error is 2") {
   using namespace vibook::verify;
   const auto st = catalogue_rationals("yoshida4");
   REQUIRE(st.size() == 3);
-  // the triple jump at 120 digits: order 4 once the rounding's terms (near 1e-120) count as zero
+  // the triple jump cut to 40 digits: order 4 once the cut's terms (near 1e-40) count as zero
   CHECK(composition_variational_order("sv", st, "pendulum", 4, composition_zero_below()) == 4);
   // an exact zero test sees the rounding: the threshold is what makes the route work
   CHECK(composition_variational_order("sv", st, "pendulum", 4, std::nullopt) == 2);
