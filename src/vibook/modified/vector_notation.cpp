@@ -5,6 +5,8 @@
 #include <sstream>
 #include <stdexcept>
 
+#include <fmt/format.h>
+
 #include "vibook/modified/canonical.hpp"
 
 namespace vibook::modified {
@@ -87,6 +89,7 @@ std::optional<VectorNotation> VectorNotation::of(const JetSpace& J, const std::v
   if (n < 2) return std::nullopt;
   std::set<int> families;
   bool p_occurs = false, v_occurs = false, a_occurs = false;
+  std::set<int> higher;  // jet orders from 3 on (x⃛ in Shen & Sun's Theorem 11, …)
   for (const ex& e : exprs)
     for (auto it = e.preorder_begin(); it != e.preorder_end(); ++it) {
       int f = 0;
@@ -97,6 +100,8 @@ std::optional<VectorNotation> VectorNotation::of(const JetSpace& J, const std::v
         p_occurs = p_occurs || it->is_equal(J.p(i));
         v_occurs = v_occurs || (J.created_order() >= 1 && it->is_equal(J.x(1, i)));
         a_occurs = a_occurs || (J.created_order() >= 2 && it->is_equal(J.x(2, i)));
+        for (int k = 3; k <= J.created_order(); ++k)
+          if (it->is_equal(J.x(k, i))) higher.insert(k);
       }
     }
   if (families.empty()) return std::nullopt;
@@ -128,6 +133,11 @@ std::optional<VectorNotation> VectorNotation::of(const JetSpace& J, const std::v
     v.velocity_tex_.emplace_back("p");
     v.velocity_.emplace_back();
     for (int i = 0; i < n; ++i) v.velocity_.back().push_back(J.p(i));
+  }
+  for (int k : higher) {  // after p: the invariants of ẋ, ẍ and p keep their order
+    v.velocity_tex_.emplace_back(k == 3 ? std::string("\\dddot{x}") : fmt::format("x^{{({})}}", k));
+    v.velocity_.emplace_back();
+    for (int i = 0; i < n; ++i) v.velocity_.back().push_back(J.x(k, i));
   }
   return v;
 }
@@ -251,6 +261,11 @@ std::vector<VectorNotation::Invariant> VectorNotation::invariants(bool vector) c
         scalar(tex(p) + "_{xxx}\\langle " + velocity_tex_[v] + "," + velocity_tex_[v] + "," +
                    velocity_tex_[v] + "\\rangle",
                dot(third(p, velocity_[v], velocity_[v]), velocity_[v]));
+    // two different derivatives of x against each other (ẋ·x⃛ in Shen & Sun's (4.17) proof),
+    // last: an expression without them is grouped as before
+    for (std::size_t v = 0; v < nv; ++v)
+      for (std::size_t w = v + 1; w < nv; ++w)
+        scalar(velocity_tex_[v] + "\\cdot " + velocity_tex_[w], dot(velocity_[v], velocity_[w]));
   } else {
     // (4.15)'s order: φ_xxx⟨ẋ, ẋ⟩ before φ_xx∇φ
     for (std::size_t p = 0; p < np; ++p) vec(nabla + tex(p), grad(p));

@@ -187,3 +187,22 @@ TEST_CASE(
     CHECK(read_back_difference(s, n, L, E.jets().h()).is_zero());
   }
 }
+
+TEST_CASE(
+    "vector notation: two different derivatives of x group as a dot product (x-dot . x-dddot)") {
+  std::lock_guard<std::mutex> lock(ginac_mutex());
+  Engine E(make_discrete_lagrangian(Method::sv, Potential::generic, 2), 3);
+  const JetSpace& J = E.jets();
+  const auto L = E.l_mod();  // makes the jets through x''' the engine's expansion needs
+  REQUIRE(J.created_order() >= 3);
+  // −ẋ·x⃛ + 2 ∇U·x⃛ + ẋ₁ ẍ₁ / 100 (the last is half of ẋ·ẍ: no majority, left in components)
+  const ex extra = J.x(1, 0) * J.x(2, 0) / 100;
+  ex e = extra;
+  for (int i = 0; i < 2; ++i) e += -J.x(1, i) * J.x(3, i) + 2 * J.derivative(0, {i}) * J.x(3, i);
+  const auto v = VectorNotation::of(J, {e});
+  REQUIRE(v.has_value());
+  const auto g = v->group({e}, false);
+  CHECK(coeff(g, "\\dot{x}\\cdot \\dddot{x}") == numeric(-1));
+  CHECK(coeff(g, "\\nabla U\\cdot \\dddot{x}") == numeric(2));
+  CHECK(GiNaC::expand(g.rest[0] - extra).is_zero());
+}
