@@ -207,7 +207,8 @@ void install(Derivation d, SymbolicUse use, MapStudy& study) {
       skip = fmt::format(
           "not derived by default: {} stages with coefficients cut to 40 digits{} take the "
           "engine a minute or more (yoshida6 on Hénon–Heiles: about 23 s, suzuki4 on Kepler: "
-          "about 50 s, yoshida6 on Kepler: over 5 minutes, on one core); --symbolic always runs "
+          "about 50 s, yoshida6 on Kepler: unfinished after 11 minutes, on one core); --symbolic "
+          "always runs "
           "it",
           d.stages, quick ? "" : ", on a Lagrangian that is not polynomial,");
     if (skip.empty() && use == SymbolicUse::automatic && d.cut_rule && d.dim > 1)
