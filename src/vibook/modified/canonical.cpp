@@ -172,7 +172,7 @@ std::string subscript(const std::string& s) {
 // The LaTeX of a symbol made without a TeX name (GiNaC then prints its name as it is, and
 // "q_k1" would read as q_k followed by 1): its letter, with its accent ("bbar" is b̄, "bhat" b̂)
 // or its midpoint index ("qm" is q_m), then its subscript in braces ("q0", "a11", "q_k1" is
-// q_{k+1}, "qm_1" is q_{m,1}). Any other name is printed as it is.
+// q_{k+1}, "qm_1" is q_{m,1}, "q0_1" is q_{0,1}). Any other name is printed as it is.
 std::string symbol_latex(const std::string& name) {
   static const std::regex digits(R"(^([A-Za-z]+?)([0-9]+)$)");
   static const std::regex letters(R"(^[A-Za-z]+$)");
@@ -189,6 +189,8 @@ std::string symbol_latex(const std::string& name) {
     sub = m[2].str();
   }
   std::string head;
+  if (!sub.empty() && std::regex_match(base, m, digits) && std::regex_match(m[1].str(), letters))
+    return m[1].str() + "_{" + m[2].str() + "," + sub + "}";  // "q0_1": q_{0,1}
   if (std::regex_match(base, m, accent))
     head = "\\" + m[2].str() + "{" + m[1].str() + "}";
   else if (std::regex_match(base, m, mid))

@@ -30,7 +30,7 @@ enum class Format { text, latex, python };
 /// text: GiNaC's syntax (`-1/12*U_11*v1^2`), parsed back by GiNaC to the same expression;
 /// python: SymPy source (`Rational(-1, 12)*U_11*v1**2`); latex: for MathJax, a symbol made
 /// without a TeX name written with its subscript (`q0` as \f$q_{0}\f$, `q_k1` as
-/// \f$q_{k+1}\f$, `qm_1` as \f$q_{m,1}\f$).
+/// \f$q_{k+1}\f$, `qm_1` as \f$q_{m,1}\f$, `q0_1` as \f$q_{0,1}\f$).
 std::string canonical_string(const ex& e, Format f = Format::text);
 
 /// The names the abstract functions' families print with in LaTeX on this thread, while an

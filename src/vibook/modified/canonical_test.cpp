@@ -38,3 +38,15 @@ TEST_CASE("canonical: LaTeX puts negative powers below the fraction bar") {
   CHECK(canonical_string(-x / (12 * GiNaC::pow(r, 3)), Format::latex) == "-\\frac{x}{12 |x|^{3}}");
   CHECK(canonical_string(GiNaC::pow(x, GiNaC::numeric(1, 2)), Format::latex) == "\\sqrt{x}");
 }
+
+TEST_CASE("canonical: LaTeX of symbols made without a TeX name, never their internal names") {
+  auto tex = [](const char* name) { return canonical_string(GiNaC::symbol(name), Format::latex); };
+  CHECK(tex("q0") == "q_{0}");
+  CHECK(tex("q_k1") == "q_{k+1}");
+  CHECK(tex("qm") == "q_{m}");
+  CHECK(tex("qm_1") == "q_{m,1}");
+  CHECK(tex("q0_1") == "q_{0,1}");  // the first point's first component (was printed q0_1)
+  CHECK(tex("q1_2") == "q_{1,2}");
+  CHECK(tex("bbar") == "\\bar{b}");
+  CHECK(tex("a11") == "a_{11}");
+}

@@ -591,7 +591,29 @@ claims::FormulaComparison compare(const Spec& spec, const std::vector<Case>& cas
     const Target& t = cases[0].target;
     std::vector<std::string> comps;
     if (t.series.empty()) {
-      for (const auto& e : t.exact) comps.push_back(readable_latex(e));
+      // an exact polynomial in h with two powers or more: collected by them, each coefficient by
+      // readable_latex
+      // (a screen of expanded terms otherwise: Shen & Sun's (4.4b) on a test force)
+      const ex h = cases[0].notation->jets().h();
+      for (const auto& e : t.exact) {
+        const ex x = GiNaC::expand(e);
+        int powers = 0;
+        if (x.has(h) && x.is_polynomial(h))
+          for (int k = 0; k <= x.degree(h); ++k) powers += x.coeff(h, k).is_zero() ? 0 : 1;
+        if (powers < 2) {  // one power of h (or none): as it is
+          comps.push_back(readable_latex(e));
+          continue;
+        }
+        std::string text;
+        for (int k = 0; k <= x.degree(h); ++k) {
+          const ex c = x.coeff(h, k);
+          if (c.is_zero()) continue;
+          if (!text.empty()) text += " + ";
+          if (k > 0) text += k == 1 ? std::string("h") : fmt::format("h^{{{}}}", k);
+          text += "\\Bigl(" + readable_latex(c) + "\\Bigr)";
+        }
+        comps.push_back(text);
+      }
       out.through = "exactly";
     } else {
       const auto& J = cases[0].notation->jets();
