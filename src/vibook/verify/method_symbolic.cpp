@@ -700,15 +700,21 @@ std::vector<std::pair<GiNaC::numeric, bool>> catalogue_rationals(const std::stri
 
 GiNaC::numeric composition_zero_below() { return kZeroBelow; }
 
-int galerkin_variational_order(const modified::ExactQuadrature& rule, const std::string& problem,
-                               int K, std::optional<GiNaC::numeric> zero_below) {
+namespace {
+
+// The engine's variational order, through h^{K+1}, of the discrete Lagrangian `make_dl` builds
+// on a test problem's jets, with L that problem's Lagrangian (the tests' route to the report's).
+int test_problem_variational_order(
+    const std::string& problem, int K, std::optional<GiNaC::numeric> zero_below,
+    const std::function<modified::SymbolicDL(const modified::SymbolicLagrangian&, int,
+                                             std::shared_ptr<modified::JetSpace>)>& make_dl) {
   const TestProblem* tp = find_problem(problem);
-  if (!tp) throw std::invalid_argument("galerkin_variational_order: no problem " + problem);
+  if (!tp) throw std::invalid_argument("variational order: no test problem " + problem);
   const int dim = static_cast<int>(tp->q0.size());
   const modified::SymbolicLagrangian L = test_problem_lagrangian(problem);
   std::lock_guard<std::mutex> lock(modified::ginac_mutex());
   auto J = std::make_shared<modified::JetSpace>(dim);
-  modified::Engine engine(modified::galerkin_dl(rule, L, J, "test"), K);
+  modified::Engine engine(make_dl(L, dim, J), K);
   std::vector<modified::ex> x, v;
   for (int i = 0; i < dim; ++i) {
     x.push_back(J->x(0, i));
@@ -718,28 +724,29 @@ int galerkin_variational_order(const modified::ExactQuadrature& rule, const std:
   return zero_below ? order_above(vo.defect, *zero_below) : vo.order;
 }
 
+}  // namespace
+
+int galerkin_variational_order(const modified::ExactQuadrature& rule, const std::string& problem,
+                               int K, std::optional<GiNaC::numeric> zero_below) {
+  return test_problem_variational_order(
+      problem, K, zero_below,
+      [&rule](const modified::SymbolicLagrangian& L, int, std::shared_ptr<modified::JetSpace> J) {
+        return modified::galerkin_dl(rule, L, std::move(J), "test");
+      });
+}
+
 int composition_variational_order(const std::string& base,
                                   const std::vector<std::pair<GiNaC::numeric, bool>>& stages,
                                   const std::string& problem, int K,
                                   std::optional<GiNaC::numeric> zero_below) {
-  const TestProblem* tp = find_problem(problem);
-  if (!tp) throw std::invalid_argument("composition_variational_order: no problem " + problem);
-  const int dim = static_cast<int>(tp->q0.size());
-  const modified::SymbolicLagrangian L = test_problem_lagrangian(problem);
   ExactStages st;
   for (const auto& [c, adjoint] : stages) st.emplace_back(c, adjoint);
-  std::lock_guard<std::mutex> lock(modified::ginac_mutex());
-  auto J = std::make_shared<modified::JetSpace>(dim);
-  modified::Engine engine(dim == 1 ? composition_dl<1>(base, st, L, J, "test")
-                                   : composition_dl<2>(base, st, L, J, "test"),
-                          K);
-  std::vector<modified::ex> x, v;
-  for (int i = 0; i < dim; ++i) {
-    x.push_back(J->x(0, i));
-    v.push_back(J->x(1, i));
-  }
-  const auto vo = engine.variational_order(modified::exact_rationals(L(x, v)));
-  return zero_below ? order_above(vo.defect, *zero_below) : vo.order;
+  return test_problem_variational_order(
+      problem, K, zero_below,
+      [&](const modified::SymbolicLagrangian& L, int dim, std::shared_ptr<modified::JetSpace> J) {
+        return dim == 1 ? composition_dl<1>(base, st, L, std::move(J), "test")
+                        : composition_dl<2>(base, st, L, std::move(J), "test");
+      });
 }
 
 // --- Shen & Sun 2025, Theorem 10, on an RKN tableau --------------------------------------------
