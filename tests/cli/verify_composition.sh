@@ -80,21 +80,21 @@ a, b = terms(one["defect"][2]), terms(two["defect"][2])
 assert a and {m: c / 4 for m, c in a.items()} == b, (a, b)
 PY
 # Catalogue coefficients that are cube roots (yoshida4) or known only numerically: derived with
-# the coefficients computed at 120 digits and cut to 40, a term whose every number is below 1e-20 counted as
+# the coefficients computed at 120 digits and cut to 30, a term whose every number is below 1e-20 counted as
 # zero (the method_symbolic doctest holds a coefficient off in its eleventh digit to 2). The
 # same coefficients on a first-order base are of variational order 1, and the verdict fails.
-case_ engine-40-digits 0 "" '^  derived +4 by the engine \(the coefficients of yoshida4 to 40 digits, a term with every number below 1e-20 counted as zero\): .*expected 4: yes' \
+case_ engine-30-digits 0 "" '^  derived +4 by the engine \(the coefficients of yoshida4 to 30 digits, a term with every number below 1e-20 counted as zero\): .*expected 4: yes' \
   -- --composition sv --coefficients yoshida4 --problem pendulum
-case_ engine-40-digits-hh 0 "" '^  derived +4 by the engine \(the coefficients of yoshida4 to 40 digits' \
+case_ engine-30-digits-hh 0 "" '^  derived +4 by the engine \(the coefficients of yoshida4 to 30 digits' \
   -- --composition sv --coefficients yoshida4 --problem henon-heiles
-case_ engine-40-digits-se 5 "order conditions,order,variational order,energy" \
-  '^  derived +1 by the engine \(the coefficients of yoshida4 to 40 digits.*expected 4: NO' \
+case_ engine-30-digits-se 5 "order conditions,order,variational order,energy" \
+  '^  derived +1 by the engine \(the coefficients of yoshida4 to 30 digits.*expected 4: NO' \
   -- --composition se --coefficients yoshida4 --problem pendulum --expected-order 4
 # Not derived by default, and said why: many stages or a Lagrangian that is not polynomial with
-# 40-digit coefficients (a minute or more), a base the engine does not compose; --symbolic never.
-case_ engine-numerical 0 "" '^  derived +not derived by default: 7 stages with coefficients cut to 40 digits take the engine a minute or more' \
+# 30-digit coefficients (a minute or more), a base the engine does not compose; --symbolic never.
+case_ engine-numerical 0 "" '^  derived +not derived by default: 7 stages with coefficients cut to 30 digits take the engine a minute or more' \
   -- --composition sv --coefficients yoshida6 --problem pendulum
-case_ engine-kepler-40 0 "" '^  derived +not derived by default: 3 stages with coefficients cut to 40 digits, on a Lagrangian that is not polynomial' \
+case_ engine-kepler-30 0 "" '^  derived +not derived by default: 3 stages with coefficients cut to 30 digits, on a Lagrangian that is not polynomial' \
   -- --composition sv --coefficients yoshida4
 case_ engine-vi1 0 "" '^  derived +not derived: the engine composes sv, midpoint, se and se-adjoint' \
   -- --composition vi1 --coefficients ruth3 --problem pendulum

@@ -32,7 +32,7 @@ struct ExactQuadrature {
 /// The s-node Gauss–Legendre (family "gauss", s = 1…3) or Gauss–Lobatto ("lobatto",
 /// s = 2…5) rule in closed form; std::nullopt for the others (Gauss with 4 nodes and beyond
 /// has nested radicals, on which the engine's zero test, exact over ℚ(√d), cannot be relied;
-/// `vibook verify` derives Gauss 4 on its nodes cut to 40 digits, verify/method_symbolic.hpp).
+/// `vibook verify` derives Gauss 4 on its nodes cut to 30 digits, verify/method_symbolic.hpp).
 /// The doctests check each rule against its defining equations: exact for polynomials of
 /// degree 2s − 1 (Gauss) or 2s − 3 (Lobatto, with the end points as nodes).
 std::optional<ExactQuadrature> exact_quadrature(const std::string& family, int s);

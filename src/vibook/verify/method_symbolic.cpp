@@ -136,7 +136,7 @@ GiNaC::numeric simplest_within(GiNaC::numeric x, const GiNaC::numeric& tol) {
 
 // A term of L_d − L_d^E derived from coefficients cut to finite precision, as the report shows
 // it: the terms whose number is below `below` left out, and each other number the simplest
-// fraction within 1e-25 of it relative (the cut moves the numbers near 1e-40 relative: the
+// fraction within 1e-25 of it relative (the cut moves the numbers near 1e-30 relative: the
 // Galerkin methods' true coefficients, rationals with small denominators, come back exactly).
 modified::ex shown_term(const modified::ex& e, const GiNaC::numeric& below) {
   using GiNaC::numeric;
@@ -195,27 +195,28 @@ void install(Derivation d, SymbolicUse use, MapStudy& study) {
           "polynomial, the engine takes minutes (gauss:3 on Kepler: about 2 minutes on 2 "
           "cores); --symbolic always runs it",
           K + 1, d.dim);
-    // Coefficients cut to 40 digits make every number long: by default only the short
+    // Coefficients cut to 30 digits make every number long: by default only the short
     // compositions on a polynomial Lagrangian (yoshida4 and suzuki4 on Hénon–Heiles)
     if (skip.empty() && use == SymbolicUse::automatic && d.long_digits && d.typed)
       skip =
-          "not derived by default: the stages of a typed L_d with coefficients cut to 40 digits "
+          "not derived by default: the stages of a typed L_d with coefficients cut to 30 digits "
           "can take the engine many minutes (yoshida4 on a typed midpoint rule with a "
           "position-dependent mass: over 10 minutes at 120 digits); --symbolic always runs it";
     else if (skip.empty() && use == SymbolicUse::automatic && d.long_digits &&
              (d.stages > 5 || !quick))
       skip = fmt::format(
-          "not derived by default: {} stages with coefficients cut to 40 digits{} take the "
-          "engine a minute or more (yoshida6 on Hénon–Heiles: about 23 s, suzuki4 on Kepler: "
-          "about 50 s, yoshida6 on Kepler: unfinished after 11 minutes, on one core); --symbolic "
+          "not derived by default: {} stages with coefficients cut to 30 digits{} take the "
+          "engine a minute or more (yoshida6 on Hénon–Heiles: about 16 s, suzuki4 on Kepler: "
+          "about 30 s, yoshida6 on Kepler: unfinished after 11 minutes at 40 digits, on one "
+          "core); --symbolic "
           "always runs "
           "it",
           d.stages, quick ? "" : ", on a Lagrangian that is not polynomial,");
     if (skip.empty() && use == SymbolicUse::automatic && d.cut_rule && d.dim > 1)
       skip = fmt::format(
-          "not derived by default: with the nodes cut to 40 digits the engine takes minutes in "
-          "{} dimensions (gauss:4 on Henon-Heiles: about 3.5 minutes on one core, on the "
-          "pendulum about 22 s); --symbolic always runs it",
+          "not derived by default: with the nodes cut to 30 digits the engine takes minutes in "
+          "{} dimensions (gauss:4 on Henon-Heiles: about 2 minutes on one core, on the "
+          "pendulum about 15 s); --symbolic always runs it",
           d.dim);
     if (!skip.empty()) {
       rep.line("  derived", skip);
@@ -354,14 +355,15 @@ GiNaC::numeric rational_of(const mpfr_real& x, int digits) {
 // Gauss 4 (nested radicals). They are computed at kCompositionDigits digits and the engine
 // takes each as the rational of its first kEngineDigits; a term of L_d − L_d^E whose every
 // number is below kZeroBelow then counts as zero. The threshold sits between two scales. The
-// cut leaves terms near 1e-40 (times the Lagrangian's own numbers), and the least precise
+// cut leaves terms near 1e-30 (times the Lagrangian's own numbers), and the least precise
 // catalogue entry, Kahan & Li's as published, has 26 digits, which leaves terms near 1e-27. A
 // composition coefficient off in its eleventh digit leaves terms near 1e-12 (the field audit's
-// A-WRONG-DIGIT), and the first true term of Gauss 5 (order 10, at h^11) has numbers near its
-// error constant (5!)^4/(11 (10!)^3), about 4e-13, times those of L. The engine's cost grows
+// A-WRONG-DIGIT), and the first true term of Gauss 4 (order 8, at h^9) has numbers from its
+// error constant (4!)^4/(9 (8!)^3) = 1/1778112000, about 5.6e-10, up (the pendulum's
+// cos(x) v^8 coefficient is exactly minus that constant). The engine's cost grows
 // with the numbers' length: Yoshida's sixth-order composition on Hénon–Heiles took 77 s at
-// 120 digits and takes 23 s at 40, with the same derived order and the same h^7 term.
-constexpr int kEngineDigits = 40;
+// 120 digits, 23 s at 40 and 16 s at 30, with the same derived order and the same h^7 term.
+constexpr int kEngineDigits = 30;
 const GiNaC::numeric kZeroBelow = GiNaC::numeric(1) / GiNaC::numeric(10).power(20);
 
 // A Galerkin rule without a closed form, as rationals: its nodes computed at kCompositionDigits
@@ -371,8 +373,8 @@ const GiNaC::numeric kZeroBelow = GiNaC::numeric(1) / GiNaC::numeric(10).power(2
 // exactly symmetric and exact on the polynomials of degree below s (up to s for odd s), and
 // only the higher moments that give Gauss its order carry the cut. Symmetry halves the terms
 // the cut leaves (the odd powers of h vanish exactly), and the engine's cost grows with their
-// number: gauss:4 on the pendulum took 103 s with independently cut nodes and weights, and
-// takes 22 s so.
+// number: gauss:4 on the pendulum took 103 s with independently cut nodes and weights (at 40
+// digits), and takes 22 s so (15 s at 30 digits).
 
 }  // namespace
 

@@ -45,7 +45,7 @@ void derive_galerkin_variational_order(const MethodSpec& spec, int dim,
                                        MapStudy& study);
 
 /// A Galerkin rule without a closed form (Gauss with four nodes or more) as the engine takes it:
-/// the nodes computed at 120 digits and cut to 40, placed symmetrically about 1/2, the weights
+/// the nodes computed at 120 digits and cut to 30, placed symmetrically about 1/2, the weights
 /// their interpolatory ones in exact arithmetic (method_symbolic.cpp says why the cut and the
 /// threshold galerkin_zero_below() separate rounding from a defect).
 modified::ExactQuadrature cut_quadrature(const Quadrature& rule);
@@ -64,7 +64,7 @@ void derive_composition_variational_order(const CompositionSpec& spec, const std
                                           SymbolicUse use, MapStudy& study);
 
 /// A catalogue entry's coefficients as the engine takes them: computed at kCompositionDigits
-/// digits, the rationals of their first 40 (Ruth's exactly), with the adjoint marks. A composition
+/// digits, the rationals of their first 30 (Ruth's exactly), with the adjoint marks. A composition
 /// of these has terms of L_d − L_d^E near the coefficients' rounding; the derivation counts a term
 /// with every number below kCompositionZeroBelow as zero and says so in the report.
 std::vector<std::pair<GiNaC::numeric, bool>> catalogue_rationals(const std::string& name);
