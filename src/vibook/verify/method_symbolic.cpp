@@ -374,9 +374,9 @@ const GiNaC::numeric kZeroBelow = GiNaC::numeric(1) / GiNaC::numeric(10).power(2
 // those nodes' interpolatory ones, b_i = ∫_0^1 ℓ_i(τ) dτ, in exact arithmetic. The rule is then
 // exactly symmetric and exact on the polynomials of degree below s (up to s for odd s), and
 // only the higher moments that give Gauss its order carry the cut. Symmetry halves the terms
-// the cut leaves (the odd powers of h vanish exactly), and the engine's cost grows with their
-// number: gauss:4 on the pendulum took 103 s with independently cut nodes and weights (at 40
-// digits), and takes 22 s so (15 s at 30 digits).
+// the cut leaves (the even powers of h vanish exactly, as for a symmetric method), and the engine's
+// cost grows with their number: gauss:4 on the pendulum took 103 s with independently cut nodes and
+// weights (at 40 digits), and takes 22 s so (15 s at 30 digits).
 
 }  // namespace
 
