@@ -1,6 +1,7 @@
 // Engine expressions in vector notation (Shen & Sun 2025, §4): see vector_notation.hpp.
 #include "vibook/modified/vector_notation.hpp"
 
+#include <functional>
 #include <set>
 #include <sstream>
 #include <stdexcept>
@@ -88,8 +89,8 @@ std::optional<VectorNotation> VectorNotation::of(const JetSpace& J, const std::v
   const int n = J.dofs();
   if (n < 2) return std::nullopt;
   std::set<int> families;
-  bool p_occurs = false, v_occurs = false, a_occurs = false;
-  std::set<int> higher;  // jet orders from 3 on (x⃛ in Shen & Sun's Theorem 11, …)
+  bool p_occurs = false;
+  std::set<int> orders;  // the derivatives of x that occur: ẋ 1, ẍ 2, x⃛ 3 (Theorem 11), …
   for (const ex& e : exprs)
     for (auto it = e.preorder_begin(); it != e.preorder_end(); ++it) {
       int f = 0;
@@ -98,10 +99,8 @@ std::optional<VectorNotation> VectorNotation::of(const JetSpace& J, const std::v
       if (GiNaC::is_a<GiNaC::function>(*it)) return std::nullopt;  // an abstract call left
       for (int i = 0; i < n; ++i) {
         p_occurs = p_occurs || it->is_equal(J.p(i));
-        v_occurs = v_occurs || (J.created_order() >= 1 && it->is_equal(J.x(1, i)));
-        a_occurs = a_occurs || (J.created_order() >= 2 && it->is_equal(J.x(2, i)));
-        for (int k = 3; k <= J.created_order(); ++k)
-          if (it->is_equal(J.x(k, i))) higher.insert(k);
+        for (int k = 1; k <= J.created_order(); ++k)
+          if (it->is_equal(J.x(k, i))) orders.insert(k);
       }
     }
   if (families.empty()) return std::nullopt;
@@ -119,26 +118,20 @@ std::optional<VectorNotation> VectorNotation::of(const JetSpace& J, const std::v
     v.pieces_.assign(families.begin(), families.end());
     v.whole_tex_ = "\\phi";
   }
-  if (v_occurs) {
-    v.velocity_tex_.emplace_back("\\dot{x}");
+  // ẋ and ẍ (the meshed Lagrangians' ẍ: Shen & Sun (4.18), (4.25)), then p, then the higher
+  // derivatives: the invariants of ẋ, ẍ and p keep their order
+  auto add = [&](std::string tex, const std::function<ex(int)>& component) {
+    v.velocity_tex_.push_back(std::move(tex));
     v.velocity_.emplace_back();
-    for (int i = 0; i < n; ++i) v.velocity_.back().push_back(J.x(1, i));
-  }
-  if (a_occurs) {  // the meshed Lagrangians' ẍ (Shen & Sun (4.18), (4.25))
-    v.velocity_tex_.emplace_back("\\ddot{x}");
-    v.velocity_.emplace_back();
-    for (int i = 0; i < n; ++i) v.velocity_.back().push_back(J.x(2, i));
-  }
-  if (p_occurs) {
-    v.velocity_tex_.emplace_back("p");
-    v.velocity_.emplace_back();
-    for (int i = 0; i < n; ++i) v.velocity_.back().push_back(J.p(i));
-  }
-  for (int k : higher) {  // after p: the invariants of ẋ, ẍ and p keep their order
-    v.velocity_tex_.emplace_back(k == 3 ? std::string("\\dddot{x}") : fmt::format("x^{{({})}}", k));
-    v.velocity_.emplace_back();
-    for (int i = 0; i < n; ++i) v.velocity_.back().push_back(J.x(k, i));
-  }
+    for (int i = 0; i < n; ++i) v.velocity_.back().push_back(component(i));
+  };
+  for (int k : orders)
+    if (k <= 2) add(k == 1 ? "\\dot{x}" : "\\ddot{x}", [&](int i) { return J.x(k, i); });
+  if (p_occurs) add("p", [&](int i) { return J.p(i); });
+  for (int k : orders)
+    if (k > 2)
+      add(k == 3 ? std::string("\\dddot{x}") : fmt::format("x^{{({})}}", k),
+          [&](int i) { return J.x(k, i); });
   return v;
 }
 

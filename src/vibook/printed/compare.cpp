@@ -132,6 +132,19 @@ std::string readable_latex(const ex& e) {
   return text.size() < expanded.size() ? text : expanded;
 }
 
+// Σ_k c[k] h^k, each power that does not vanish with its coefficient by readable_latex in
+// \Bigl(…\Bigr), as format_series prints a series; "0" when every coefficient vanishes.
+std::string by_powers_of_h(const std::vector<ex>& c) {
+  std::string text;
+  for (std::size_t k = 0; k < c.size(); ++k) {
+    if (c[k].is_zero()) continue;
+    if (!text.empty()) text += " + ";
+    if (k > 0) text += k == 1 ? std::string("h") : fmt::format("h^{{{}}}", k);
+    text += "\\Bigl(" + readable_latex(c[k]) + "\\Bigr)";
+  }
+  return text.empty() ? std::string("0") : text;
+}
+
 // Where printed and ours differ, in a form a reader can take in: both sides when they are
 // short; else their difference when that is short; else both evaluated at one point (every
 // symbol a distinct small rational) when they are numbers there; else only their sizes.
@@ -591,28 +604,17 @@ claims::FormulaComparison compare(const Spec& spec, const std::vector<Case>& cas
     const Target& t = cases[0].target;
     std::vector<std::string> comps;
     if (t.series.empty()) {
-      // an exact polynomial in h with two powers or more: collected by them, each coefficient by
-      // readable_latex
-      // (a screen of expanded terms otherwise: Shen & Sun's (4.4b) on a test force)
+      // an exact polynomial in h with two powers or more: collected by them (a screen of
+      // expanded terms otherwise: Shen & Sun's (4.4b) on a test force)
       const ex h = cases[0].notation->jets().h();
       for (const auto& e : t.exact) {
         const ex x = GiNaC::expand(e);
-        int powers = 0;
+        std::vector<ex> c;
         if (x.has(h) && x.is_polynomial(h))
-          for (int k = 0; k <= x.degree(h); ++k) powers += x.coeff(h, k).is_zero() ? 0 : 1;
-        if (powers < 2) {  // one power of h (or none): as it is
-          comps.push_back(readable_latex(e));
-          continue;
-        }
-        std::string text;
-        for (int k = 0; k <= x.degree(h); ++k) {
-          const ex c = x.coeff(h, k);
-          if (c.is_zero()) continue;
-          if (!text.empty()) text += " + ";
-          if (k > 0) text += k == 1 ? std::string("h") : fmt::format("h^{{{}}}", k);
-          text += "\\Bigl(" + readable_latex(c) + "\\Bigr)";
-        }
-        comps.push_back(text);
+          for (int k = 0; k <= x.degree(h); ++k) c.push_back(x.coeff(h, k));
+        const auto powers =
+            std::count_if(c.begin(), c.end(), [](const ex& y) { return !y.is_zero(); });
+        comps.push_back(powers < 2 ? readable_latex(e) : by_powers_of_h(c));
       }
       out.through = "exactly";
     } else {
@@ -641,18 +643,8 @@ claims::FormulaComparison compare(const Spec& spec, const std::vector<Case>& cas
           out.ours = vn->vector_series(field);
         }
       }
-      // Each power of h as format_series prints it, its coefficient by readable_latex.
-      for (const auto& c : series) {
-        std::string text;
-        for (std::size_t k = 0; k < c.size(); ++k) {
-          if (c[k].is_zero()) continue;
-          if (!text.empty()) text += " + ";
-          if (k > 0) text += k == 1 ? std::string("h") : fmt::format("h^{{{}}}", k);
-          text += "\\Bigl(" + readable_latex(c[k]) + "\\Bigr)";
-        }
-        comps.push_back((text.empty() ? std::string("0") : text) +
-                        fmt::format(" + \\mathcal{{O}}(h^{{{}}})", c.size()));
-      }
+      for (const auto& c : series)
+        comps.push_back(by_powers_of_h(c) + fmt::format(" + \\mathcal{{O}}(h^{{{}}})", c.size()));
     }
     if (out.ours.empty())
       out.ours = comps.size() == 1
