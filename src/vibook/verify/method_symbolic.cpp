@@ -210,9 +210,7 @@ void install(Derivation d, SymbolicUse use, MapStudy& study) {
           "not derived by default: {} stages with coefficients cut to 30 digits{} take the "
           "engine a minute or more (yoshida6 on Hénon–Heiles: about 16 s, suzuki4 on Kepler: "
           "about 30 s, yoshida6 on Kepler: unfinished after 11 minutes at 40 digits, on one "
-          "core); --symbolic "
-          "always runs "
-          "it",
+          "core); --symbolic always runs it",
           d.stages, quick ? "" : ", on a Lagrangian that is not polynomial,");
     if (skip.empty() && use == SymbolicUse::automatic && d.cut_rule && d.dim > 1)
       skip = fmt::format(
@@ -402,8 +400,6 @@ modified::ExactQuadrature cut_quadrature(const Quadrature& rule) {
   }
   return q;
 }
-
-GiNaC::numeric galerkin_zero_below() { return kZeroBelow; }
 
 void derive_galerkin_variational_order(const MethodSpec& spec, int dim,
                                        modified::SymbolicLagrangian L, SymbolicUse use,

@@ -47,10 +47,8 @@ void derive_galerkin_variational_order(const MethodSpec& spec, int dim,
 /// A Galerkin rule without a closed form (Gauss with four nodes or more) as the engine takes it:
 /// the nodes computed at 120 digits and cut to 30, placed symmetrically about 1/2, the weights
 /// their interpolatory ones in exact arithmetic (method_symbolic.cpp says why the cut and the
-/// threshold galerkin_zero_below() separate rounding from a defect).
+/// threshold composition_zero_below() separate rounding from a defect).
 modified::ExactQuadrature cut_quadrature(const Quadrature& rule);
-/// 1e-20, the threshold a derivation on cut_quadrature counts a term below as zero.
-GiNaC::numeric galerkin_zero_below();
 /// The variational order the engine derives for the Galerkin method of `rule` on a test
 /// problem's Lagrangian, through h^{K+1}: the first k whose term of L_d − L_d^E has a number at
 /// or above `zero_below` (any nonzero number when unset); −1 when there is none. For tests.
@@ -68,7 +66,9 @@ void derive_composition_variational_order(const CompositionSpec& spec, const std
 /// of these has terms of L_d − L_d^E near the coefficients' rounding; the derivation counts a term
 /// with every number below kCompositionZeroBelow as zero and says so in the report.
 std::vector<std::pair<GiNaC::numeric, bool>> catalogue_rationals(const std::string& name);
-/// 1e-20: the least precise catalogue entry (Kahan & Li's, as published) has 26 digits.
+/// 1e-20, the threshold for every coefficient cut to finite precision (the catalogue's and
+/// cut_quadrature's): the least precise catalogue entry (Kahan & Li's, as published) has 26
+/// digits.
 GiNaC::numeric composition_zero_below();
 
 /// The variational order the engine derives for the composition of `base` (sv, midpoint, se,

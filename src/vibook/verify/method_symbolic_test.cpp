@@ -92,7 +92,7 @@ TEST_CASE(
       CHECK(abs(moment(q, k)) < tiny);  // Gauss's own moments: the 30-digit cut
   }
   // nothing through h^5 on the pendulum with the threshold (the cut leaves terms near 1e-34)
-  CHECK(galerkin_variational_order(q, "pendulum", 4, galerkin_zero_below()) == -1);
+  CHECK(galerkin_variational_order(q, "pendulum", 4, composition_zero_below()) == -1);
   // the outer nodes moved by 1e-12 (symmetrically, weights kept): the moment of degree 2 is off
   // by about 1e-13, which L_d - L_d^E shows at h^3 (variational order 2); the threshold must
   // not hide it
@@ -100,6 +100,6 @@ TEST_CASE(
   const numeric delta = numeric(1) / numeric(10).power(12);
   wrong.c[0] = wrong.c[0] + delta;
   wrong.c[3] = wrong.c[3] - delta;
-  const int r = galerkin_variational_order(wrong, "pendulum", 4, galerkin_zero_below());
+  const int r = galerkin_variational_order(wrong, "pendulum", 4, composition_zero_below());
   CHECK(r == 2);
 }
