@@ -62,6 +62,15 @@ std::vector<double> parse_list(const std::string& arg, const std::string& text) 
   return out;
 }
 
+std::vector<double> parse_state(const std::string& arg, const std::string& text,
+                                const std::vector<double>& dflt, const std::string& why) {
+  std::vector<double> v = text.empty() ? dflt : parse_list(arg, text);
+  require_argument(v.size() == dflt.size(), arg,
+                   fmt::format("has {} components; {}", v.size(), why));
+  for (double x : v) require_argument(std::isfinite(x), arg, "must be finite");
+  return v;
+}
+
 std::vector<double> parse_step_list(const std::string& arg, const std::string& text, double t_end,
                                     int max_steps_log10) {
   std::vector<double> hs = parse_list(arg, text);

@@ -15,6 +15,11 @@ long long parse_integer(const std::string& arg, const std::string& text);
 std::vector<double> parse_list(const std::string& arg, const std::string& text);
 /// The comma-separated items as text, none of them empty (parse_list's split).
 std::vector<std::string> split_list(const std::string& arg, const std::string& text);
+/// An initial state, --q0 or --p0: `text` as a list of `dflt.size()` finite numbers, or `dflt`
+/// when it is empty; otherwise "ARG has K components; WHY" (`why`: "the system has 2 degrees of
+/// freedom") or "ARG must be finite".
+std::vector<double> parse_state(const std::string& arg, const std::string& text,
+                                const std::vector<double>& dflt, const std::string& why);
 /// The step sizes of an order study: at least 3, distinct, each in (T/10^max_steps_log10, T].
 std::vector<double> parse_step_list(const std::string& arg, const std::string& text, double t_end,
                                     int max_steps_log10);

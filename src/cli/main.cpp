@@ -1,12 +1,8 @@
 // The `vibook` command: list, figure, figures, claims, run.
-#include <sys/stat.h>
-
 #include <csignal>
 #include <cstdio>
 #include <filesystem>
-#include <fstream>
 #include <iostream>
-#include <map>
 #include <string_view>
 #include <system_error>
 #include <vector>
@@ -16,14 +12,11 @@
 #include <nlohmann/json.hpp>
 
 #include "cli.hpp"
-#include "signals.hpp"
 #include "vibook/claims/ledger.hpp"
 #include "vibook/claims/provenance.hpp"
 #include "vibook/core/errors.hpp"
 #include "vibook/core/output_file.hpp"
-#include "vibook/core/parallel.hpp"
 #include "vibook/figures/registry.hpp"
-#include "vibook/plot/gnuplot.hpp"
 #include "vibook/printed/papers.hpp"
 
 namespace fs = std::filesystem;
@@ -46,76 +39,12 @@ int cmd_list() {
   fmt::print("\nCLAIMS (their status as measured now: `vibook claims`)\n");
   for (const auto& c : claims::catalogue())
     fmt::print("  {:<8} {:<3} {:<14} {}\n", c.id, c.paper, c.where, c.title);
-  return cli::kOk;
+  return kOk;
 }
 
-void ensure_writable_dir(const fs::path& dir, const char* arg = "--out") {
-  std::error_code ec;
-  // The levels this call creates are recorded: a signal before anything is written there
-  // removes them again (they are still empty), so an interrupted command leaves no trace.
-  std::vector<fs::path> created;
-  for (fs::path p = fs::absolute(dir, ec).lexically_normal(); !p.empty() && !fs::exists(p, ec);
-       p = p.parent_path()) {
-    created.push_back(p);
-    if (p == p.parent_path()) break;
-  }
-  fs::create_directories(dir, ec);
-  if (ec || !fs::is_directory(dir)) {
-    throw ArgumentError(arg, fmt::format("cannot create directory '{}'", dir.string()));
-  }
-  for (auto it = created.rbegin(); it != created.rend(); ++it) track_created_directory(*it);
-  const fs::path probe = dir / ".vibook-write-test";
-  std::ofstream f(probe);
-  if (!f) throw ArgumentError(arg, fmt::format("directory '{}' is not writable", dir.string()));
-  f.close();
-  fs::remove(probe, ec);
-}
-
-int cmd_figures(std::vector<std::string> ids, const fs::path& out) {
-  std::vector<const figures::Check*> todo;
-  if (ids.empty()) {
-    for (const auto& c : figures::registry()) {
-      if (c.is_figure) todo.push_back(&c);
-    }
-    // A long study without a figure (field-audit-galerkin) is a check: `vibook claims` runs it.
-    if (figures::long_studies_enabled())
-      for (const auto& c : figures::long_studies())
-        if (c.is_figure) todo.push_back(&c);
-  } else {
-    for (const auto& id : ids) {
-      const auto* c = figures::find(id);
-      if (c && !c->is_figure)
-        throw ArgumentError("ID", fmt::format("'{}' is a check without a figure: `vibook claims "
-                                              "--check {}` runs it",
-                                              id, id));
-      if (!c) throw ArgumentError("ID", fmt::format("unknown figure '{}' (see `vibook list`)", id));
-      if (std::find(todo.begin(), todo.end(), c) != todo.end())
-        throw ArgumentError("ID", fmt::format("'{}' is given twice", id));
-      todo.push_back(c);
-    }
-  }
-  ensure_writable_dir(out);
-  // Before any work: --out itself must not be a symbolic link (followed silently, it would
-  // write elsewhere), and OUT/ID, where it exists, must be a directory.
-  {
-    struct stat st {};
-    std::string bare = out.string();  // "link/" would follow the link
-    while (bare.size() > 1 && bare.back() == '/') bare.pop_back();
-    if (::lstat(bare.c_str(), &st) == 0 && S_ISLNK(st.st_mode))
-      throw ArgumentError(
-          "--out", "'" + out.string() + "' is a symbolic link; give the directory it points to");
-    for (const auto* c : todo) {
-      const fs::path d = out / c->id;
-      if (::lstat(d.c_str(), &st) == 0 && !S_ISDIR(st.st_mode))
-        throw ArgumentError(
-            "--out", "'" + d.string() + "' exists and is not a directory; move it away first");
-    }
-  }
-  // Figures are independent: one thread per figure, at most one per core.
-  std::vector<figures::FigureOutput> outputs(todo.size());
-  parallel_for(todo.size(), 0,
-               [&](std::size_t i) { outputs[i] = figures::make_figure(*todo[i], out); });
-  int rc = cli::kOk;
+int cmd_figures(const std::vector<std::string>& ids, const fs::path& out) {
+  const auto outputs = figures::make_figures(figures::select_figures(ids, "ID"), out, "--out");
+  int rc = kOk;
   for (const auto& o : outputs) {
     for (const auto& r : o.results) {
       fmt::print("{:<16} {:<8} {}\n", o.id, r.id, claims::to_string(r.status));
@@ -124,8 +53,8 @@ int cmd_figures(std::vector<std::string> ids, const fs::path& out) {
       fmt::print("{:<16} wrote {}/{{{}.svg,{}.png,claims.json,*.csv}}\n", o.id, o.dir.string(),
                  o.id, o.id);
     } else {
-      vibook::cli::eprint(fmt::format("vibook: {}: not rendered: {}\n", o.id, o.render_error));
-      rc = cli::kFailure;
+      vibook::eprint(fmt::format("vibook: {}: not rendered: {}\n", o.id, o.render_error));
+      rc = kFailure;
     }
   }
   return rc;
@@ -142,22 +71,9 @@ int cmd_claims(bool json, const std::string& json_out, const std::string& html_d
     fdir = figures_dir;
   }
   if (!json_out.empty()) check_output_path(json_out, "--json-out", false);
-  if (!html_dir.empty()) ensure_writable_dir(html_dir, "--html-dir");
+  if (!html_dir.empty()) ensure_output_directory(html_dir, "--html-dir");
   // --check ID: only those checks run; every other claim stays pending in this ledger.
-  std::vector<const figures::Check*> chosen;
-  for (const auto& id : only) {
-    const auto* c = figures::find(id);
-    if (!c)
-      throw ArgumentError("--check", fmt::format("unknown check '{}' (see `vibook list`)", id));
-    chosen.push_back(c);
-  }
-  claims::Ledger ledger;
-  if (only.empty()) {
-    ledger = figures::measure_all(0, fdir);
-  } else {
-    for (const auto& rs : figures::run_checks(chosen))
-      for (const auto& r : rs) ledger.record(r);
-  }
+  const claims::Ledger ledger = figures::measure(only, fdir, "--check");
   // What the ledger was measured with (the commit as given, the compiler, the libraries).
   nlohmann::json js = ledger.to_json();
   js["provenance"] = claims::provenance(commit);
@@ -169,7 +85,7 @@ int cmd_claims(bool json, const std::string& json_out, const std::string& html_d
     std::cout << js.dump(2) << '\n';
   else
     std::cout << ledger.to_table();
-  return cli::kOk;
+  return kOk;
 }
 
 // `vibook displays`: the papers' displayed formulas as vibook finds them in their text (and,
@@ -184,40 +100,14 @@ int cmd_displays(const std::vector<std::string>& papers, bool with_inline, bool 
       throw ArgumentError("--paper", fmt::format("'{}' is not a paper (S, V or SS)", k));
     }
   }
-  if (which.empty()) which = {printed::Paper::S, printed::Paper::V, printed::Paper::SS};
   if (!json_out.empty()) check_output_path(json_out, "--json-out", false);
-  nlohmann::json out = nlohmann::json::array();
-  std::string table;
-  for (printed::Paper p : which) {
-    std::vector<const printed::Display*> all;
-    for (const auto& d : printed::displays(p)) all.push_back(&d);
-    if (with_inline)
-      for (const auto& d : printed::inline_formulas(p)) all.push_back(&d);
-    for (const auto* d : all) {
-      out.push_back({{"paper", std::string(printed::key(p))},
-                     {"id", d->id()},
-                     {"label", d->label()},
-                     {"place", d->place()},
-                     {"number", d->number},
-                     {"line", d->line},
-                     {"section", d->section},
-                     {"context", d->context},
-                     {"inline", d->inline_math},
-                     {"latex", d->latex}});
-      std::string head = d->latex.substr(0, 70);
-      for (auto& ch : head)
-        if (ch == '\n') ch = ' ';
-      table += fmt::format("{:<3} {:<8} {:<40.40} {}{}\n", printed::key(p), d->id(),
-                           d->section + (d->context.empty() ? "" : " / " + d->context), head,
-                           d->latex.size() > 70 ? "…" : "");
-    }
-  }
-  if (!json_out.empty()) write_output_file(json_out, out.dump(2) + "\n", "--json-out");
+  const printed::DisplayListing listing = printed::list_displays(which, with_inline);
+  if (!json_out.empty()) write_output_file(json_out, listing.json, "--json-out");
   if (json)
-    std::cout << out.dump(2) << '\n';
+    std::cout << listing.json;
   else if (json_out.empty())
-    std::cout << table;
-  return cli::kOk;
+    std::cout << listing.table;
+  return kOk;
 }
 
 // The subcommands, for the message about an unknown one.
@@ -234,33 +124,6 @@ std::string& command_line_storage() {
 }
 }  // namespace
 const std::string& command_line() { return command_line_storage(); }
-std::string one_line(const std::string& text) {
-  // A progress line (carriage return, escape) is drawn as it is.
-  if (text.empty() || text[0] == '\r' || text[0] == '\033') return text;
-  const bool newline = text.back() == '\n';
-  std::string body = text.substr(0, text.size() - (newline ? 1 : 0));
-  for (char& c : body)
-    if (c == '\n' || c == '\r' || c == '\t') c = ' ';
-  if (body.size() > kMaxMessage) {
-    // The beginning (what failed, which argument) and the end (why) are kept, the middle (an
-    // echoed argument, a state) is cut, at character boundaries (not inside a UTF-8
-    // sequence), and the cut says so.
-    std::size_t head = 150, tail = body.size() - 120;
-    while (head > 0 && (static_cast<unsigned char>(body[head]) & 0xC0) == 0x80) --head;
-    while (tail < body.size() && (static_cast<unsigned char>(body[tail]) & 0xC0) == 0x80) ++tail;
-    body = body.substr(0, head) + fmt::format(" [... {} characters cut ...] ", tail - head) +
-           body.substr(tail);
-  }
-  return newline ? body + '\n' : body;
-}
-
-void eprint(const std::string& message) {
-  const std::string text = one_line(message);
-  // fwrite on a closed descriptor sets the error flag and returns; nothing is thrown.
-  (void)std::fwrite(text.data(), 1, text.size(), stderr);
-  (void)std::fflush(stderr);
-  std::clearerr(stderr);
-}
 void set_command_line(int argc, char** argv) {
   std::string s = "vibook";
   for (int i = 1; i < argc; ++i) {
@@ -285,8 +148,8 @@ int help_exit(int rc) {
   try {
     vibook::check_standard_output();
   } catch (const std::exception& e) {
-    vibook::cli::eprint(std::string("vibook: I/O error: ") + e.what() + "\n");
-    return vibook::cli::kIo;
+    vibook::eprint(std::string("vibook: I/O error: ") + e.what() + "\n");
+    return vibook::kIo;
   }
   return rc;
 }
@@ -295,7 +158,7 @@ int main(int argc, char** argv) {
   // A closed pipe (`vibook … | head -1`) is a write error, status 4, not death by SIGPIPE.
   std::signal(SIGPIPE, SIG_IGN);
   // SIGINT, SIGTERM, SIGHUP: temporaries removed, status 128 + N (before any thread starts).
-  vibook::cli::start_signal_thread();
+  vibook::start_signal_thread();
   vibook::cli::set_command_line(argc, argv);
   CLI::App app{
       "vibook — variational integrators, checked against their papers.\n"
@@ -360,11 +223,11 @@ int main(int argc, char** argv) {
     bool known = false;
     for (const char* c : kCommands) known = known || word == c;
     if (!known) {
-      vibook::cli::eprint(fmt::format(
+      vibook::eprint(fmt::format(
           "vibook: error: unknown command '{}' (commands: list, figure, figures, claims, "
           "run, modified, verify, displays; see `vibook --help`)\n",
           word));
-      return cli::kBadArgument;
+      return kBadArgument;
     }
     // An unknown option is named before CLI11 would complain about a missing required one.
     CLI::App* sub = app.get_subcommand(std::string(word));
@@ -382,16 +245,16 @@ int main(int argc, char** argv) {
           prev.find('=') == std::string::npos && sub->get_option_no_throw(prev) != nullptr;
       const std::string shown = name.size() > 60 ? name.substr(0, 60) + "..." : name;
       if (looks_like_value) {
-        vibook::cli::eprint(fmt::format(
+        vibook::eprint(fmt::format(
             "vibook: error: {}: its value '{}' begins with '-' and was read as an option; write "
             "{}='{}'\n",
             prev, shown, prev, shown));
-        return cli::kBadArgument;
+        return kBadArgument;
       }
-      vibook::cli::eprint(fmt::format(
+      vibook::eprint(fmt::format(
           "vibook: error: unknown option '{}' of `vibook {}` (see `vibook {} --help`)\n", shown,
           word, word));
-      return cli::kBadArgument;
+      return kBadArgument;
     }
   }
   try {
@@ -407,12 +270,12 @@ int main(int argc, char** argv) {
     for (auto& c : msg) {
       if (c == '\n') c = ' ';
     }
-    vibook::cli::eprint(fmt::format("vibook: error: {} (see `vibook --help`)\n", msg));
-    return cli::kBadArgument;
+    vibook::eprint(fmt::format("vibook: error: {} (see `vibook --help`)\n", msg));
+    return kBadArgument;
   }
 
   try {
-    int rc = cli::kOk;
+    int rc = kOk;
     if (app.got_subcommand("list"))
       rc = cmd_list();
     else if (app.got_subcommand("figure"))
@@ -433,22 +296,22 @@ int main(int argc, char** argv) {
     check_standard_output();
     return rc;
   } catch (const ArgumentError& e) {
-    vibook::cli::eprint(fmt::format("vibook: error: {}\n", e.what()));
-    return cli::kBadArgument;
+    vibook::eprint(fmt::format("vibook: error: {}\n", e.what()));
+    return kBadArgument;
   } catch (const Interrupted& e) {
-    vibook::cli::eprint(fmt::format("vibook: {}\n", e.what()));
+    vibook::eprint(fmt::format("vibook: {}\n", e.what()));
     return 128 + e.signal();
   } catch (const NumericalError& e) {
-    vibook::cli::eprint(fmt::format("vibook: numerical failure: {}\n", e.what()));
-    return cli::kNumerical;
+    vibook::eprint(fmt::format("vibook: numerical failure: {}\n", e.what()));
+    return kNumerical;
   } catch (const IoError& e) {
-    vibook::cli::eprint(fmt::format("vibook: I/O error: {}\n", e.what()));
-    return cli::kIo;
+    vibook::eprint(fmt::format("vibook: I/O error: {}\n", e.what()));
+    return kIo;
   } catch (const std::system_error& e) {  // fmt's and std::filesystem's write errors
-    vibook::cli::eprint(fmt::format("vibook: I/O error: {}\n", e.what()));
-    return cli::kIo;
+    vibook::eprint(fmt::format("vibook: I/O error: {}\n", e.what()));
+    return kIo;
   } catch (const std::exception& e) {
-    vibook::cli::eprint(fmt::format("vibook: error: {}\n", e.what()));
-    return cli::kFailure;
+    vibook::eprint(fmt::format("vibook: error: {}\n", e.what()));
+    return kFailure;
   }
 }

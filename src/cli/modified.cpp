@@ -16,7 +16,6 @@
 #include "vibook/modified/command.hpp"
 #include "vibook/modified/engine.hpp"
 #include "vibook/verify/expression.hpp"
-#include "watchdog.hpp"
 
 namespace vibook::cli {
 

@@ -9,7 +9,6 @@
 
 #include "args.hpp"
 #include "cli.hpp"
-#include "signals.hpp"
 #include "vibook/core/errors.hpp"
 #include "vibook/core/output_file.hpp"
 #include "vibook/core/precision.hpp"

@@ -18,18 +18,13 @@
 
 #include "args.hpp"
 #include "cli.hpp"
-#include "verify_composition.hpp"
-#include "verify_constrained.hpp"
-#include "verify_method.hpp"
-#include "verify_stepper.hpp"
-#include "verify_tableau.hpp"
-#include "verify_typed.hpp"
+#include "verify_map.hpp"
+#include "verify_routes.hpp"
 #include "vibook/core/output_file.hpp"
 #include "vibook/core/progress.hpp"
 #include "vibook/modified/engine.hpp"
 #include "vibook/verify/expression.hpp"
 #include "vibook/verify/ld_study.hpp"
-#include "watchdog.hpp"
 
 namespace vibook::cli {
 
@@ -56,17 +51,10 @@ void check_report(const VerifyOptions& o) {
 verify::LdSettings check(const VerifyOptions& o, const verify::TypedDiscreteLagrangian& dl) {
   verify::LdSettings p;
   p.dim = dl.dim();
-  auto vector_or = [&](const std::string& arg, const std::string& text, double fill) {
-    std::vector<double> v = text.empty() ? std::vector<double>(p.dim, fill) : parse_list(arg, text);
-    if (static_cast<int>(v.size()) != p.dim)
-      throw ArgumentError(arg, fmt::format("has {} components; the expressions are {}-dimensional",
-                                           v.size(), p.dim));
-    for (double x : v)
-      if (!std::isfinite(x)) throw ArgumentError(arg, "must be finite");
-    return v;
-  };
-  p.q0 = vector_or("--q0", o.q0, 0.1);
-  p.p0 = vector_or("--p0", o.p0, 0.1);
+  const std::vector<double> dflt(static_cast<std::size_t>(p.dim), 0.1);
+  const std::string why = fmt::format("the expressions are {}-dimensional", p.dim);
+  p.q0 = parse_state("--q0", o.q0, dflt, why);
+  p.p0 = parse_state("--p0", o.p0, dflt, why);
   p.t_end = parse_number("--t-end", o.t_end);
   if (!(p.t_end > 0) || !std::isfinite(p.t_end) || p.t_end > 1e6)
     throw ArgumentError("--t-end", "must lie in (0, 1e6]");
@@ -105,7 +93,6 @@ verify::LdSettings check(const VerifyOptions& o, const verify::TypedDiscreteLagr
   if (p.format == modified::Format::python)
     throw ArgumentError("--format", "verify prints text or latex");
   if (o.json_given) check_output_path(o.json_out, "--json-out", true);
-  check_report(o);
   p.symmetric = o.symmetric;
   p.work_precision = o.report_given;
   p.reference_evaluation = o.reference;
@@ -135,42 +122,6 @@ int run_typed(const VerifyOptions& o, const verify::TypedDiscreteLagrangian& dl,
     return kFailure;
   }
   return st.status;
-}
-
-// The options every one-step-map route shares, as typed, with the flags of those given.
-void set_study_options(StudyOptions& s, const VerifyOptions& o, const CLI::App& c) {
-  s.problem = o.problem;
-  s.q0 = o.q0;
-  s.p0 = o.p0;
-  s.t_end = o.t_end;
-  s.h_list = o.h_list;
-  s.expected = o.expected;
-  s.order_tol = o.order_tol;
-  s.h = o.h;
-  s.steps = o.steps;
-  s.floor = o.floor;
-  s.json_out = o.json_out;
-  s.json_given = o.json_given;
-  s.report = o.report;
-  s.report_given = o.report_given;
-  check_report(o);
-  s.t_end_given = c.count("--t-end") > 0;
-  s.h_list_given = c.count("--h-list") > 0;
-  s.expected_given = c.count("--expected-order") > 0;
-  s.order_tol_given = c.count("--order-tol") > 0;
-  s.symmetric = o.symmetric;
-}
-
-// The options of a route on a typed L_d and system (--composition, a time-dependent --ld).
-CompositionOptions typed_options(const VerifyOptions& o, const CLI::App& c) {
-  CompositionOptions co;
-  set_study_options(co, o, c);
-  co.ld = o.ld;
-  co.potential = o.potential;
-  co.lagrangian = o.lagrangian;
-  co.hamiltonian = o.hamiltonian;
-  co.dim = o.dim;
-  return co;
 }
 
 // --- the route table -----------------------------------------------------------------------
@@ -303,61 +254,39 @@ int run(const VerifyOptions& o, const CLI::App& c) {
            {"--tableau", &o.tableau},
            {"--composition", &o.composition},
            {"--splitting", &o.splitting}})
-    if (c.count(opt) > 0 && value->find_first_not_of(" \t") == std::string::npos)
+    if (o.has(opt) && value->find_first_not_of(" \t") == std::string::npos)
       throw ArgumentError(opt, "is empty");
   // The typed expressions' derivatives are derived symbolically: the limit covers that too.
   const Watchdog watchdog("verify", max_seconds, o.progress);
   const Route& r = route_of(o, c);
+  check_report(o);
   if (r.name == std::string("--splitting")) {
     // A splitting method (verify_composition.cpp): its flows, through its equivalent
     // composition of symplectic Euler and its adjoint, on --problem or --potential.
-    if (c.count("--dim") > 0 && c.count("--potential") == 0)
+    if (o.has("--dim") && !o.has("--potential"))
       throw ArgumentError("--dim", "applies to --splitting only with --potential");
-    CompositionOptions co;
-    set_study_options(co, o, c);
-    co.splitting = o.splitting;
-    co.symbolic = o.symbolic;
-    co.potential = o.potential;
-    co.dim = o.dim;
-    return run_composition(co);
+    return run_composition(o);
   }
-  if (r.name == std::string("--tableau")) {
-    // A partitioned Runge-Kutta method from its tableau (verify_tableau.cpp).
-    TableauOptions to;
-    set_study_options(to, o, c);
-    to.potential = o.potential;
-    to.potential_given = c.count("--potential") > 0;
-    to.hamiltonian = o.hamiltonian;
-    to.hamiltonian_given = c.count("--hamiltonian") > 0;
-    to.dim = o.dim;
-    to.file = o.tableau;
-    return run_tableau(to);
-  }
-  if (c.count("--constraint") > 0 && r.name != std::string("a black-box stepper")) {
+  // A partitioned Runge-Kutta method from its tableau (verify_tableau.cpp).
+  if (r.name == std::string("--tableau")) return run_tableau(o);
+  if (o.has("--constraint") && r.name != std::string("a black-box stepper")) {
     // Constraints typed as expressions (verify_constrained.cpp): RATTLE or its unprojected
     // variant, or the constrained DEL of the --ld, on H = |p|^2/2 + V.
-    ConstrainedOptions co;
-    set_study_options(co, o, c);
-    co.ld = o.ld;
-    co.potential = o.potential;
-    co.dim = o.dim;
-    co.constraints = o.constraints;
     if (r.name == std::string("--method")) {
       if (o.method != "rattle" && o.method != "shake")
         throw ArgumentError("--constraint",
                             "does not apply to --method " + o.method +
                                 ": the Galerkin methods do not step constraints (--method rattle "
                                 "does, and the constrained DEL of an --ld)");
-      if (c.count("--lagrangian") > 0)
+      if (o.has("--lagrangian"))
         throw ArgumentError("--lagrangian", "does not apply to --method " + o.method +
                                                 ": RATTLE steps H = |p|^2/2 + V (--potential)");
-      co.step =
-          o.method == "rattle" ? verify::ConstrainedStep::rattle : verify::ConstrainedStep::shake;
-      return run_constrained_typed(co);
+      return run_constrained_typed(o, o.method == "rattle" ? verify::ConstrainedStep::rattle
+                                                           : verify::ConstrainedStep::shake);
     }
     for (const char* opt : {"--lagrangian", "--hamiltonian", "--adaptive", "--adaptive-steps",
                             "--modified-order", "--format", "--reference"})
-      if (c.count(opt) > 0)
+      if (o.has(opt))
         throw ArgumentError(opt,
                             "does not apply to an --ld with --constraint: the constrained system "
                             "is H = |p|^2/2 + V(q) (--potential) on the constraint manifold, "
@@ -366,56 +295,23 @@ int run(const VerifyOptions& o, const CLI::App& c) {
       throw ArgumentError("--ld",
                           "is required with --constraint (or --method "
                           "rattle)");
-    co.step = verify::ConstrainedStep::del;
-    return run_constrained_typed(co);
+    return run_constrained_typed(o, verify::ConstrainedStep::del);
   }
-  if (r.name == std::string("--method")) {
-    // A Galerkin variational integrator from the catalogue (verify_method.cpp), on a test
-    // problem or on the --potential or --lagrangian typed.
-    MethodOptions mo;
-    set_study_options(mo, o, c);
-    mo.method = o.method;
-    mo.potential = o.potential;
-    mo.potential_given = c.count("--potential") > 0;
-    mo.lagrangian = o.lagrangian;
-    mo.lagrangian_given = c.count("--lagrangian") > 0;
-    mo.dim = o.dim;
-    mo.symbolic = o.symbolic;
-    return run_method(mo);
-  }
-  if (r.name == std::string("a black-box stepper")) {
-    // Another program's stepper as a black box (verify_stepper.cpp).
-    StepperOptions so;
-    set_study_options(so, o, c);
-    so.lib = o.stepper_lib;
-    so.cmd = o.stepper_cmd;
-    so.arg = o.stepper_arg;
-    so.timeout = o.stepper_timeout;
-    so.protocol = o.stepper_protocol;
-    so.protocol_given = c.count("--stepper-protocol") > 0;
-    so.hamiltonian = o.hamiltonian;
-    so.potential = o.potential;
-    so.dim = o.dim;
-    so.lib_given = c.count("--stepper-lib") > 0;
-    so.cmd_given = c.count("--stepper-cmd") > 0;
-    so.timings = o.timings;
-    so.constraints = o.constraints;
-    return run_stepper(so);
-  }
+  // A Galerkin variational integrator from the catalogue (verify_method.cpp), on a test
+  // problem or on the --potential or --lagrangian typed.
+  if (r.name == std::string("--method")) return run_method(o);
+  // Another program's stepper as a black box (verify_stepper.cpp).
+  if (r.name == std::string("a black-box stepper")) return run_stepper(o);
   if (r.name != std::string("--ld")) {
     // A composition method (verify_composition.cpp); with base ld, of the --ld typed
     // (verify_composition_ld.cpp), on the system of --potential, --lagrangian or --hamiltonian.
-    CompositionOptions co = typed_options(o, c);
-    co.base = o.composition;
-    co.coefficients = o.coefficients;
-    co.symbolic = o.symbolic;
-    if (co.base == "ld" && c.count("--ld") == 0)
+    if (o.composition == "ld" && !o.has("--ld"))
       throw ArgumentError("--ld", "is required with --composition ld");
-    return run_composition(co);
+    return run_composition(o);
   }
-  if (c.count("--adaptive-steps") > 0 && c.count("--adaptive") == 0)
+  if (o.has("--adaptive-steps") && !o.has("--adaptive"))
     throw ArgumentError("--adaptive-steps", "applies only with --adaptive epavi");
-  if (o.ld.empty() && c.count("--ld") == 0)
+  if (o.ld.empty() && !o.has("--ld"))
     throw ArgumentError("--ld",
                         "is required (or --method NAME:S, --tableau FILE, --composition BASE "
                         "--coefficients LIST|NAME, --splitting SEQ, --stepper-lib or "
@@ -436,12 +332,12 @@ int run(const VerifyOptions& o, const CLI::App& c) {
     // autonomous --ld route that assume a conserved energy or an autonomous L_d are refused.
     for (const char* opt :
          {"--adaptive", "--adaptive-steps", "--modified-order", "--format", "--reference"})
-      if (c.count(opt) > 0)
+      if (o.has(opt))
         throw ArgumentError(opt,
                             "applies to an autonomous --ld only (the system here depends on "
                             "t: the EpAVI conserves an energy it does not have, and the "
                             "modified equation and the compiled tape are autonomous)");
-    return run_timed_ld(typed_options(o, c));
+    return run_timed_ld(o);
   }
   return run_typed(o, *dl, check(o, *dl));
 }
@@ -580,8 +476,10 @@ std::function<int()> add_verify_command(CLI::App& app) {
               "print the time of each part (and put it in the report, which then differs from "
               "run to run)");
   return [o, c] {
-    o->json_given = c->count("--json-out") > 0;
-    o->report_given = c->count("--report") > 0;
+    for (const CLI::Option* opt : c->get_options())
+      if (opt->count() > 0) o->given.insert(opt->get_name());
+    o->json_given = o->has("--json-out");
+    o->report_given = o->has("--report");
     return run(*o, *c);
   };
 }

@@ -2,7 +2,7 @@
 // work, then the measurement of vibook/verify/composition_study.hpp (order conditions at 120
 // digits, measured order, symplecticity, reversibility, energy) printed. Every part is printed,
 // even after one fails; the verdict names the parts that failed.
-#include "verify_composition.hpp"
+#include "verify_routes.hpp"
 
 #include <cmath>
 #include <mutex>
@@ -41,15 +41,15 @@ struct Plan {
 constexpr double kMaxCoefficient = 1e3;
 
 // --expected-order, when given.
-void check_expected(const CompositionOptions& o, verify::CompositionSpec& spec) {
-  if (!o.expected_given) return;
+void check_expected(const VerifyOptions& o, verify::CompositionSpec& spec) {
+  if (!o.has("--expected-order")) return;
   const double e = check_expected_order(o.expected);
   spec.expected = e;
 }
 
 // The coefficients: a catalogue entry or a typed list (parsed at 120 digits), and
 // --expected-order.
-void check_coefficients(const CompositionOptions& o, verify::CompositionSpec& spec) {
+void check_coefficients(const VerifyOptions& o, verify::CompositionSpec& spec) {
   if (o.coefficients.empty())
     throw ArgumentError("--coefficients",
                         "is required with --composition: a catalogue name (yoshida4, suzuki4, "
@@ -80,16 +80,16 @@ void check_coefficients(const CompositionOptions& o, verify::CompositionSpec& sp
   check_expected(o, spec);
 }
 
-Plan check(const CompositionOptions& o) {
+Plan check(const VerifyOptions& o) {
   Plan p;
   if (!o.splitting.empty()) {
     p.spec = verify::splitting_spec("--splitting", o.splitting);
     check_expected(o, p.spec);
   } else {
-    p.spec.base = verify::find_composition_base(o.base);
+    p.spec.base = verify::find_composition_base(o.composition);
     if (!p.spec.base)
       throw ArgumentError("--composition",
-                          "unknown base method '" + o.base +
+                          "unknown base method '" + o.composition +
                               "' (sv, midpoint, se, se-adjoint, vi1, vi1-adjoint, vi2, or ld "
                               "for the --ld typed)");
   }
@@ -98,13 +98,12 @@ Plan check(const CompositionOptions& o) {
   p.symbolic = verify::parse_symbolic_use(o.symbolic);
   check_initial_state(o, *p.problem, p.q0, p.p0, p.study);
   check_study_options(o, p.study);
-  if (o.json_given) check_output_path(o.json_out, "--json-out", true);
   return p;
 }
 
 }  // namespace
 
-int run_composition(const CompositionOptions& o) {
+int run_composition(const VerifyOptions& o) {
   if (!o.splitting.empty() && !o.potential.empty()) {
     // A splitting on H = |p|^2/2 + V typed: its equivalent composition of symplectic Euler,
     // stepped as the composition of a typed L_d: symplectic Euler's own discrete Lagrangian
@@ -125,13 +124,9 @@ int run_composition(const CompositionOptions& o) {
       t.allow_time = true;
       timed = verify::TypedDiscreteLagrangian(t).time_dependent();
     }
-    CompositionOptions typed = o;
-    typed.base = "ld";
-    typed.allow_time = timed;
-    typed.ld = verify::splitting_stage_ld(timed);
-    return run_composition_ld(typed, std::move(spec));
+    return run_composition_ld(o, std::move(spec), timed, verify::splitting_stage_ld(timed));
   }
-  if (o.splitting.empty() && o.base == "ld") {
+  if (o.splitting.empty() && o.composition == "ld") {
     if (!o.problem.empty())
       throw ArgumentError("--problem",
                           "does not apply to --composition ld: the system is --potential, "
@@ -140,9 +135,7 @@ int run_composition(const CompositionOptions& o) {
     check_coefficients(o, spec);
     // L_d(t, q0, q1, h) on a time-dependent system: each stage starts at the time the stages
     // before it reached (composition_ld_study.cpp)
-    CompositionOptions timed = o;
-    timed.allow_time = true;
-    return run_composition_ld(timed, std::move(spec));
+    return run_composition_ld(o, std::move(spec), true, o.ld);
   }
   // (--ld, --potential, --lagrangian, --hamiltonian and --dim with another base are refused by
   // the route table of verify.cpp.)

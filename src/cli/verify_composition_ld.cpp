@@ -10,8 +10,8 @@
 
 #include "args.hpp"
 #include "cli.hpp"
-#include "verify_composition.hpp"
 #include "verify_map.hpp"
+#include "verify_routes.hpp"
 #include "vibook/core/output_file.hpp"
 #include "vibook/modified/engine.hpp"
 #include "vibook/verify/composition_ld_study.hpp"
@@ -24,8 +24,9 @@ namespace {
 
 // The typed L_d and system of `o` (a Hamiltonian, typed or p^2/2 + V, or a typed Lagrangian),
 // checked before any work, in 1 to 3 dimensions; `route` names the route in the messages.
-std::unique_ptr<verify::TypedDiscreteLagrangian> typed_ld(const CompositionOptions& o,
-                                                          const char* route, bool allow_time) {
+std::unique_ptr<verify::TypedDiscreteLagrangian> typed_ld(const VerifyOptions& o,
+                                                          const std::string& ld, const char* route,
+                                                          bool allow_time) {
   if (!o.lagrangian.empty() && !o.hamiltonian.empty())
     throw ArgumentError("--hamiltonian",
                         "give the system once: --lagrangian or --hamiltonian, not both");
@@ -34,16 +35,11 @@ std::unique_ptr<verify::TypedDiscreteLagrangian> typed_ld(const CompositionOptio
   const std::string hamiltonian = !o.lagrangian.empty()   ? ""
                                   : o.hamiltonian.empty() ? "p^2/2 + V(q)"
                                                           : o.hamiltonian;
-  int dim = 0;
-  if (!o.dim.empty()) {
-    dim = static_cast<int>(parse_integer("--dim", o.dim));
-    if (dim < 1 || dim > 3)
-      throw ArgumentError("--dim", fmt::format("must lie in 1..3 with {}", route));
-  }
+  const int dim = check_dim(o, 3, fmt::format(" with {}", route));
   std::unique_ptr<verify::TypedDiscreteLagrangian> dl;
   {
     std::lock_guard<std::mutex> lock(modified::ginac_mutex());
-    verify::TypedTexts texts{o.ld, o.potential, o.lagrangian, hamiltonian, dim};
+    verify::TypedTexts texts{ld, o.potential, o.lagrangian, hamiltonian, dim};
     texts.allow_time = allow_time;
     dl = std::make_unique<verify::TypedDiscreteLagrangian>(texts);
   }
@@ -55,13 +51,14 @@ std::unique_ptr<verify::TypedDiscreteLagrangian> typed_ld(const CompositionOptio
 
 }  // namespace
 
-int run_composition_ld(const CompositionOptions& o, verify::CompositionSpec spec) {
-  if (o.ld.empty()) throw ArgumentError("--ld", "is required with --composition ld");
+int run_composition_ld(const VerifyOptions& o, verify::CompositionSpec spec, bool allow_time,
+                       const std::string& ld) {
+  if (ld.empty()) throw ArgumentError("--ld", "is required with --composition ld");
   if (o.potential.empty() && o.hamiltonian.empty() && o.lagrangian.empty())
     throw ArgumentError("--potential",
                         "is required with --composition ld (or --lagrangian or --hamiltonian): "
                         "the system the composition is measured on");
-  const auto dl = typed_ld(o, "--composition ld", o.allow_time);
+  const auto dl = typed_ld(o, ld, "--composition ld", allow_time);
   if (dl->ld_uses_t() && !dl->time_dependent())
     throw ArgumentError("--ld",
                         "uses the time t, but the system (--potential, --lagrangian or "
@@ -71,24 +68,22 @@ int run_composition_ld(const CompositionOptions& o, verify::CompositionSpec spec
   MapStudy study;
   check_typed_initial_state(o, dl->dim(), q0, p0, study);
   check_study_options(o, study);
-  if (o.json_given) check_output_path(o.json_out, "--json-out", true);
   MapReport rep;
   verify::measure_ld_composition(std::move(spec), *dl,
-                                 {o.ld, o.potential, o.lagrangian, o.hamiltonian, q0, p0}, study,
+                                 {ld, o.potential, o.lagrangian, o.hamiltonian, q0, p0}, study,
                                  symbolic, rep);
   return rep.finish(o);
 }
 
-int run_timed_ld(const CompositionOptions& o) {
+int run_timed_ld(const VerifyOptions& o) {
   // (measure_timed_ld refuses an --ld with t on a system without it, naming --ld, before any
   // work.)
-  const auto dl = typed_ld(o, "a time-dependent --ld", true);
+  const auto dl = typed_ld(o, o.ld, "a time-dependent --ld", true);
   std::vector<double> q0, p0;
   MapStudy study;
   check_typed_initial_state(o, dl->dim(), q0, p0, study);
   check_study_options(o, study);
   study.expected = check_expected_order(o.expected);
-  if (o.json_given) check_output_path(o.json_out, "--json-out", true);
   MapReport rep;
   verify::measure_timed_ld(*dl, {o.ld, o.potential, o.lagrangian, o.hamiltonian, q0, p0}, study,
                            rep);

@@ -1,6 +1,6 @@
 // `vibook verify --constraint EXPR` (repeatable) with --method rattle|shake or with an --ld: the
 // options checked before any work, the measurement of vibook/verify/constrained.hpp, the report.
-#include "verify_constrained.hpp"
+#include "verify_routes.hpp"
 
 #include <memory>
 #include <mutex>
@@ -17,8 +17,8 @@
 
 namespace vibook::cli {
 
-int run_constrained_typed(const ConstrainedOptions& o) {
-  const bool del = o.step == verify::ConstrainedStep::del;
+int run_constrained_typed(const VerifyOptions& o, verify::ConstrainedStep step) {
+  const bool del = step == verify::ConstrainedStep::del;
   if (o.potential.empty())
     throw ArgumentError("--potential",
                         "is required with --constraint: the system is H = |p|^2/2 + V(q) on the "
@@ -54,10 +54,9 @@ int run_constrained_typed(const ConstrainedOptions& o) {
   check_typed_initial_state(o, sys->dim(), q0, p0, study);
   check_study_options(o, study);
   study.expected = 2;
-  if (o.expected_given || del) study.expected = check_expected_order(o.expected);
-  if (o.json_given) check_output_path(o.json_out, "--json-out", true);
+  if (o.has("--expected-order") || del) study.expected = check_expected_order(o.expected);
   MapReport rep;
-  verify::measure_constrained_typed(*sys, {o.potential, o.ld}, o.step, q0, p0, study, rep);
+  verify::measure_constrained_typed(*sys, {o.potential, o.ld}, step, q0, p0, study, rep);
   return rep.finish(o);
 }
 

@@ -10,7 +10,7 @@
 #include <fmt/format.h>
 #include <fmt/ranges.h>
 
-#include "verify_typed.hpp"
+#include "args.hpp"
 #include "vibook/core/output_file.hpp"
 #include "vibook/modified/engine.hpp"
 #include "vibook/verify/constrained.hpp"
@@ -29,32 +29,90 @@ const TestProblem& find_test_problem(const std::string& name) {
                                        "' (kepler, pendulum or henon-heiles)");
 }
 
-namespace {
+void check_study_options(const VerifyOptions& o, MapStudy& s) {
+  if (o.has("--order-tol")) {
+    s.order_tol = parse_number("--order-tol", o.order_tol);
+    if (!(s.order_tol > 0 && s.order_tol <= 1))
+      throw ArgumentError("--order-tol", "must lie in (0, 1]");
+  }
+  if (o.has("--h-list")) s.hs = parse_step_list("--h-list", o.h_list, s.t_end, 7);
+  if (!o.floor.empty()) {
+    s.floor = parse_number("--floor", o.floor);
+    if (!(*s.floor >= 0) || !std::isfinite(*s.floor))
+      throw ArgumentError("--floor", "must be a finite number >= 0");
+  }
+  s.h = parse_number("--h", o.h);
+  s.symmetric_claimed = o.symmetric;
+  s.steps = parse_integer("--steps", o.steps);
+  if (s.steps < 1024 || s.steps > 100000000)
+    throw ArgumentError("--steps", "must lie in [1024, 1e8]");
+  if (!(s.h > 0) || !std::isfinite(s.h) || s.h * double(s.steps) > 1e9)
+    throw ArgumentError("--h", "must be a positive finite step (h·steps at most 1e9)");
+  if (o.json_given) check_output_path(o.json_out, "--json-out", true);
+}
 
-// The typed system of a catalogue route, checked before any work. `option` names the text that
-// gives the system (`text`: a potential, a Lagrangian or a Hamiltonian) in the messages; the
-// system parsed is L (`lagrangian`) or H (`hamiltonian`), either of which may call the V of
-// --potential. 1 to 3 degrees of freedom; then --q0, --p0 and --t-end.
+void check_t_end(const VerifyOptions& o, MapStudy& s) {
+  if (!o.has("--t-end")) return;
+  s.t_end = parse_number("--t-end", o.t_end);
+  if (!(s.t_end > 0) || s.t_end > 1e4) throw ArgumentError("--t-end", "must lie in (0, 1e4]");
+}
+
+void check_initial_state(const VerifyOptions& o, const TestProblem& problem,
+                         std::vector<double>& q0, std::vector<double>& p0, MapStudy& s) {
+  const std::string why =
+      fmt::format("{} has {} degrees of freedom", problem.name, problem.q0.size());
+  q0 = parse_state("--q0", o.q0, problem.q0, why);
+  p0 = parse_state("--p0", o.p0, problem.p0, why);
+  if (problem.name == "kepler" && std::hypot(q0[0], q0[1]) < 1e-3)
+    throw ArgumentError("--q0", "lies at (or within 1e-3 of) the Kepler singularity q = 0");
+  check_t_end(o, s);
+}
+
+double check_expected_order(const std::string& text) {
+  const double e = parse_number("--expected-order", text);
+  if (!(e > 0 && e <= verify::kMaxOrder))
+    throw ArgumentError("--expected-order",
+                        fmt::format("must lie in (0, {:g}]", verify::kMaxOrder));
+  return e;
+}
+
+void check_typed_initial_state(const VerifyOptions& o, int n, std::vector<double>& q0,
+                               std::vector<double>& p0, MapStudy& s) {
+  const std::vector<double> dflt(static_cast<std::size_t>(n), 0.1);
+  const std::string why = fmt::format("the expressions are {}-dimensional", n);
+  q0 = parse_state("--q0", o.q0, dflt, why);
+  p0 = parse_state("--p0", o.p0, dflt, why);
+  check_t_end(o, s);
+}
+
+int check_dim(const VerifyOptions& o, int max, const std::string& with) {
+  if (o.dim.empty()) return 0;
+  const int dim = static_cast<int>(parse_integer("--dim", o.dim));
+  if (dim < 1 || dim > max)
+    throw ArgumentError("--dim", fmt::format("must lie in 1..{}{}", max, with));
+  return dim;
+}
+
 std::unique_ptr<verify::TypedDiscreteLagrangian> check_typed_system(
-    const char* option, const std::string& text, const std::string& lagrangian,
-    const std::string& hamiltonian, const TypedPotentialOptions& t, const StudyOptions& o,
-    const char* route, std::vector<double>& q0, std::vector<double>& p0, MapStudy& s,
-    bool allow_time) {
+    const VerifyOptions& o, const std::string& option, const char* route, std::vector<double>& q0,
+    std::vector<double>& p0, MapStudy& s, bool allow_time) {
+  const std::string& text = option == "--potential"    ? o.potential
+                            : option == "--lagrangian" ? o.lagrangian
+                                                       : o.hamiltonian;
   if (text.empty()) throw ArgumentError(option, "is empty");
   if (!o.problem.empty())
     throw ArgumentError(option,
                         "gives the system; --problem names a test problem: give one of them");
-  if (t.potential_given && t.potential.empty()) throw ArgumentError("--potential", "is empty");
-  int dim = 0;
-  if (!t.dim.empty()) {
-    dim = static_cast<int>(parse_integer("--dim", t.dim));
-    if (dim < 1 || dim > 3)
-      throw ArgumentError("--dim", fmt::format("must lie in 1..3 with {}", route));
-  }
+  if (o.has("--potential") && o.potential.empty()) throw ArgumentError("--potential", "is empty");
+  const int dim = check_dim(o, 3, fmt::format(" with {}", route));
   std::unique_ptr<verify::TypedDiscreteLagrangian> sys;
   {
     std::lock_guard<std::mutex> lock(modified::ginac_mutex());
-    verify::TypedTexts texts{"", t.potential, lagrangian, hamiltonian, dim};
+    verify::TypedTexts texts{"", o.potential, option == "--lagrangian" ? o.lagrangian : "",
+                             option == "--lagrangian"    ? ""
+                             : option == "--hamiltonian" ? o.hamiltonian
+                                                         : "p^2/2 + V(q)",
+                             dim};
     texts.system_only = true;
     texts.allow_time = allow_time;
     sys = std::make_unique<verify::TypedDiscreteLagrangian>(texts);
@@ -66,36 +124,7 @@ std::unique_ptr<verify::TypedDiscreteLagrangian> check_typed_system(
   return sys;
 }
 
-}  // namespace
-
-std::unique_ptr<verify::TypedDiscreteLagrangian> check_typed_potential(
-    const TypedPotentialOptions& t, const StudyOptions& o, const char* route,
-    std::vector<double>& q0, std::vector<double>& p0, MapStudy& s, bool allow_time) {
-  return check_typed_system("--potential", t.potential, "", "p^2/2 + V(q)", t, o, route, q0, p0, s,
-                            allow_time);
-}
-
-std::unique_ptr<verify::TypedDiscreteLagrangian> check_typed_lagrangian(
-    const TypedPotentialOptions& t, const StudyOptions& o, const char* route,
-    std::vector<double>& q0, std::vector<double>& p0, MapStudy& s, bool allow_time) {
-  return check_typed_system("--lagrangian", t.lagrangian, t.lagrangian, "", t, o, route, q0, p0, s,
-                            allow_time);
-}
-
-std::unique_ptr<verify::TypedDiscreteLagrangian> check_typed_hamiltonian(
-    const TypedPotentialOptions& t, const std::string& hamiltonian, const StudyOptions& o,
-    const char* route, std::vector<double>& q0, std::vector<double>& p0, MapStudy& s,
-    bool allow_time) {
-  return check_typed_system("--hamiltonian", hamiltonian, "", hamiltonian, t, o, route, q0, p0, s,
-                            allow_time);
-}
-
-void MapReport::variational_order_not_derived(const std::string& reason) {
-  line("variational order", "not derived: " + reason);
-  js["variational_order"] = {{"derived", false}, {"reason", reason}};
-}
-
-int MapReport::finish(const StudyOptions& o) {
+int MapReport::finish(const VerifyOptions& o) {
   js["verdict"] = {{"passed", failed.empty()}, {"failed", failed}, {"required", required}};
   // The full text of the first numerical failure (its line on stderr may be cut to 300).
   if (numerical_failure) js["error"] = first_error;

@@ -3,8 +3,6 @@
 // with S stages on a nonlinear test problem, on the user's L(q, v) typed after --lagrangian, or
 // on L = |v|²/2 − V(q) with the user's V typed after --potential; documented order 2S for
 // Gauss, 2S − 2 for Lobatto) printed.
-#include "verify_method.hpp"
-
 #include <cmath>
 #include <memory>
 #include <string>
@@ -43,13 +41,13 @@ struct Plan {
 };
 
 // --method rattle (or its deliberately wrong variant shake) on a constrained test problem.
-Plan check_constrained(const MethodOptions& o) {
+Plan check_constrained(const VerifyOptions& o) {
   Plan p;
   p.project_velocity = o.method == "rattle";
-  if (o.lagrangian_given || o.potential_given || !o.dim.empty())
-    throw ArgumentError(o.lagrangian_given  ? "--lagrangian"
-                        : o.potential_given ? "--potential"
-                                            : "--dim",
+  if (o.has("--lagrangian") || o.has("--potential") || !o.dim.empty())
+    throw ArgumentError(o.has("--lagrangian")  ? "--lagrangian"
+                        : o.has("--potential") ? "--potential"
+                                               : "--dim",
                         "does not apply to --method " + o.method +
                             ": it runs on a constrained test problem (--problem "
                             "spherical-pendulum or double-pendulum), or on --potential with "
@@ -59,32 +57,17 @@ Plan check_constrained(const MethodOptions& o) {
   if (!p.constrained)
     throw ArgumentError("--problem", "'" + name + "' has no constraints; --method " + o.method +
                                          " runs on spherical-pendulum or double-pendulum");
-  const std::size_t n = p.constrained->q0.size();
-  auto vector_or = [&](const std::string& arg, const std::string& text,
-                       const std::vector<double>& dflt) {
-    std::vector<double> v = text.empty() ? dflt : parse_list(arg, text);
-    if (v.size() != n)
-      throw ArgumentError(
-          arg, fmt::format("has {} components; {} has {} coordinates", v.size(), name, n));
-    for (double x : v)
-      if (!std::isfinite(x)) throw ArgumentError(arg, "must be finite");
-    return v;
-  };
-  p.q0 = vector_or("--q0", o.q0, p.constrained->q0);
-  p.p0 = vector_or("--p0", o.p0, p.constrained->p0);
-  if (o.t_end_given) {
-    p.study.t_end = parse_number("--t-end", o.t_end);
-    if (!(p.study.t_end > 0) || p.study.t_end > 1e4)
-      throw ArgumentError("--t-end", "must lie in (0, 1e4]");
-  }
+  const std::string why = fmt::format("{} has {} coordinates", name, p.constrained->q0.size());
+  p.q0 = parse_state("--q0", o.q0, p.constrained->q0, why);
+  p.p0 = parse_state("--p0", o.p0, p.constrained->p0, why);
+  check_t_end(o, p.study);
   p.study.expected = 2;
-  if (o.expected_given) p.study.expected = check_expected_order(o.expected);
+  if (o.has("--expected-order")) p.study.expected = check_expected_order(o.expected);
   check_study_options(o, p.study);
-  if (o.json_given) check_output_path(o.json_out, "--json-out", true);
   return p;
 }
 
-Plan check(const MethodOptions& o) {
+Plan check(const VerifyOptions& o) {
   if (o.method == "rattle" || o.method == "shake") return check_constrained(o);
   Plan p;
   const auto colon = o.method.find(':');
@@ -105,10 +88,9 @@ Plan check(const MethodOptions& o) {
   p.spec.name = o.method;
   p.spec.stages = static_cast<int>(s);
   p.spec.rule = quadrature_rule(family, p.spec.stages);
-  if (o.lagrangian_given) {
-    p.sys = check_typed_lagrangian(o, o, "--method", p.q0, p.p0, p.study, true);
-  } else if (o.potential_given) {
-    p.sys = check_typed_potential(o, o, "--method", p.q0, p.p0, p.study, true);
+  if (o.has("--lagrangian") || o.has("--potential")) {
+    p.sys = check_typed_system(o, o.has("--lagrangian") ? "--lagrangian" : "--potential",
+                               "--method", p.q0, p.p0, p.study, true);
   } else {
     if (!o.dim.empty())
       throw ArgumentError("--dim", "applies to --method with --potential or --lagrangian only");
@@ -117,19 +99,18 @@ Plan check(const MethodOptions& o) {
   }
   p.spec.expected = p.spec.rule.order;
   p.spec.expected_from = "documented";
-  if (o.expected_given) {
+  if (o.has("--expected-order")) {
     p.spec.expected = check_expected_order(o.expected);
     p.spec.expected_from = "--expected-order";
   }
   p.symbolic = verify::parse_symbolic_use(o.symbolic);
   check_study_options(o, p.study);
-  if (o.json_given) check_output_path(o.json_out, "--json-out", true);
   return p;
 }
 
 }  // namespace
 
-int run_method(const MethodOptions& o) {
+int run_method(const VerifyOptions& o) {
   Plan p = check(o);
   MapReport rep;
   if (p.constrained) {
@@ -146,7 +127,7 @@ int run_method(const MethodOptions& o) {
     verify::measure_method(p.spec, *p.problem, p.q0, p.p0, p.study, rep);
     return rep.finish(o);
   }
-  const std::string system = o.lagrangian_given
+  const std::string system = o.has("--lagrangian")
                                  ? set_typed_lagrangian(p.study, *p.sys, o.lagrangian, p.q0, p.p0)
                                  : set_typed_potential(p.study, *p.sys, o.potential, p.q0, p.p0);
   verify::measure_method_typed(p.spec, *p.sys, p.q0, p.p0, p.study, system, rep);

@@ -335,6 +335,11 @@ rm -rf fdir
   bad "claims --json-out: the ledger was not printed: $(head -3 stdout) $(cat stderr)"
 rm -f cj.json
 
+# An empty step or step count is refused on every route (the map routes once read it as "the
+# default").
+row 2 "--h"              verify --method gauss:1 --problem pendulum --h ""
+row 2 "--steps"          verify --splitting leapfrog --problem pendulum --steps ""
+
 # --- inputs read forever (the fourth probe): a device, a FIFO, a deep nesting ------------------
 row 2 "is not a regular file" verify --tableau /dev/zero
 row 2 "is not a regular file" verify --tableau /dev/urandom

@@ -53,6 +53,10 @@ case_ ld-trapezoid 0 "" 'constrained discrete Euler-Lagrange' \
 # (Above errors of 1e-6: the DEL form's own rounding, through (q1 - q0)/h, differs from RATTLE's
 # by about 1e-11 at the smallest steps.)
 same_errors ld-trapezoid-is-rattle "$tmp/v.json" "$tmp/cat-spherical.json" 20 1e-6
+# --report is checked before any work on this route too (a regular file is no report directory).
+: >"$tmp/not-a-dir"
+arg ld-constraint-report --report --ld "$TRAP" --potential z --constraint "$SPH_G" \
+  --q0 "$SPH_Q" --p0 0,0.8,0 --report "$tmp/not-a-dir"
 case_ ld-v-at-q1 5 "order,energy" 'order +(0\.9|1\.0)[0-9]* over .*: NO' \
   -- --ld "$SE" --potential z --constraint "$SPH_G" --q0 "$SPH_Q" --p0 0,0.8,0
 case_ ld-v-at-q1-first-order 0 "" 'order +(0\.9|1\.0)[0-9]* over .*: yes' \

@@ -310,6 +310,25 @@ void track_created_directory(const fs::path& dir) {
   t.created_dirs.push_back(dir);
 }
 
+void ensure_output_directory(const fs::path& dir, const std::string& arg) {
+  std::error_code ec;
+  std::vector<fs::path> created;
+  for (fs::path p = fs::absolute(dir, ec).lexically_normal(); !p.empty() && !fs::exists(p, ec);
+       p = p.parent_path()) {
+    created.push_back(p);
+    if (p == p.parent_path()) break;
+  }
+  fs::create_directories(dir, ec);
+  if (ec || !fs::is_directory(dir))
+    throw ArgumentError(arg, "cannot create directory '" + dir.string() + "'");
+  for (auto it = created.rbegin(); it != created.rend(); ++it) track_created_directory(*it);
+  const fs::path probe = dir / ".vibook-write-test";
+  std::ofstream f(probe);
+  if (!f) throw ArgumentError(arg, "directory '" + dir.string() + "' is not writable");
+  f.close();
+  fs::remove(probe, ec);
+}
+
 void remove_temporaries() noexcept {
   auto& t = temporaries();
   // Locked for good: the process ends next, and no thread may create a temporary after this.

@@ -91,6 +91,11 @@ void discard_temporary_directory(const std::filesystem::path& tmp_dir);
 /// removes it again while it is still empty.
 void track_created_directory(const std::filesystem::path& dir);
 
+/// Creates the output directory `dir` where it is missing (every level, each recorded with
+/// track_created_directory, so that an interrupted command leaves none of them behind) and
+/// checks that a file can be written in it. Throws ArgumentError naming `arg` otherwise.
+void ensure_output_directory(const std::filesystem::path& dir, const std::string& arg);
+
 /// Removes every temporary file and directory that exists now (written but not yet renamed
 /// onto its final name), and the created output directories that are still empty. For a
 /// signal that ends the process: the command line calls it from its signal thread. The

@@ -1,5 +1,7 @@
 #include "vibook/figures/registry.hpp"
 
+#include <sys/stat.h>
+
 #include <algorithm>
 #include <fstream>
 #include <map>
@@ -127,6 +129,54 @@ std::vector<claims::ClaimResult> run_check(const Check& check, const Context& co
   return results;
 }
 
+std::vector<const Check*> select_figures(const std::vector<std::string>& ids,
+                                         const std::string& arg) {
+  std::vector<const Check*> todo;
+  if (ids.empty()) {
+    for (const auto& c : registry())
+      if (c.is_figure) todo.push_back(&c);
+    // A long study without a figure (field-audit-galerkin) is a check: `vibook claims` runs it.
+    if (long_studies_enabled())
+      for (const auto& c : long_studies())
+        if (c.is_figure) todo.push_back(&c);
+    return todo;
+  }
+  for (const auto& id : ids) {
+    const auto* c = find(id);
+    if (c && !c->is_figure)
+      throw ArgumentError(
+          arg, fmt::format("'{}' is a check without a figure: `vibook claims --check {}` runs it",
+                           id, id));
+    if (!c) throw ArgumentError(arg, fmt::format("unknown figure '{}' (see `vibook list`)", id));
+    if (std::find(todo.begin(), todo.end(), c) != todo.end())
+      throw ArgumentError(arg, fmt::format("'{}' is given twice", id));
+    todo.push_back(c);
+  }
+  return todo;
+}
+
+std::vector<FigureOutput> make_figures(const std::vector<const Check*>& figures,
+                                       const std::filesystem::path& out_root,
+                                       const std::string& arg) {
+  ensure_output_directory(out_root, arg);
+  struct stat st {};
+  std::string bare = out_root.string();  // "link/" would follow the link
+  while (bare.size() > 1 && bare.back() == '/') bare.pop_back();
+  if (::lstat(bare.c_str(), &st) == 0 && S_ISLNK(st.st_mode))
+    throw ArgumentError(
+        arg, "'" + out_root.string() + "' is a symbolic link; give the directory it points to");
+  for (const auto* c : figures) {
+    const std::filesystem::path d = out_root / c->id;
+    if (::lstat(d.c_str(), &st) == 0 && !S_ISDIR(st.st_mode))
+      throw ArgumentError(arg,
+                          "'" + d.string() + "' exists and is not a directory; move it away first");
+  }
+  std::vector<FigureOutput> outputs(figures.size());
+  parallel_for(figures.size(), 0,
+               [&](std::size_t i) { outputs[i] = make_figure(*figures[i], out_root); });
+  return outputs;
+}
+
 std::vector<std::vector<claims::ClaimResult>> run_checks(const std::vector<const Check*>& checks,
                                                          unsigned jobs) {
   std::vector<std::vector<claims::ClaimResult>> results(checks.size());
@@ -199,6 +249,22 @@ claims::Ledger measure_all(unsigned jobs, const std::optional<std::filesystem::p
         ledger.record(r);
       }
   }
+  return ledger;
+}
+
+claims::Ledger measure(const std::vector<std::string>& ids,
+                       const std::optional<std::filesystem::path>& figures_dir,
+                       const std::string& arg) {
+  if (ids.empty()) return measure_all(0, figures_dir);
+  std::vector<const Check*> chosen;
+  for (const auto& id : ids) {
+    const auto* c = find(id);
+    if (!c) throw ArgumentError(arg, fmt::format("unknown check '{}' (see `vibook list`)", id));
+    chosen.push_back(c);
+  }
+  claims::Ledger ledger;
+  for (const auto& rs : run_checks(chosen))
+    for (const auto& r : rs) ledger.record(r);
   return ledger;
 }
 

@@ -44,6 +44,20 @@ struct FigureOutput {
 /// then render with gnuplot. A rendering failure is reported in the result, not thrown.
 FigureOutput make_figure(const Check& check, const std::filesystem::path& out_root);
 
+/// The figures `ids` names, in that order; every figure (and, when long_studies_enabled(),
+/// every long study with a figure) when it is empty. Throws ArgumentError naming `arg` for an
+/// unknown ID, a check without a figure, or an ID given twice.
+std::vector<const Check*> select_figures(const std::vector<std::string>& ids,
+                                         const std::string& arg);
+
+/// Regenerate `figures` into `out_root/ID/`, one thread per figure (at most one per core),
+/// after checking, before any work, that `out_root` can be created and written, is not a
+/// symbolic link (followed silently, it would write elsewhere) and that each `out_root/ID`,
+/// where it exists, is a directory (ArgumentError naming `arg` otherwise).
+std::vector<FigureOutput> make_figures(const std::vector<const Check*>& figures,
+                                       const std::filesystem::path& out_root,
+                                       const std::string& arg);
+
 /// Run one check and hold it to its declaration: every claim it names must be measured (not
 /// pending) in its results, and every result must be a claim it names or an erratum
 /// (`*-ERR-*`). Throws std::logic_error naming the check and the claim otherwise. Every run
@@ -62,6 +76,12 @@ std::vector<std::vector<claims::ClaimResult>> run_checks(const std::vector<const
 /// `vibook claims --figures-dir`, and each measurement is made once.
 claims::Ledger measure_all(unsigned jobs = 0,
                            const std::optional<std::filesystem::path>& figures_dir = {});
+
+/// The ledger of the checks `ids` names (ArgumentError naming `arg` for an unknown one; every
+/// other claim stays pending), or of all of them (measure_all with `figures_dir`) when empty.
+claims::Ledger measure(const std::vector<std::string>& ids,
+                       const std::optional<std::filesystem::path>& figures_dir,
+                       const std::string& arg);
 
 /// The book's claim tables, written into `dir` (each file through core/output_file; a write
 /// error names `arg`): claims.html, summary.html, provenance.html (from `provenance`, the

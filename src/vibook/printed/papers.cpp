@@ -9,6 +9,9 @@
 #include <stdexcept>
 #include <vector>
 
+#include <fmt/format.h>
+#include <nlohmann/json.hpp>
+
 namespace vibook::printed {
 
 namespace detail {
@@ -511,6 +514,38 @@ const Display& display_quoting(Paper p, std::string_view quote) {
         std::string(key(p)) + " (" + std::string(file_name(p)) +
         "): " + std::string(quote.substr(0, 120)));
   return *found;
+}
+
+DisplayListing list_displays(const std::vector<Paper>& papers, bool with_inline) {
+  const std::vector<Paper> which =
+      papers.empty() ? std::vector<Paper>{Paper::S, Paper::V, Paper::SS} : papers;
+  nlohmann::json out = nlohmann::json::array();
+  std::string table;
+  for (Paper p : which) {
+    std::vector<const Display*> all;
+    for (const auto& d : displays(p)) all.push_back(&d);
+    if (with_inline)
+      for (const auto& d : inline_formulas(p)) all.push_back(&d);
+    for (const auto* d : all) {
+      out.push_back({{"paper", std::string(key(p))},
+                     {"id", d->id()},
+                     {"label", d->label()},
+                     {"place", d->place()},
+                     {"number", d->number},
+                     {"line", d->line},
+                     {"section", d->section},
+                     {"context", d->context},
+                     {"inline", d->inline_math},
+                     {"latex", d->latex}});
+      std::string head = d->latex.substr(0, 70);
+      for (auto& ch : head)
+        if (ch == '\n') ch = ' ';
+      table += fmt::format("{:<3} {:<8} {:<40.40} {}{}\n", key(p), d->id(),
+                           d->section + (d->context.empty() ? "" : " / " + d->context), head,
+                           d->latex.size() > 70 ? "…" : "");
+    }
+  }
+  return {out.dump(2) + "\n", table};
 }
 
 }  // namespace vibook::printed

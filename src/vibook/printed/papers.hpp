@@ -76,6 +76,14 @@ const Display& display(Paper p, std::string_view id);
 /// it names them): a quote must be long enough to say which display it is from.
 const Display& display_quoting(Paper p, std::string_view quote);
 
+/// `vibook displays`: the displays (with `with_inline` also the inline formulas) of `papers`
+/// (all three when empty), as JSON text (an array of paper, id, label, place, number, line,
+/// section, context, inline, latex; indented by 2) and as a table of one line each.
+struct DisplayListing {
+  std::string json, table;
+};
+DisplayListing list_displays(const std::vector<Paper>& papers, bool with_inline);
+
 /// True if `quote` occurs verbatim in display `d` (inside one of its blocks).
 bool quotes(const Display& d, std::string_view quote);
 

@@ -14,6 +14,7 @@
 #include <nlohmann/json.hpp>
 
 #include "vibook/core/errors.hpp"
+#include "vibook/verify/constrained.hpp"
 #include "vibook/verify/line_protocol.hpp"
 #include "vibook/verify/typed_system.hpp"
 
@@ -234,6 +235,61 @@ void black_box_work_precision(const MapStudy& s, const TypedDiscreteLagrangian& 
   }
   with_dim(sys.dim(),
            [&](auto n) { work_precision<decltype(n)::value>(s, sys, separable, timings, rep); });
+}
+
+void measure_black_box(BlackBox& box, const TypedDiscreteLagrangian& sys,
+                       const BlackBoxSetup& setup, MapStudy s, MapMeasurement& rep) {
+  using nlohmann::json;
+  const int N = sys.dim();
+  set_black_box_map(s, box, N);
+  const bool constrained = sys.constraint_count() > 0;
+  if (constrained)  // the index-1 reference, the constraint residuals, the manifold's tangents
+    set_constrained_typed_system(s, sys, setup.potential, setup.q0, setup.p0);
+  else
+    set_typed_system(s, sys, setup.q0, setup.p0);
+  if (!setup.library) s.max_substeps = 1e5;
+  s.symmetric_note = " (reported only: --symmetric makes it part of the verdict)";
+  if (setup.library)
+    rep.line("stepper",
+             fmt::format("library {} (vibook stepper ABI {}){}", setup.path, setup.abi,
+                         setup.arg.empty() ? "" : ", --stepper-arg '" + setup.arg + "'"));
+  else
+    rep.line("stepper", fmt::format("command '{}' (line protocol {})", setup.path, setup.protocol));
+  std::string constraints;
+  for (int i = 0; i < sys.constraint_count(); ++i)
+    constraints += fmt::format("{}g{} = {}", i ? ", " : "", i + 1, sys.constraint_text(i));
+  rep.line("system", fmt::format("H = {} ({}), {} degree{} of freedom{}", setup.hamiltonian,
+                                 setup.system_from, N, N == 1 ? "" : "s",
+                                 constrained ? ", constraints " + constraints : ""));
+  rep.line("initial state",
+           fmt::format("q0 = {}, p0 = {}", vec_text(setup.q0), vec_text(setup.p0)));
+  rep.line("expected order", fmt::format("{:g} (--expected-order)", s.expected));
+  rep.js["stepper"] = {{"kind", setup.library ? "library" : "command"},
+                       {"library", setup.library ? json(setup.path) : json(nullptr)},
+                       {"command", !setup.library ? json(setup.path) : json(nullptr)},
+                       {"arg", setup.arg},
+                       {"abi_version", setup.library ? json(setup.abi) : json(nullptr)},
+                       {"dof", N}};
+  if (setup.protocol == 2) rep.js["stepper"]["line_protocol"] = 2;
+  rep.js["system"] = {{"hamiltonian", setup.hamiltonian},
+                      {"from", setup.system_from},
+                      {"potential", setup.potential},
+                      {"constraints", setup.constraints},
+                      {"q0", setup.q0},
+                      {"p0", setup.p0}};
+  measure_map(s, rep);
+  // Work against precision beside RK4 and, where H = |p|^2/2 + V, Stormer-Verlet (not for a
+  // constrained system: neither keeps its constraints).
+  const bool separable =
+      setup.system_from == "--potential" || setup.system_from.rfind("--problem", 0) == 0;
+  if (!constrained) black_box_work_precision(s, sys, separable, setup.timings, rep);
+  rep.line("variational order",
+           "not derived: a black-box stepper has no discrete Lagrangian to expand; its order is "
+           "the measured one");
+  rep.js["variational_order"] = {
+      {"derived", false},
+      {"reason",
+       "a black-box stepper has no discrete Lagrangian to expand; its order is the measured one"}};
 }
 
 }  // namespace vibook::verify

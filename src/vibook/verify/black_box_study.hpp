@@ -8,6 +8,7 @@
 #pragma once
 
 #include <string>
+#include <vector>
 
 #include <Eigen/Dense>
 
@@ -39,5 +40,31 @@ void set_black_box_map(MapStudy& s, BlackBox& box, int dof);
 /// or no order fit.
 void black_box_work_precision(const MapStudy& s, const TypedDiscreteLagrangian& sys, bool separable,
                               bool timings, MapMeasurement& rep);
+
+/// What a black-box study is told about the stepper and the system it is meant for (the report's
+/// first lines and its JSON).
+struct BlackBoxSetup {
+  bool library = false;     ///< a shared library (ABI) rather than a command
+  std::string path;         ///< the library's file or the command line
+  std::string arg;          ///< the text passed to vibook_stepper_create (library)
+  int abi = 0;              ///< the library's ABI version
+  int protocol = 1;         ///< the command's line protocol
+  std::string hamiltonian;  ///< H as typed (or the test problem's)
+  std::string system_from;  ///< "--hamiltonian", "--potential", "--problem NAME"
+  std::string potential;    ///< V of --potential (a constrained system's too)
+  std::vector<std::string> constraints;
+  std::vector<double> q0, p0;
+  bool timings = false;  ///< the work-precision table's seconds
+};
+
+/// The study of a black box `box` (already past check_first_step) against the typed system
+/// `sys` of `setup`: its map (set_black_box_map), the system's reference (constrained: the
+/// index-1 reference, the residuals and the manifold's tangents), the report's first lines, the
+/// map study (`s`: settings and the expected order), work against precision where the system is
+/// not constrained, and the variational order as not derived (a black box has no discrete
+/// Lagrangian). A command answers at the speed of its language: its walk of step counts stops
+/// at 1e5 steps a run.
+void measure_black_box(BlackBox& box, const TypedDiscreteLagrangian& sys,
+                       const BlackBoxSetup& setup, MapStudy s, MapMeasurement& rep);
 
 }  // namespace vibook::verify
