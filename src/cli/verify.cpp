@@ -56,9 +56,9 @@ verify::LdSettings check(const VerifyOptions& o, const verify::TypedDiscreteLagr
   p.q0 = parse_state("--q0", o.q0, dflt, why);
   p.p0 = parse_state("--p0", o.p0, dflt, why);
   p.t_end = parse_number("--t-end", o.t_end);
-  if (!(p.t_end > 0) || !std::isfinite(p.t_end) || p.t_end > 1e6)
-    throw ArgumentError("--t-end", "must lie in (0, 1e6]");
-  p.hs = parse_step_list("--h-list", o.h_list, p.t_end, 8);
+  if (!(p.t_end > 0) || !std::isfinite(p.t_end) || p.t_end > kMaxTEnd)
+    throw ArgumentError("--t-end", "must lie in (0, 1e4]");
+  p.hs = parse_step_list("--h-list", o.h_list, p.t_end, kMaxStepsLog10);
   p.expected = parse_number("--expected-order", o.expected);
   if (!(p.expected > 0 && p.expected <= 12))
     throw ArgumentError("--expected-order", "must lie in (0, 12]");
@@ -75,8 +75,8 @@ verify::LdSettings check(const VerifyOptions& o, const verify::TypedDiscreteLagr
   if (p.steps < 1024 || p.steps > 100000000)
     throw ArgumentError("--steps", "must lie in [1024, 1e8]");
   if (!(p.h > 0) || !std::isfinite(p.h) || !std::isfinite(p.h * double(p.steps)) ||
-      p.h * double(p.steps) > 1e15)
-    throw ArgumentError("--h", "must be a positive finite step (h·steps at most 1e15)");
+      p.h * double(p.steps) > kMaxRunTime)
+    throw ArgumentError("--h", "must be a positive finite step (h·steps at most 1e9)");
   if (!o.adaptive.empty() && o.adaptive != "epavi")
     throw ArgumentError("--adaptive",
                         "must be epavi (the energy-preserving adaptive integrator of Sharma et "

@@ -35,7 +35,7 @@ void check_study_options(const VerifyOptions& o, MapStudy& s) {
     if (!(s.order_tol > 0 && s.order_tol <= 1))
       throw ArgumentError("--order-tol", "must lie in (0, 1]");
   }
-  if (o.has("--h-list")) s.hs = parse_step_list("--h-list", o.h_list, s.t_end, 7);
+  if (o.has("--h-list")) s.hs = parse_step_list("--h-list", o.h_list, s.t_end, kMaxStepsLog10);
   if (!o.floor.empty()) {
     s.floor = parse_number("--floor", o.floor);
     if (!(*s.floor >= 0) || !std::isfinite(*s.floor))
@@ -46,7 +46,7 @@ void check_study_options(const VerifyOptions& o, MapStudy& s) {
   s.steps = parse_integer("--steps", o.steps);
   if (s.steps < 1024 || s.steps > 100000000)
     throw ArgumentError("--steps", "must lie in [1024, 1e8]");
-  if (!(s.h > 0) || !std::isfinite(s.h) || s.h * double(s.steps) > 1e9)
+  if (!(s.h > 0) || !std::isfinite(s.h) || s.h * double(s.steps) > kMaxRunTime)
     throw ArgumentError("--h", "must be a positive finite step (h·steps at most 1e9)");
   if (o.json_given) check_output_path(o.json_out, "--json-out", true);
 }
@@ -54,7 +54,7 @@ void check_study_options(const VerifyOptions& o, MapStudy& s) {
 void check_t_end(const VerifyOptions& o, MapStudy& s) {
   if (!o.has("--t-end")) return;
   s.t_end = parse_number("--t-end", o.t_end);
-  if (!(s.t_end > 0) || s.t_end > 1e4) throw ArgumentError("--t-end", "must lie in (0, 1e4]");
+  if (!(s.t_end > 0) || s.t_end > kMaxTEnd) throw ArgumentError("--t-end", "must lie in (0, 1e4]");
 }
 
 void check_initial_state(const VerifyOptions& o, const TestProblem& problem,

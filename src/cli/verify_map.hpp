@@ -47,6 +47,13 @@ struct MapReport : verify::MapMeasurement {
   int finish(const VerifyOptions& o);
 };
 
+/// The limits every route takes (the chapter's "criteria of every route"): the order study's
+/// time T = --t-end, its step counts T/h (--h-list), and the energy run's time h·steps (the
+/// messages say 1e4 and 1e9).
+inline constexpr double kMaxTEnd = 1e4;
+inline constexpr int kMaxStepsLog10 = 7;
+inline constexpr double kMaxRunTime = 1e9;
+
 /// The measurement options common to the routes, checked before any work (ArgumentError naming
 /// the option): --order-tol, --h-list (inside (0, T], at most 1e7 steps), --floor, --h,
 /// --steps, --symmetric, into `s` (whose values are the defaults; s.t_end is already set).
