@@ -440,7 +440,8 @@ std::function<int()> add_verify_command(CLI::App& app) {
   c->add_option("--t-end", o->t_end, "time of the order study (default 5)");
   c->add_option("--h-list", o->h_list, "step sizes of the order study (default 0.2,...,0.0125)");
   c->add_option("--expected-order", o->expected, "order to test against (default 2)");
-  c->add_option("--order-tol", o->order_tol, "accepted |fitted - expected| (default 0.1)");
+  c->add_option("--order-tol", o->order_tol,
+                "accepted |fitted - expected| (default 0.1 with --ld, 0.2 on the other routes)");
   c->add_option("--floor", o->floor,
                 "errors at or below this are left out of the order fit (default: found from the "
                 "data above max(10 x the reference's error, 16 u))");
