@@ -78,7 +78,7 @@ case "$action" in
   book)
     cmake --build "$bdir" -j "$jobs"
     # The book shows the benchmark table: build them (not part of the default build, which the
-    # test build and CI use) and run them now (about 10 s).
+    # test build and CI use); the book target runs them (about four minutes).
     cmake --build "$bdir" --target vibook_bench -j "$jobs"
     VIBOOK_BOOK_BENCH=1 VIBOOK_LONG_STUDIES=1 cmake --build "$bdir" --target book
     echo "book: $PWD/$bdir/book/html/index.html"

@@ -271,7 +271,7 @@ if(DEFINED ENV{VIBOOK_BOOK_BENCH} AND NOT EXISTS ${BENCH_EXE})
 endif()
 if(DEFINED ENV{VIBOOK_BOOK_BENCH} AND EXISTS ${BENCH_EXE})
   file(MAKE_DIRECTORY ${BINARY_DIR}/bench)
-  message(STATUS "Running the benchmarks for the book (about two minutes)")
+  message(STATUS "Running the benchmarks for the book (about four minutes)")
   execute_process(COMMAND ${BENCH_EXE} --benchmark_out=${BENCH_JSON} --benchmark_out_format=json
                           --benchmark_repetitions=5 --benchmark_report_aggregates_only=true
                   OUTPUT_QUIET RESULT_VARIABLE rc)
