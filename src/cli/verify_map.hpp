@@ -19,21 +19,10 @@
 namespace vibook::cli {
 
 using verify::MapStudy;
-using verify::measure_map;
-using verify::naming_failures;
-using verify::run_map;
-using verify::test_problems;
-using verify::TestProblem;
-using verify::vec_text;
-
-using verify::euler_lagrange_acceleration;
-using verify::lagrangian_derivatives;
-using verify::largest_symmetric_eigenvalue;
 using verify::set_typed_hamiltonian;
 using verify::set_typed_lagrangian;
 using verify::set_typed_potential;
-using verify::set_typed_system;
-using verify::typed_hamilton_field;
+using verify::TestProblem;
 
 /// The test problem named by --problem (empty: kepler); ArgumentError naming --problem
 /// otherwise.

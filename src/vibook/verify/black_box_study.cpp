@@ -283,13 +283,10 @@ void measure_black_box(BlackBox& box, const TypedDiscreteLagrangian& sys,
   const bool separable =
       setup.system_from == "--potential" || setup.system_from.rfind("--problem", 0) == 0;
   if (!constrained) black_box_work_precision(s, sys, separable, setup.timings, rep);
-  rep.line("variational order",
-           "not derived: a black-box stepper has no discrete Lagrangian to expand; its order is "
-           "the measured one");
-  rep.js["variational_order"] = {
-      {"derived", false},
-      {"reason",
-       "a black-box stepper has no discrete Lagrangian to expand; its order is the measured one"}};
+  const std::string why =
+      "a black-box stepper has no discrete Lagrangian to expand; its order is the measured one";
+  rep.line("variational order", "not derived: " + why);
+  rep.js["variational_order"] = {{"derived", false}, {"reason", why}};
 }
 
 }  // namespace vibook::verify
