@@ -118,7 +118,7 @@ int run_composition(const VerifyOptions& o) {
     // variational order is not measured for a time-dependent system): its kinetic part only.
     bool timed = false;
     {
-      std::lock_guard<std::mutex> lock(modified::ginac_mutex());
+      std::lock_guard<std::recursive_mutex> lock(modified::ginac_mutex());
       verify::TypedTexts t{"", o.potential, "", "p^2/2 + V(q)", 0};
       t.system_only = true;
       t.allow_time = true;

@@ -38,7 +38,7 @@ std::unique_ptr<verify::TypedDiscreteLagrangian> typed_ld(const VerifyOptions& o
   const int dim = check_dim(o, 3, fmt::format(" with {}", route));
   std::unique_ptr<verify::TypedDiscreteLagrangian> dl;
   {
-    std::lock_guard<std::mutex> lock(modified::ginac_mutex());
+    std::lock_guard<std::recursive_mutex> lock(modified::ginac_mutex());
     verify::TypedTexts texts{ld, o.potential, o.lagrangian, hamiltonian, dim};
     texts.allow_time = allow_time;
     dl = std::make_unique<verify::TypedDiscreteLagrangian>(texts);

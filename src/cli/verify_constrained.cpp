@@ -43,7 +43,7 @@ int run_constrained_typed(const VerifyOptions& o, verify::ConstrainedStep step) 
   }
   std::unique_ptr<verify::TypedDiscreteLagrangian> sys;
   {
-    std::lock_guard<std::mutex> lock(modified::ginac_mutex());
+    std::lock_guard<std::recursive_mutex> lock(modified::ginac_mutex());
     verify::TypedTexts texts{o.ld, o.potential, "", "p^2/2 + V(q)", dim};
     texts.system_only = !del;
     texts.constraints = o.constraints;

@@ -107,7 +107,7 @@ std::unique_ptr<verify::TypedDiscreteLagrangian> check_typed_system(
   const int dim = check_dim(o, 3, fmt::format(" with {}", route));
   std::unique_ptr<verify::TypedDiscreteLagrangian> sys;
   {
-    std::lock_guard<std::mutex> lock(modified::ginac_mutex());
+    std::lock_guard<std::recursive_mutex> lock(modified::ginac_mutex());
     verify::TypedTexts texts{"", o.potential, option == "--lagrangian" ? o.lagrangian : "",
                              option == "--lagrangian"    ? ""
                              : option == "--hamiltonian" ? o.hamiltonian

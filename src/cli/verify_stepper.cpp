@@ -102,7 +102,7 @@ Plan check(const VerifyOptions& o) {
     p.setup.protocol = o.stepper_protocol == "2" ? 2 : 1;
   }
   {
-    std::lock_guard<std::mutex> lock(modified::ginac_mutex());
+    std::lock_guard<std::recursive_mutex> lock(modified::ginac_mutex());
     verify::TypedTexts t{"", o.potential, "", p.setup.hamiltonian, dim};
     t.system_only = true;
     t.allow_time = true;

@@ -27,7 +27,7 @@ const char* kMidpoint = "h*((q1-q0)^2/(2*h^2) - V((q0+q1)/2))";
 const char* kTrapezoid = "(q1-q0)^2/(2*h) - h*(V(q0)+V(q1))/2";
 
 const vibook::verify::TypedDiscreteLagrangian& typed(const char* ld) {
-  std::lock_guard<std::mutex> lock(vibook::modified::ginac_mutex());
+  std::lock_guard<std::recursive_mutex> lock(vibook::modified::ginac_mutex());
   static std::map<std::string, std::unique_ptr<vibook::verify::TypedDiscreteLagrangian>> cache;
   auto& p = cache[ld];
   if (!p) p = std::make_unique<vibook::verify::TypedDiscreteLagrangian>(ld, kKepler);
@@ -52,7 +52,7 @@ void run(benchmark::State& state, Integrator& vi) {
 }
 
 void tape(benchmark::State& state, const char* ld, bool native) {
-  std::unique_lock<std::mutex> lock(vibook::modified::ginac_mutex(), std::defer_lock);
+  std::unique_lock<std::recursive_mutex> lock(vibook::modified::ginac_mutex(), std::defer_lock);
   const auto& dl = typed(ld);
   lock.lock();
   const vibook::verify::CompiledDiscreteLagrangian<2> c(dl, native);

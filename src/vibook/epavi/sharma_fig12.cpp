@@ -268,7 +268,7 @@ std::vector<claims::ClaimResult> run_fig1(const Context& ctx) {
   // The monitor functions (26)–(27) as printed, against the ones AVI1 and AVI2 step with.
   std::vector<claims::FormulaComparison> cs;
   {
-    const std::lock_guard<std::mutex> lock(modified::ginac_mutex());  // GiNaC: one thread
+    const std::lock_guard<std::recursive_mutex> lock(modified::ginac_mutex());  // GiNaC: one thread
     cs = printed_detail::sharma_discrete_prints("monitors", "sharma-fig1");
   }
   std::vector<claims::ClaimResult> out;

@@ -278,7 +278,7 @@ std::vector<claims::ClaimResult> run_eq39(const Context&) {
   std::vector<claims::FormulaComparison> cs;
   std::vector<std::pair<std::string, double>> route;
   {
-    const std::lock_guard<std::mutex> lock(modified::ginac_mutex());  // GiNaC: one thread
+    const std::lock_guard<std::recursive_mutex> lock(modified::ginac_mutex());  // GiNaC: one thread
     cs = printed_detail::sharma_discrete_prints("eq39", "check-s-eq39", &route);
   }
   // [s-eq39-criterion]

@@ -264,7 +264,7 @@ std::vector<claims::ClaimResult> run(const Context&) {
   // comparison of (5) joins the erratum above.
   std::vector<claims::FormulaComparison> cs;
   {
-    const std::lock_guard<std::mutex> lock(modified::ginac_mutex());  // GiNaC: one thread
+    const std::lock_guard<std::recursive_mutex> lock(modified::ginac_mutex());  // GiNaC: one thread
     cs = printed_detail::vermeeren_example1("check-v-ex1");
   }
   printed::conclude(r, cs, errata);

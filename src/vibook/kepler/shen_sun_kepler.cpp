@@ -577,7 +577,7 @@ std::vector<claims::ClaimResult> run_work_precision(const Context& ctx) {
 // equation ẍ = F_mod (Theorem 16), so along the Kepler orbit dA/dt = (∂A/∂ẋ)(F_mod − F_Kepler)
 // to first order, which is what we integrate, with F_mod from the engine to h⁴.
 std::vector<claims::ClaimResult> run_t13(const Context&) {
-  const std::lock_guard<std::mutex> lock(modified::ginac_mutex());  // GiNaC: one thread
+  const std::lock_guard<std::recursive_mutex> lock(modified::ginac_mutex());  // GiNaC: one thread
   const double e = 0.6, T = 2 * std::numbers::pi;
   const KeplerOrbit orbit = KeplerOrbit::perihelion(e);
   const State<2> s0 = kepler_perihelion_state(e);

@@ -116,7 +116,7 @@ std::vector<claims::ClaimResult> run(const Context&) {
   // comparison of (14) joins the erratum above.
   std::vector<claims::FormulaComparison> cs;
   {
-    const std::lock_guard<std::mutex> lock(modified::ginac_mutex());  // GiNaC: one thread
+    const std::lock_guard<std::recursive_mutex> lock(modified::ginac_mutex());  // GiNaC: one thread
     cs = printed_detail::sharma_discrete_prints("del", "check-s-del");
   }
   printed::conclude(r, cs, errata);

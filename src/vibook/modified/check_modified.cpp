@@ -169,7 +169,7 @@ std::vector<claims::ClaimResult> appendix_a(std::vector<claims::ClaimResult>& er
 }
 
 std::vector<claims::ClaimResult> run(const Context&) {
-  const std::lock_guard<std::mutex> lock(modified::ginac_mutex());  // GiNaC: one thread
+  const std::lock_guard<std::recursive_mutex> lock(modified::ginac_mutex());  // GiNaC: one thread
   std::vector<claims::ClaimResult> errata;
   std::vector<claims::ClaimResult> out = printed_detail::vermeeren_prints(errata);
   for (auto& r : printed_detail::shen_sun_prints(errata)) out.push_back(std::move(r));

@@ -278,7 +278,7 @@ claims::ClaimResult summarize(const std::string& id, const std::vector<Study>& s
 // [v-t16-criterion]
 
 std::vector<claims::ClaimResult> run(const Context&) {
-  const std::lock_guard<std::mutex> lock(modified::ginac_mutex());  // GiNaC: one thread
+  const std::lock_guard<std::recursive_mutex> lock(modified::ginac_mutex());  // GiNaC: one thread
   const std::vector<LD> xp = {1.0L}, vp = {0.5L};                   // pendulum
   const std::vector<LD> xk = {1.0L, 0.2L}, vk = {0.1L, 0.9L};       // Kepler, a bound orbit
   std::vector<Study> defects;

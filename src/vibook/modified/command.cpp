@@ -55,7 +55,7 @@ std::string derive(const Derivation& d) {
   const Potential p = d.potential;
   const Format f = d.format;
   const int dim = d.dim;
-  std::lock_guard<std::mutex> lock(ginac_mutex());
+  std::lock_guard<std::recursive_mutex> lock(ginac_mutex());
   std::string out;
   const auto user_dl = [&]() -> SymbolicDL {
     auto jets = std::make_shared<JetSpace>(dim);

@@ -32,8 +32,8 @@ void apply_inexact_policy(const SymbolicDL& dl, InexactLiterals policy) {
 using GiNaC::numeric;
 using SubsMap = std::map<ex, Series, GiNaC::ex_is_less>;
 
-std::mutex& ginac_mutex() {
-  static std::mutex m;
+std::recursive_mutex& ginac_mutex() {
+  static std::recursive_mutex m;
   return m;
 }
 

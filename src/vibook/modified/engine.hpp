@@ -30,15 +30,11 @@
 #include "vibook/core/types.hpp"
 #include "vibook/modified/canonical.hpp"
 #include "vibook/modified/ginac_eigen.hpp"
+#include "vibook/modified/ginac_lock.hpp"
 #include "vibook/modified/jets.hpp"
 #include "vibook/modified/series.hpp"
 
 namespace vibook::modified {
-
-/// GiNaC is not thread-safe (reference counts of shared constants are not atomic): code that
-/// may run beside other GiNaC users in the same process (the checks, run in parallel by
-/// `vibook claims`) holds this lock for as long as it uses the engine.
-std::mutex& ginac_mutex();
 
 /// Highest order in h the engine accepts (the command line checks it).
 inline constexpr int max_order = 10;

@@ -40,7 +40,7 @@ struct CosinePendulum {
 };
 
 std::vector<claims::ClaimResult> run(const Context& ctx) {
-  const std::lock_guard<std::mutex> lock(modified::ginac_mutex());  // GiNaC: one thread
+  const std::lock_guard<std::recursive_mutex> lock(modified::ginac_mutex());  // GiNaC: one thread
   const double x0 = std::numbers::pi / 2, p0 = 0.5, h = 0.25;
   const int steps = 2000;
   auto J = std::make_shared<modified::JetSpace>(1);

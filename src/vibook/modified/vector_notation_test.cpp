@@ -49,7 +49,7 @@ ex read_back_difference(const std::string& latex, const vibook::printed::JetNota
 }  // namespace
 
 TEST_CASE("vector notation: the L_mod of VI-1 groups as Shen & Sun (4.21) and reads back") {
-  std::lock_guard<std::mutex> lock(ginac_mutex());
+  std::lock_guard<std::recursive_mutex> lock(ginac_mutex());
   Engine E(make_discrete_lagrangian(Method::vi1, Potential::generic, 2), 2);
   const auto L = E.l_mod();
   const auto v = VectorNotation::of(E.jets(), L);
@@ -78,7 +78,7 @@ TEST_CASE("vector notation: the L_mod of VI-1 groups as Shen & Sun (4.21) and re
 }
 
 TEST_CASE("vector notation: the modified equations of VI-1 (4.22) and VI-2 read back") {
-  std::lock_guard<std::mutex> lock(ginac_mutex());
+  std::lock_guard<std::recursive_mutex> lock(ginac_mutex());
   for (Method m : {Method::vi1, Method::vi2}) {
     Engine E(make_discrete_lagrangian(m, Potential::generic, 2), 2);
     const auto f = E.modified_equation();
@@ -114,7 +114,7 @@ TEST_CASE("vector notation: the modified equations of VI-1 (4.22) and VI-2 read 
 }
 
 TEST_CASE("vector notation: Störmer-Verlet (4.14) and (4.15) have nothing left over") {
-  std::lock_guard<std::mutex> lock(ginac_mutex());
+  std::lock_guard<std::recursive_mutex> lock(ginac_mutex());
   Engine E(make_discrete_lagrangian(Method::sv, Potential::generic, 2), 2);
   const auto L = E.l_mod();
   const auto f = E.modified_equation();
@@ -135,7 +135,7 @@ TEST_CASE("vector notation: Störmer-Verlet (4.14) and (4.15) have nothing left 
 }
 
 TEST_CASE("vector notation: a term no invariant accounts for stays in components") {
-  std::lock_guard<std::mutex> lock(ginac_mutex());
+  std::lock_guard<std::recursive_mutex> lock(ginac_mutex());
   Engine E(make_discrete_lagrangian(Method::sv, Potential::generic, 2), 2);
   const JetSpace& J = E.jets();
   auto L = E.l_mod();
@@ -157,7 +157,7 @@ TEST_CASE("vector notation: a term no invariant accounts for stays in components
 
 TEST_CASE(
     "vector notation: meshed Lagrangians and the L_mod of VI-2 and of three dimensions read back") {
-  std::lock_guard<std::mutex> lock(ginac_mutex());
+  std::lock_guard<std::recursive_mutex> lock(ginac_mutex());
   struct Case {
     Method m;
     int dim;
@@ -190,7 +190,7 @@ TEST_CASE(
 
 TEST_CASE(
     "vector notation: two different derivatives of x group as a dot product (x-dot . x-dddot)") {
-  std::lock_guard<std::mutex> lock(ginac_mutex());
+  std::lock_guard<std::recursive_mutex> lock(ginac_mutex());
   Engine E(make_discrete_lagrangian(Method::sv, Potential::generic, 2), 3);
   const JetSpace& J = E.jets();
   const auto L = E.l_mod();  // makes the jets through x''' the engine's expansion needs

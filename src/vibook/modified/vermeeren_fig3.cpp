@@ -63,7 +63,7 @@ Precession precession(const AngleFit& a, double t_end) {
 }
 
 std::vector<claims::ClaimResult> run(const Context& ctx) {
-  const std::lock_guard<std::mutex> lock(modified::ginac_mutex());  // GiNaC: one thread
+  const std::lock_guard<std::recursive_mutex> lock(modified::ginac_mutex());  // GiNaC: one thread
   const double h = 0.5, t_end = 700.0;                              // about 40 revolutions
   const Vec<double, 2> x0(-3.0, 0.0), v0(0.0, 0.4);
   const KeplerOrbit orbit = KeplerOrbit::from_state(x0, v0);

@@ -148,7 +148,7 @@ std::vector<claims::ClaimResult> run_ss_t8(const Context&) {
   std::vector<claims::FormulaComparison> cs;
   std::vector<std::pair<std::string, double>> route;
   {
-    const std::lock_guard<std::mutex> lock(modified::ginac_mutex());  // GiNaC: one thread
+    const std::lock_guard<std::recursive_mutex> lock(modified::ginac_mutex());  // GiNaC: one thread
     cs = printed_detail::shen_sun_relativistic_prints("check-ss-t8", &m.trajectory, c, h, &route);
   }
   // [ss-t8-route-criterion]

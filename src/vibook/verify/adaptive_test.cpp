@@ -26,7 +26,7 @@ double pendulum_energy(const Eigen::VectorXd& z) { return 0.5 * z(1) * z(1) - st
 TEST_CASE("adaptive: the typed midpoint L_d run as EpAVI is the library's EpAVI (25)") {
   std::unique_ptr<verify::TypedDiscreteLagrangian> dl;
   {
-    std::lock_guard<std::mutex> lock(modified::ginac_mutex());
+    std::lock_guard<std::recursive_mutex> lock(modified::ginac_mutex());
     dl = std::make_unique<verify::TypedDiscreteLagrangian>(kMidpoint, "-cos(x)");
   }
   const auto Ld = dl->bind<1>();
@@ -73,7 +73,7 @@ TEST_CASE("adaptive: the typed midpoint L_d run as EpAVI is the library's EpAVI 
   {
     std::unique_ptr<verify::TypedDiscreteLagrangian> trap;
     {
-      std::lock_guard<std::mutex> lock(modified::ginac_mutex());
+      std::lock_guard<std::recursive_mutex> lock(modified::ginac_mutex());
       trap = std::make_unique<verify::TypedDiscreteLagrangian>(
           "h*((q1-q0)^2/(2*h^2) - (V(q0)+V(q1))/2)", "-cos(x)");
     }
@@ -91,7 +91,7 @@ TEST_CASE("adaptive: the typed midpoint L_d run as EpAVI is the library's EpAVI 
 TEST_CASE("adaptive: a doubled kinetic term keeps its own energy and fails on the intended one") {
   std::unique_ptr<verify::TypedDiscreteLagrangian> dl;
   {
-    std::lock_guard<std::mutex> lock(modified::ginac_mutex());
+    std::lock_guard<std::recursive_mutex> lock(modified::ginac_mutex());
     dl = std::make_unique<verify::TypedDiscreteLagrangian>("h*((q1-q0)^2/h^2 - V((q0+q1)/2))",
                                                            "-cos(x)");
   }
@@ -110,7 +110,7 @@ TEST_CASE("adaptive: a doubled kinetic term keeps its own energy and fails on th
 TEST_CASE("adaptive: Kepler at e = 0.8 has no admissible step and the fold is recorded") {
   std::unique_ptr<verify::TypedDiscreteLagrangian> dl;
   {
-    std::lock_guard<std::mutex> lock(modified::ginac_mutex());
+    std::lock_guard<std::recursive_mutex> lock(modified::ginac_mutex());
     dl = std::make_unique<verify::TypedDiscreteLagrangian>(kMidpoint, "-1/sqrt(x^2+y^2)");
   }
   const auto Ld = dl->bind<2>();

@@ -74,7 +74,7 @@ template <int N>
 Symmetry decide_symmetry(const TypedDiscreteLagrangian& dl) {
   const auto Ld = dl.bind<N>();
   {
-    std::lock_guard<std::mutex> lock(modified::ginac_mutex());
+    std::lock_guard<std::recursive_mutex> lock(modified::ginac_mutex());
     Vec<GiNaC::ex, N> a, b;
     for (int i = 0; i < N; ++i) {
       a(i) = GiNaC::symbol(fmt::format("a{}", i + 1));
@@ -171,7 +171,7 @@ void measure_n(const TypedLdSystem& o, const TypedDiscreteLagrangian& dl, Compos
   const auto Ld = dl.bind<N>();
   std::shared_ptr<DelIntegrator<N, CompiledDiscreteLagrangian<N>>> tape;
   if (!timed) {  // (the tape's inputs are q0, q1 and h: an L_d in t is stepped on its tree)
-    std::lock_guard<std::mutex> lock(modified::ginac_mutex());
+    std::lock_guard<std::recursive_mutex> lock(modified::ginac_mutex());
     tape = std::make_shared<DelIntegrator<N, CompiledDiscreteLagrangian<N>>>(
         CompiledDiscreteLagrangian<N>(dl));
   }

@@ -23,7 +23,7 @@ void measure_problem(const ConstrainedProblem& problem, bool project, const std:
                      const std::vector<double>& p0, MapStudy s, MapMeasurement& rep) {
   std::unique_ptr<TypedDiscreteLagrangian> sys;
   {
-    std::lock_guard<std::mutex> lock(modified::ginac_mutex());
+    std::lock_guard<std::recursive_mutex> lock(modified::ginac_mutex());
     TypedTexts t{"", problem.potential, "", "p^2/2 + V(q)", static_cast<int>(problem.q0.size())};
     t.system_only = true;
     t.constraints = problem.constraint_texts;

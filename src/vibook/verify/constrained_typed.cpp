@@ -61,7 +61,7 @@ struct TypedConstrained {
   std::vector<std::shared_ptr<const PointTape<N>>> constraints;
 
   TypedConstrained(const TypedDiscreteLagrangian& s, const std::string& potential_text) {
-    std::lock_guard<std::mutex> lock(modified::ginac_mutex());
+    std::lock_guard<std::recursive_mutex> lock(modified::ginac_mutex());
     if (!potential_text.empty()) potential = std::make_shared<const PointTape<N>>(potential_text);
     for (int i = 0; i < s.constraint_count(); ++i)
       constraints.push_back(std::make_shared<const PointTape<N>>(s.constraint_text(i)));
@@ -131,7 +131,7 @@ void measure_n(const TypedDiscreteLagrangian& sys, const ConstrainedTexts& texts
     // depends on them when they change).
     std::shared_ptr<CompiledDiscreteLagrangian<N>> ld;
     {
-      std::lock_guard<std::mutex> lock(modified::ginac_mutex());
+      std::lock_guard<std::recursive_mutex> lock(modified::ginac_mutex());
       ld = std::make_shared<CompiledDiscreteLagrangian<N>>(sys, false);
     }
     s.step = naming_failures(

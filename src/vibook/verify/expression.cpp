@@ -555,7 +555,10 @@ TypedDiscreteLagrangian::TypedDiscreteLagrangian(const std::string& ld,
                                                  const std::string& potential, int dim)
     : TypedDiscreteLagrangian(TypedTexts{ld, potential, "", "", dim}) {}
 
-TypedDiscreteLagrangian::TypedDiscreteLagrangian(const TypedTexts& t) { finish(t); }
+TypedDiscreteLagrangian::TypedDiscreteLagrangian(const TypedTexts& t) {
+  const std::lock_guard<std::recursive_mutex> lock(modified::ginac_mutex());  // the numbers
+  finish(t);
+}
 
 void TypedDiscreteLagrangian::finish(const TypedTexts& t) {
   // A text that mixes a vector variable with numbers (`q*cos(t)` added to a scalar) is not

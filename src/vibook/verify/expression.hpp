@@ -59,6 +59,7 @@
 #include "vibook/core/errors.hpp"
 #include "vibook/core/types.hpp"
 #include "vibook/mechanics/discrete_lagrangian.hpp"
+#include "vibook/modified/ginac_lock.hpp"
 
 namespace vibook::verify {
 
@@ -93,7 +94,59 @@ struct TypedTexts {
   std::vector<std::string> constraints{};
 };
 
-class TypedDiscreteLagrangian {
+namespace detail {
+
+/// The parsed texts of a TypedDiscreteLagrangian: its expression tree (each constant keeps
+/// its exact value, a GiNaC number) and the roots of each text. Copied and destroyed under
+/// modified::ginac_mutex() (GinacGuarded), so that a typed system can be built, copied into a
+/// kernel and dropped beside other threads' GiNaC work (the field audit's rows in parallel).
+struct TypedStorage {
+  enum class Op {
+    constant,
+    var,        ///< a vector variable (slot)
+    component,  ///< one component of a vector variable (slot, index)
+    h,
+    t,        ///< the time (in --ld: the step's start time)
+    literal,  ///< a vector written out, [a, b, …] (items)
+    add,
+    sub,
+    mul,
+    dot,
+    div,
+    neg,
+    power,
+    func,
+    potential_call,
+    gradient_call,  ///< ∇V at a vector: a vector
+    param           ///< a symbolic parameter (index)
+  };
+  enum class Fn { sin, cos, exp, log, sqrt };
+  struct Node {
+    Op op = Op::constant;
+    bool vector = false;      ///< the node's value is a vector (of dimension dim())
+    double value = 0;         ///< constant: the nearest double
+    double num = 0, den = 1;  ///< constant: numerator and denominator, when both are doubles
+    bool fraction = false;    ///< num/den is the exact value
+    GiNaC::numeric exact;     ///< constant: the exact value
+    int slot = 0;             ///< var, component: which variable
+    int index = 0;            ///< component: 0-based
+    int twice_exponent = 0;   ///< power: 2 × the exponent (an integer)
+    Fn fn = Fn::sin;
+    int a = -1, b = -1;      ///< operands
+    std::vector<int> items;  ///< literal: its entries
+  };
+  int dim_ = 0;
+  std::vector<Node> nodes_;
+  std::vector<GiNaC::symbol> params_;  ///< the symbolic parameters, in the order given
+  int ld_root_ = -1, potential_root_ = -1, lagrangian_root_ = -1, hamiltonian_root_ = -1;
+  std::vector<int> constraint_roots_;
+  std::vector<std::string> constraint_texts_;
+  bool system_uses_t_ = false, ld_uses_t_ = false;
+};
+
+}  // namespace detail
+
+class TypedDiscreteLagrangian : private modified::GinacGuarded<detail::TypedStorage> {
  public:
   /// Parse and check both texts; `dim` 0 means: from the texts (see the file comment).
   TypedDiscreteLagrangian(const std::string& ld, const std::string& potential, int dim = 0);
@@ -241,40 +294,6 @@ class TypedDiscreteLagrangian {
  private:
   // Vector variables: the slots of Inputs::var.
   static constexpr int kQ0 = 0, kQ1 = 1, kQ = 2, kV = 3, kP = 4, kX = 5, kVars = 6;
-  enum class Op {
-    constant,
-    var,        ///< a vector variable (slot)
-    component,  ///< one component of a vector variable (slot, index)
-    h,
-    t,        ///< the time (in --ld: the step's start time)
-    literal,  ///< a vector written out, [a, b, …] (items)
-    add,
-    sub,
-    mul,
-    dot,
-    div,
-    neg,
-    power,
-    func,
-    potential_call,
-    gradient_call,  ///< ∇V at a vector: a vector
-    param           ///< a symbolic parameter (index)
-  };
-  enum class Fn { sin, cos, exp, log, sqrt };
-  struct Node {
-    Op op = Op::constant;
-    bool vector = false;      ///< the node's value is a vector (of dimension dim())
-    double value = 0;         ///< constant: the nearest double
-    double num = 0, den = 1;  ///< constant: numerator and denominator, when both are doubles
-    bool fraction = false;    ///< num/den is the exact value
-    GiNaC::numeric exact;     ///< constant: the exact value
-    int slot = 0;             ///< var, component: which variable
-    int index = 0;            ///< component: 0-based
-    int twice_exponent = 0;   ///< power: 2 × the exponent (an integer)
-    Fn fn = Fn::sin;
-    int a = -1, b = -1;      ///< operands
-    std::vector<int> items;  ///< literal: its entries
-  };
   template <class S, int N>
   struct Inputs {
     std::array<std::array<S, N>, kVars> var{};
@@ -526,14 +545,6 @@ class TypedDiscreteLagrangian {
 
   void finish(const TypedTexts& t);
   void finish_pass(const TypedTexts& t, bool scalar_vars);
-
-  int dim_ = 0;
-  std::vector<Node> nodes_;
-  std::vector<GiNaC::symbol> params_;  ///< the symbolic parameters, in the order given
-  int ld_root_ = -1, potential_root_ = -1, lagrangian_root_ = -1, hamiltonian_root_ = -1;
-  std::vector<int> constraint_roots_;
-  std::vector<std::string> constraint_texts_;
-  bool system_uses_t_ = false, ld_uses_t_ = false;
 };
 
 }  // namespace vibook::verify

@@ -37,7 +37,7 @@ void refused(const std::string& ld, const std::string& potential, int dim, const
              const std::string& text) {
   INFO("--ld ", ld, " --potential ", potential, " --dim ", dim);
   try {
-    std::lock_guard<std::mutex> lock(modified::ginac_mutex());
+    std::lock_guard<std::recursive_mutex> lock(modified::ginac_mutex());
     TypedDiscreteLagrangian dl(ld, potential, dim);
     FAIL("accepted");
   } catch (const ArgumentError& e) {
@@ -49,7 +49,7 @@ void refused(const std::string& ld, const std::string& potential, int dim, const
 }  // namespace
 
 TEST_CASE("typed discrete Lagrangian: Simpson on Hénon–Heiles is the C++ template") {
-  std::lock_guard<std::mutex> lock(modified::ginac_mutex());
+  std::lock_guard<std::recursive_mutex> lock(modified::ginac_mutex());
   const TypedDiscreteLagrangian typed(kSimpson, kHenonHeiles);
   CHECK(typed.dim() == 2);
   const auto Ld = typed.bind<2>();
@@ -84,7 +84,7 @@ TEST_CASE("typed discrete Lagrangian: Simpson on Hénon–Heiles is the C++ temp
 }
 
 TEST_CASE("typed discrete Lagrangian: numbers are exact, decimals are the fractions they denote") {
-  std::lock_guard<std::mutex> lock(modified::ginac_mutex());
+  std::lock_guard<std::recursive_mutex> lock(modified::ginac_mutex());
   // 0.5 and 1/2, 0.1 and 1/10: the same expression, exactly.
   const TypedDiscreteLagrangian a("0.5*(q1-q0)^2/h - 0.1*h*V(q0)", "x^2", 0);
   const TypedDiscreteLagrangian b("(q1-q0)^2/(2*h) - h*V(q0)/10", "x^2", 0);
@@ -161,7 +161,7 @@ TEST_CASE("typed discrete Lagrangian: every malformed text is refused, naming it
 
 TEST_CASE(
     "typed discrete Lagrangian: components, written vectors, grad(V) and the intended system") {
-  std::lock_guard<std::mutex> lock(modified::ginac_mutex());
+  std::lock_guard<std::recursive_mutex> lock(modified::ginac_mutex());
   const GiNaC::symbol a("a"), b("b"), c("c"), d("d"), h("h");
   const Vec<GiNaC::ex, 2> q0(a, b), q1(c, d);
   auto same = [](const GiNaC::ex& x, const GiNaC::ex& y) { return (x - y).normal().is_zero(); };
@@ -206,7 +206,7 @@ TEST_CASE(
 }
 
 TEST_CASE("typed symplectic Euler: the engine's H_1 = p sin(q)/2, and a run conserves H + h H_1") {
-  std::lock_guard<std::mutex> lock(modified::ginac_mutex());
+  std::lock_guard<std::recursive_mutex> lock(modified::ginac_mutex());
   // q1 = q0 + h p0, p1 = p0 - h V'(q1) for V = -cos q (the variant of the chapter's example)
   const TypedDiscreteLagrangian t("h*( ((q1-q0)/h)^2/2 - V(q1) )", "-cos(x)");
   const auto Ld = t.bind<1>();
@@ -239,7 +239,7 @@ TEST_CASE("engine: a non-separable Lagrangian with a conformal factor, however i
   // not see that the radicals cancel). Midpoint, trapezoidal and a mixed discretization, each
   // written both ways, must give one modified equation (to h²) per discretization; and its h^0
   // term must be the Euler–Lagrange equation of L, solved for the accelerations.
-  std::lock_guard<std::mutex> lock(modified::ginac_mutex());
+  std::lock_guard<std::recursive_mutex> lock(modified::ginac_mutex());
   const auto as_written = [](const std::string& y, const std::string& vx, const std::string& vy,
                              bool first_form) {
     const std::string c = "(1+(" + y + ")^2)";

@@ -30,7 +30,7 @@ class LdKernelN final : public LdKernel {
     // as straight-line code), or with --reference through nested AutoDiff on the expression
     // tree, the path the tape is checked against.
     if (!reference_evaluation) {
-      std::lock_guard<std::mutex> lock(modified::ginac_mutex());
+      std::lock_guard<std::recursive_mutex> lock(modified::ginac_mutex());
       tape_.emplace(CompiledDiscreteLagrangian<N>(dl));
     }
   }

@@ -234,7 +234,7 @@ LdStudy run_ld_study(const TypedDiscreteLagrangian& dl, const LdSettings& p) {
   bool unscaled = false;  // L_d/h has negative powers of h: not of the size h·L
   json jcons;
   run("consistency", [&] {
-    std::lock_guard<std::mutex> lock(modified::ginac_mutex());
+    std::lock_guard<std::recursive_mutex> lock(modified::ginac_mutex());
     std::vector<GiNaC::symbol> x, v;
     std::vector<modified::ex> X(n), Xh(n), Vv(n);
     const GiNaC::symbol h("h");
@@ -475,7 +475,7 @@ LdStudy run_ld_study(const TypedDiscreteLagrangian& dl, const LdSettings& p) {
                  jvar["lagrangian_from"] = "none: h^-1 L_d does not tend to the Lagrangian of H";
                  first_term = "the h^1 term, see consistency";
                } else {
-                 std::lock_guard<std::mutex> lock(modified::ginac_mutex());
+                 std::lock_guard<std::recursive_mutex> lock(modified::ginac_mutex());
                  auto jets = std::make_shared<modified::JetSpace>(n);
                  modified::Engine engine(K.symbolic(jets), var_k);
                  modified::ex L;
@@ -806,7 +806,7 @@ LdStudy run_ld_study(const TypedDiscreteLagrangian& dl, const LdSettings& p) {
     phases.push_back({"modified", "skipped", why, kLdOk, 0});
     line("modified equation", "not derived: " + why);
   } else if (run("modified", [&] {
-               std::lock_guard<std::mutex> lock(modified::ginac_mutex());
+               std::lock_guard<std::recursive_mutex> lock(modified::ginac_mutex());
                auto jets = std::make_shared<modified::JetSpace>(n);
                modified::Engine engine(K.symbolic(jets), p.modified_order);
                const auto& f = engine.modified_equation();

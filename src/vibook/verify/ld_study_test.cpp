@@ -15,7 +15,7 @@ using vibook::verify::LdSettings;
 using vibook::verify::TypedDiscreteLagrangian;
 
 std::unique_ptr<TypedDiscreteLagrangian> typed(const std::string& ld, const std::string& V) {
-  std::lock_guard<std::mutex> lock(vibook::modified::ginac_mutex());
+  std::lock_guard<std::recursive_mutex> lock(vibook::modified::ginac_mutex());
   return std::make_unique<TypedDiscreteLagrangian>(vibook::verify::TypedTexts{ld, V, "", "", 0});
 }
 

@@ -159,7 +159,7 @@ modified::ex shown_term(const modified::ex& e, const GiNaC::numeric& below) {
 
 // Is L polynomial in q and v? (Then the engine is quick in any dimension.)
 bool polynomial_lagrangian(const modified::SymbolicLagrangian& L, int dim) {
-  std::lock_guard<std::mutex> lock(modified::ginac_mutex());
+  std::lock_guard<std::recursive_mutex> lock(modified::ginac_mutex());
   modified::JetSpace J(dim);
   std::vector<modified::ex> x, v;
   GiNaC::lst vars;
@@ -183,10 +183,18 @@ int order_above(const std::vector<modified::ex>& defect, const GiNaC::numeric& z
 // expected order (s.expected, known when the hook runs), printed on the line "  derived" and
 // kept in the JSON under variational_order.engine; part of the verdict when the expected order
 // is an integer up to the engine's maximum.
-void install(Derivation d, SymbolicUse use, MapStudy& study) {
-  const bool quick = !d.skip.empty() || d.dim == 1 || polynomial_lagrangian(d.L, d.dim);
-  if (use == SymbolicUse::never) d.skip = "not derived (--symbolic never)";
-  study.derive_variational_order = [d, use, quick](const MapStudy& s, MapMeasurement& rep) {
+//
+// The hook outlives this call and may run, be copied and be destroyed on another thread (the
+// rows of a field audit run in parallel): it keeps the Derivation, whose GiNaC objects are
+// not thread-safe, through modified::ginac_shared.
+void install(Derivation derivation, SymbolicUse use, MapStudy& study) {
+  const std::lock_guard<std::recursive_mutex> lock(modified::ginac_mutex());
+  const bool quick = !derivation.skip.empty() || derivation.dim == 1 ||
+                     polynomial_lagrangian(derivation.L, derivation.dim);
+  if (use == SymbolicUse::never) derivation.skip = "not derived (--symbolic never)";
+  study.derive_variational_order = [shared = modified::ginac_shared(std::move(derivation)), use,
+                                    quick](const MapStudy& s, MapMeasurement& rep) {
+    const Derivation& d = *shared;
     json& jv = rep.js["variational_order"];
     const bool judged = s.expected == std::floor(s.expected) && s.expected <= modified::max_order;
     const int K = static_cast<int>(std::min<double>(std::ceil(s.expected), modified::max_order));
@@ -230,7 +238,7 @@ void install(Derivation d, SymbolicUse use, MapStudy& study) {
     int r = -1;
     std::string first_term;
     try {
-      std::lock_guard<std::mutex> lock(modified::ginac_mutex());
+      const std::lock_guard<std::recursive_mutex> lock(modified::ginac_mutex());
       auto J = std::make_shared<modified::JetSpace>(d.dim);
       modified::Engine engine(d.make_dl(J), K);
       std::vector<modified::ex> x, v;
@@ -380,6 +388,7 @@ const GiNaC::numeric kZeroBelow = GiNaC::numeric(1) / GiNaC::numeric(10).power(2
 
 modified::ExactQuadrature cut_quadrature(const Quadrature& rule) {
   using GiNaC::numeric;
+  const std::lock_guard<std::recursive_mutex> lock(modified::ginac_mutex());
   const MpfrDigits digits(kCompositionDigits);
   const QuadratureT<mpfr_real> r = quadrature_in<mpfr_real>(rule);
   const std::size_t s = r.c.size();
@@ -404,6 +413,7 @@ modified::ExactQuadrature cut_quadrature(const Quadrature& rule) {
 void derive_galerkin_variational_order(const MethodSpec& spec, int dim,
                                        modified::SymbolicLagrangian L, SymbolicUse use,
                                        MapStudy& study) {
+  const std::lock_guard<std::recursive_mutex> lock(modified::ginac_mutex());
   const std::optional<modified::ExactQuadrature> rule =
       modified::exact_quadrature(spec.rule.name, spec.stages);
   Derivation d;
@@ -625,6 +635,7 @@ modified::SymbolicDL composition_dl(const std::string& base, const ExactStages& 
 
 void derive_composition_variational_order(const CompositionSpec& spec, const std::string& problem,
                                           SymbolicUse use, MapStudy& study) {
+  const std::lock_guard<std::recursive_mutex> lock(modified::ginac_mutex());
   Derivation d;
   d.L = test_problem_lagrangian(problem);
   const TestProblem* tp = find_problem(problem);
@@ -656,6 +667,7 @@ void derive_composition_variational_order(const CompositionSpec& spec, const std
 void derive_composition_variational_order(const CompositionSpec& spec, int dim,
                                           const SymbolicStageDl& ld, modified::SymbolicLagrangian L,
                                           SymbolicUse use, MapStudy& study) {
+  const std::lock_guard<std::recursive_mutex> lock(modified::ginac_mutex());
   Derivation d;
   d.L = std::move(L);
   d.dim = dim;
@@ -691,6 +703,7 @@ void derive_composition_variational_order(const CompositionSpec& spec, int dim,
 }
 
 std::vector<std::pair<GiNaC::numeric, bool>> catalogue_rationals(const std::string& name) {
+  const std::lock_guard<std::recursive_mutex> lock(modified::ginac_mutex());
   std::vector<std::pair<GiNaC::numeric, bool>> out;
   const MpfrDigits digits(kCompositionDigits);
   for (const auto& stage : composition::catalogue_stages<mpfr_real>(name, kCompositionDigits))
@@ -698,7 +711,10 @@ std::vector<std::pair<GiNaC::numeric, bool>> catalogue_rationals(const std::stri
   return out;
 }
 
-GiNaC::numeric composition_zero_below() { return kZeroBelow; }
+GiNaC::numeric composition_zero_below() {
+  const std::lock_guard<std::recursive_mutex> lock(modified::ginac_mutex());
+  return kZeroBelow;
+}
 
 namespace {
 
@@ -711,8 +727,8 @@ int test_problem_variational_order(
   const TestProblem* tp = find_problem(problem);
   if (!tp) throw std::invalid_argument("variational order: no test problem " + problem);
   const int dim = static_cast<int>(tp->q0.size());
+  const std::lock_guard<std::recursive_mutex> lock(modified::ginac_mutex());
   const modified::SymbolicLagrangian L = test_problem_lagrangian(problem);
-  std::lock_guard<std::mutex> lock(modified::ginac_mutex());
   auto J = std::make_shared<modified::JetSpace>(dim);
   modified::Engine engine(make_dl(L, dim, J), K);
   std::vector<modified::ex> x, v;
@@ -739,6 +755,7 @@ int composition_variational_order(const std::string& base,
                                   const std::vector<std::pair<GiNaC::numeric, bool>>& stages,
                                   const std::string& problem, int K,
                                   std::optional<GiNaC::numeric> zero_below) {
+  const std::lock_guard<std::recursive_mutex> lock(modified::ginac_mutex());
   ExactStages st;
   for (const auto& [c, adjoint] : stages) st.emplace_back(c, adjoint);
   return test_problem_variational_order(
@@ -756,7 +773,7 @@ NystromTheorem10 nystrom_theorem10(const std::vector<mpfr_real>& c,
                                    const std::vector<mpfr_real>& bbar,
                                    const std::vector<mpfr_real>& b) {
   using GiNaC::numeric;
-  std::lock_guard<std::mutex> lock(modified::ginac_mutex());
+  std::lock_guard<std::recursive_mutex> lock(modified::ginac_mutex());
   const std::size_t s = b.size();
   modified::NystromTableau tab;
   for (std::size_t i = 0; i < s; ++i) {

@@ -109,7 +109,7 @@ void compare_case(const TypedDiscreteLagrangian& dl) {
 }  // namespace
 
 TEST_CASE("tape: value to the bit, derivatives to round-off, on every operation") {
-  std::lock_guard<std::mutex> lock(modified::ginac_mutex());
+  std::lock_guard<std::recursive_mutex> lock(modified::ginac_mutex());
   for (const Case& cs : kCases) {
     INFO("--ld ", std::string(cs.ld), " --potential ", std::string(cs.potential));
     const TypedDiscreteLagrangian dl(cs.ld, cs.potential);
@@ -130,7 +130,7 @@ TEST_CASE("tape: value to the bit, derivatives to round-off, on every operation"
 }
 
 TEST_CASE("tape: the integrator through the tape follows the AutoDiff integrator") {
-  std::unique_lock<std::mutex> lock(modified::ginac_mutex());
+  std::unique_lock<std::recursive_mutex> lock(modified::ginac_mutex());
   // Kepler under the midpoint rule, e = 0.5 from perihelion: a nonlinear problem with close
   // approaches, 2000 steps (about 3 orbits).
   const TypedDiscreteLagrangian dl(kCases[1].ld, kCases[1].potential);
@@ -155,7 +155,7 @@ TEST_CASE("tape: the integrator through the tape follows the AutoDiff integrator
   CHECK(worst > 0);  // the two do compute differently (else this compares nothing)
 
   SUBCASE("a different discrete Lagrangian is told apart") {
-    std::unique_lock<std::mutex> relock(modified::ginac_mutex());
+    std::unique_lock<std::recursive_mutex> relock(modified::ginac_mutex());
     const TypedDiscreteLagrangian wrong("h*((q1-q0)^2/(2*h^2) - (V(q0)+V(q1))/2)",
                                         kCases[1].potential);
     const CompiledDiscreteLagrangian<2> cw(wrong);
@@ -178,7 +178,7 @@ TEST_CASE("tape: the trapezoidal rule, affine in q_(k+1): one factorisation, val
   // D2 D1 L_d = −I/h does not depend on q_(k+1): DelIntegrator solves the step by
   // affine_newton_solve. The prefix of step k+1 needs h/2 ∇V(q_(k+1)), which the momentum of
   // step k has computed: it is carried over (CompiledTapes), to the bit.
-  std::unique_lock<std::mutex> lock(modified::ginac_mutex());
+  std::unique_lock<std::recursive_mutex> lock(modified::ginac_mutex());
   const char* potential = "-1/sqrt(x^2+y^2)";
   const TypedDiscreteLagrangian dl("(q1-q0)^2/(2*h) - h*(V(q0)+V(q1))/2", potential);
   const TypedDiscreteLagrangian midpoint(kCases[1].ld, potential);
@@ -238,7 +238,7 @@ TEST_CASE("tape: the trapezoidal rule, affine in q_(k+1): one factorisation, val
 }
 
 TEST_CASE("tape: evaluated in long double and double-double") {
-  std::lock_guard<std::mutex> lock(modified::ginac_mutex());
+  std::lock_guard<std::recursive_mutex> lock(modified::ginac_mutex());
   const TypedDiscreteLagrangian dl(kCases[0].ld, kCases[0].potential);
   const CompiledDiscreteLagrangian<2> c(dl);
   const Vec<double, 2> a(0.3, -0.2), b(0.35, -0.1);
@@ -262,7 +262,7 @@ TEST_CASE("tape: evaluated in long double and double-double") {
 }
 
 TEST_CASE("tape: native code is the interpreter's to the bit, cached, and optional") {
-  std::unique_lock<std::mutex> lock(modified::ginac_mutex());
+  std::unique_lock<std::recursive_mutex> lock(modified::ginac_mutex());
   const TypedDiscreteLagrangian dl(kCases[3].ld, kCases[3].potential);  // sin, exp, log, cos
   const CompiledDiscreteLagrangian<2> native(dl), again(dl), interpreted(dl, false);
   lock.unlock();
@@ -296,7 +296,7 @@ TEST_CASE("tape: native code is the interpreter's to the bit, cached, and option
     const bool had = old != nullptr;
     setenv("VIBOOK_CC", "/nonexistent/vibook-cc", 1);
     setenv("VIBOOK_CACHE_DIR", (test_cache.dir + "/other").c_str(), 1);
-    std::unique_lock<std::mutex> relock(modified::ginac_mutex());
+    std::unique_lock<std::recursive_mutex> relock(modified::ginac_mutex());
     const CompiledDiscreteLagrangian<2> fallback(dl);
     relock.unlock();
     if (had)
