@@ -55,28 +55,14 @@ verify::LdSettings check(const VerifyOptions& o, const verify::TypedDiscreteLagr
   const std::string why = fmt::format("the expressions are {}-dimensional", p.dim);
   p.q0 = parse_state("--q0", o.q0, dflt, why);
   p.p0 = parse_state("--p0", o.p0, dflt, why);
-  p.t_end = parse_number("--t-end", o.t_end);
-  if (!(p.t_end > 0) || !std::isfinite(p.t_end) || p.t_end > kMaxTEnd)
-    throw ArgumentError("--t-end", "must lie in (0, 1e4]");
+  p.t_end = checked_t_end(o.t_end);
   p.hs = parse_step_list("--h-list", o.h_list, p.t_end, kMaxStepsLog10);
   p.expected = parse_number("--expected-order", o.expected);
   if (!(p.expected > 0 && p.expected <= 12))
     throw ArgumentError("--expected-order", "must lie in (0, 12]");
-  p.order_tol = parse_number("--order-tol", o.order_tol);
-  if (!(p.order_tol > 0 && p.order_tol <= 1))
-    throw ArgumentError("--order-tol", "must lie in (0, 1]");
-  if (!o.floor.empty()) {
-    p.floor = parse_number("--floor", o.floor);
-    if (!(*p.floor >= 0) || !std::isfinite(*p.floor))
-      throw ArgumentError("--floor", "must be a finite number >= 0");
-  }
-  p.h = parse_number("--h", o.h);
-  p.steps = parse_integer("--steps", o.steps);
-  if (p.steps < 1024 || p.steps > 100000000)
-    throw ArgumentError("--steps", "must lie in [1024, 1e8]");
-  if (!(p.h > 0) || !std::isfinite(p.h) || !std::isfinite(p.h * double(p.steps)) ||
-      p.h * double(p.steps) > kMaxRunTime)
-    throw ArgumentError("--h", "must be a positive finite step (h·steps at most 1e9)");
+  p.order_tol = checked_order_tol(o.order_tol);
+  if (!o.floor.empty()) p.floor = checked_floor(o.floor);
+  check_energy_run(o, p.h, p.steps);
   if (!o.adaptive.empty() && o.adaptive != "epavi")
     throw ArgumentError("--adaptive",
                         "must be epavi (the energy-preserving adaptive integrator of Sharma et "

@@ -29,32 +29,44 @@ const TestProblem& find_test_problem(const std::string& name) {
                                        "' (kepler, pendulum or henon-heiles)");
 }
 
-void check_study_options(const VerifyOptions& o, MapStudy& s) {
-  if (o.has("--order-tol")) {
-    s.order_tol = parse_number("--order-tol", o.order_tol);
-    if (!(s.order_tol > 0 && s.order_tol <= 1))
-      throw ArgumentError("--order-tol", "must lie in (0, 1]");
-  }
-  if (o.has("--h-list")) s.hs = parse_step_list("--h-list", o.h_list, s.t_end, kMaxStepsLog10);
-  if (!o.floor.empty()) {
-    s.floor = parse_number("--floor", o.floor);
-    if (!(*s.floor >= 0) || !std::isfinite(*s.floor))
-      throw ArgumentError("--floor", "must be a finite number >= 0");
-  }
-  s.h = parse_number("--h", o.h);
-  s.symmetric_claimed = o.symmetric;
-  s.steps = parse_integer("--steps", o.steps);
-  if (s.steps < 1024 || s.steps > 100000000)
-    throw ArgumentError("--steps", "must lie in [1024, 1e8]");
-  if (!(s.h > 0) || !std::isfinite(s.h) || s.h * double(s.steps) > kMaxRunTime)
+double checked_t_end(const std::string& text) {
+  const double t = parse_number("--t-end", text);
+  if (!(t > 0) || t > kMaxTEnd) throw ArgumentError("--t-end", "must lie in (0, 1e4]");
+  return t;
+}
+
+double checked_order_tol(const std::string& text) {
+  const double tol = parse_number("--order-tol", text);
+  if (!(tol > 0 && tol <= 1)) throw ArgumentError("--order-tol", "must lie in (0, 1]");
+  return tol;
+}
+
+double checked_floor(const std::string& text) {
+  const double f = parse_number("--floor", text);
+  if (!(f >= 0) || !std::isfinite(f))
+    throw ArgumentError("--floor", "must be a finite number >= 0");
+  return f;
+}
+
+void check_energy_run(const VerifyOptions& o, double& h, long long& steps) {
+  h = parse_number("--h", o.h);
+  steps = parse_integer("--steps", o.steps);
+  if (steps < 1024 || steps > 100000000) throw ArgumentError("--steps", "must lie in [1024, 1e8]");
+  if (!(h > 0) || !std::isfinite(h) || h * double(steps) > kMaxRunTime)
     throw ArgumentError("--h", "must be a positive finite step (h·steps at most 1e9)");
+}
+
+void check_study_options(const VerifyOptions& o, MapStudy& s) {
+  if (o.has("--order-tol")) s.order_tol = checked_order_tol(o.order_tol);
+  if (o.has("--h-list")) s.hs = parse_step_list("--h-list", o.h_list, s.t_end, kMaxStepsLog10);
+  if (!o.floor.empty()) s.floor = checked_floor(o.floor);
+  check_energy_run(o, s.h, s.steps);
+  s.symmetric_claimed = o.symmetric;
   if (o.json_given) check_output_path(o.json_out, "--json-out", true);
 }
 
 void check_t_end(const VerifyOptions& o, MapStudy& s) {
-  if (!o.has("--t-end")) return;
-  s.t_end = parse_number("--t-end", o.t_end);
-  if (!(s.t_end > 0) || s.t_end > kMaxTEnd) throw ArgumentError("--t-end", "must lie in (0, 1e4]");
+  if (o.has("--t-end")) s.t_end = checked_t_end(o.t_end);
 }
 
 void check_initial_state(const VerifyOptions& o, const TestProblem& problem,

@@ -43,6 +43,14 @@ inline constexpr double kMaxTEnd = 1e4;
 inline constexpr int kMaxStepsLog10 = 7;
 inline constexpr double kMaxRunTime = 1e9;
 
+/// The numbers every route checks the same way, before any work (ArgumentError naming the
+/// option): --t-end in (0, 1e4], --order-tol in (0, 1], --floor a finite number >= 0, and the
+/// energy run's --h and --steps (steps in [1024, 1e8], h positive, h·steps at most 1e9).
+double checked_t_end(const std::string& text);
+double checked_order_tol(const std::string& text);
+double checked_floor(const std::string& text);
+void check_energy_run(const VerifyOptions& o, double& h, long long& steps);
+
 /// The measurement options common to the routes, checked before any work (ArgumentError naming
 /// the option): --order-tol, --h-list (inside (0, T], at most 1e7 steps), --floor, --h,
 /// --steps, --symmetric, into `s` (whose values are the defaults; s.t_end is already set).
