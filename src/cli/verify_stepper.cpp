@@ -46,7 +46,6 @@ using verify::BlackBox;
 struct Plan {
   std::unique_ptr<verify::TypedDiscreteLagrangian> system;
   verify::BlackBoxSetup setup;  // the stepper, the system, the initial state
-  int dim = 0;
   double timeout = 60;
   MapStudy study;  // the measurement settings (--t-end, --h-list, --h, --steps, …)
 };
@@ -109,7 +108,7 @@ Plan check(const VerifyOptions& o) {
     t.constraints = o.constraints;
     p.system = std::make_unique<verify::TypedDiscreteLagrangian>(t);
   }
-  p.dim = p.system->dim();
+  const int n = p.system->dim();
   // A time-dependent system needs a stepper that is told the time (a library: checked when it
   // is loaded, by its ABI version).
   if (p.system->time_dependent()) {
@@ -120,10 +119,10 @@ Plan check(const VerifyOptions& o) {
                           "2");
   }
   if (dq0.empty()) {
-    dq0.assign(static_cast<std::size_t>(p.dim), 0.1);
-    dp0.assign(static_cast<std::size_t>(p.dim), 0.1);
+    dq0.assign(static_cast<std::size_t>(n), 0.1);
+    dp0.assign(static_cast<std::size_t>(n), 0.1);
   }
-  const std::string why = fmt::format("the system has {} degrees of freedom", p.dim);
+  const std::string why = fmt::format("the system has {} degrees of freedom", n);
   p.setup.q0 = parse_state("--q0", o.q0, dq0, why);
   p.setup.p0 = parse_state("--p0", o.p0, dp0, why);
   if (constrained) {  // the counts and the state on the manifold, before the stepper starts
@@ -150,7 +149,7 @@ Plan check(const VerifyOptions& o) {
 }
 
 int run(const VerifyOptions& o, const Plan& p) {
-  const int N = p.dim;
+  const int N = p.system->dim();
   MapReport rep;
   Eigen::VectorXd z0(2 * N);
   for (int i = 0; i < N; ++i) {
