@@ -87,7 +87,6 @@ int run_modified(ModifiedOptions o) {
     t.params = o.params;
     if (o.potential_given) t.potential = o.potential;
     t.dim = o.dim_given ? o.dim : 0;
-    std::lock_guard<std::recursive_mutex> lock(ginac_mutex());
     typed.emplace(t);
     if (typed->dim() > 3)
       throw ArgumentError(
@@ -105,7 +104,6 @@ int run_modified(ModifiedOptions o) {
     else
       t.lagrangian = "v^2/2";
     t.dim = o.dim_given ? o.dim : 0;
-    std::lock_guard<std::recursive_mutex> lock(ginac_mutex());
     typed.emplace(t);
     if (typed->dim() > 3)
       throw ArgumentError("--ld", fmt::format("{} degrees of freedom: the symbolic engine takes 1 "

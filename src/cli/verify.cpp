@@ -308,7 +308,6 @@ int run(const VerifyOptions& o, const CLI::App& c) {
     throw ArgumentError("--dim", fmt::format("must lie in 1..{}", verify::kMaxDim));
   std::unique_ptr<verify::TypedDiscreteLagrangian> dl;
   {
-    std::lock_guard<std::recursive_mutex> lock(modified::ginac_mutex());
     verify::TypedTexts texts{o.ld, o.potential, o.lagrangian, o.hamiltonian, dim};
     texts.allow_time = true;
     dl = std::make_unique<verify::TypedDiscreteLagrangian>(texts);

@@ -16,7 +16,6 @@
 #include "vibook/core/output_file.hpp"
 #include "vibook/core/precision.hpp"
 #include "vibook/integrators/composition.hpp"
-#include "vibook/modified/engine.hpp"
 #include "vibook/verify/composition_ld_study.hpp"
 #include "vibook/verify/composition_study.hpp"
 #include "vibook/verify/expression.hpp"
@@ -118,7 +117,6 @@ int run_composition(const VerifyOptions& o) {
     // variational order is not measured for a time-dependent system): its kinetic part only.
     bool timed = false;
     {
-      std::lock_guard<std::recursive_mutex> lock(modified::ginac_mutex());
       verify::TypedTexts t{"", o.potential, "", "p^2/2 + V(q)", 0};
       t.system_only = true;
       t.allow_time = true;

@@ -13,7 +13,6 @@
 #include "verify_map.hpp"
 #include "verify_routes.hpp"
 #include "vibook/core/output_file.hpp"
-#include "vibook/modified/engine.hpp"
 #include "vibook/verify/composition_ld_study.hpp"
 #include "vibook/verify/expression.hpp"
 #include "vibook/verify/method_symbolic.hpp"
@@ -38,7 +37,6 @@ std::unique_ptr<verify::TypedDiscreteLagrangian> typed_ld(const VerifyOptions& o
   const int dim = check_dim(o, 3, fmt::format(" with {}", route));
   std::unique_ptr<verify::TypedDiscreteLagrangian> dl;
   {
-    std::lock_guard<std::recursive_mutex> lock(modified::ginac_mutex());
     verify::TypedTexts texts{ld, o.potential, o.lagrangian, hamiltonian, dim};
     texts.allow_time = allow_time;
     dl = std::make_unique<verify::TypedDiscreteLagrangian>(texts);

@@ -12,7 +12,6 @@
 #include "args.hpp"
 #include "verify_map.hpp"
 #include "vibook/core/output_file.hpp"
-#include "vibook/modified/engine.hpp"
 #include "vibook/verify/expression.hpp"
 
 namespace vibook::cli {
@@ -43,7 +42,6 @@ int run_constrained_typed(const VerifyOptions& o, verify::ConstrainedStep step) 
   }
   std::unique_ptr<verify::TypedDiscreteLagrangian> sys;
   {
-    std::lock_guard<std::recursive_mutex> lock(modified::ginac_mutex());
     verify::TypedTexts texts{o.ld, o.potential, "", "p^2/2 + V(q)", dim};
     texts.system_only = !del;
     texts.constraints = o.constraints;

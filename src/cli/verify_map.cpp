@@ -12,7 +12,6 @@
 
 #include "args.hpp"
 #include "vibook/core/output_file.hpp"
-#include "vibook/modified/engine.hpp"
 #include "vibook/verify/constrained.hpp"
 #include "vibook/verify/report_page.hpp"
 
@@ -119,7 +118,6 @@ std::unique_ptr<verify::TypedDiscreteLagrangian> check_typed_system(
   const int dim = check_dim(o, 3, fmt::format(" with {}", route));
   std::unique_ptr<verify::TypedDiscreteLagrangian> sys;
   {
-    std::lock_guard<std::recursive_mutex> lock(modified::ginac_mutex());
     verify::TypedTexts texts{"", o.potential, option == "--lagrangian" ? o.lagrangian : "",
                              option == "--lagrangian"    ? ""
                              : option == "--hamiltonian" ? o.hamiltonian

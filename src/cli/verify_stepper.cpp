@@ -25,7 +25,6 @@
 
 #include "args.hpp"
 #include "verify_map.hpp"
-#include "vibook/modified/engine.hpp"
 #include "vibook/verify/black_box_study.hpp"
 #include "vibook/verify/constrained.hpp"
 #include "vibook/verify/expression.hpp"
@@ -101,7 +100,6 @@ Plan check(const VerifyOptions& o) {
     p.setup.protocol = o.stepper_protocol == "2" ? 2 : 1;
   }
   {
-    std::lock_guard<std::recursive_mutex> lock(modified::ginac_mutex());
     verify::TypedTexts t{"", o.potential, "", p.setup.hamiltonian, dim};
     t.system_only = true;
     t.allow_time = true;
