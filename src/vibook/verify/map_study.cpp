@@ -199,6 +199,248 @@ Reference<dd_real> exact_solution(const MapStudy& s, const std::vector<dd_real>&
 
 }  // namespace
 
+OrderStudy study_order(const MapStudy& s, const Eigen::VectorXd& zref,
+                       const std::vector<dd_real>& zref_dd, double ref_error) {
+  const Eigen::VectorXd& z0 = s.z0;
+  // The components the error is read on: (q, p), never a time-dependent system's clock (its
+  // rounding over many steps says nothing about the method).
+  const Eigen::Index compared = s.timed ? z0.size() - 1 : z0.size();
+  const double scale = std::max(1.0, zref.head(compared).lpNorm<Eigen::Infinity>());
+  // One pass of the order study, in double or (extended) in double-double.
+  struct Pass {
+    bool extended = false, fallback = false, settled_tried = false;
+    double window_low = 0, floor = 0, roundoff_h = 0, settled_from = 0, settled_to = 0;
+    std::vector<double> hs, err, windowed;
+    PlateauFit fit;
+  };
+  auto order_pass = [&](const bool extended) {
+    const double window_low = extended ? kWindowLowExtended : kWindowLow;
+    const double unit =
+        extended ? to_double(unit_roundoff<dd_real>()) : std::numeric_limits<double>::epsilon();
+    const double floor = s.floor ? *s.floor : std::max(10 * ref_error, 16 * unit * scale);
+    // The error at T of a run with steps of h (the last shortened to end at T).
+    auto error_at = [&](double h) {
+      if (!extended)
+        return (run_map(s, z0, h, s.t_end) - zref).head(compared).lpNorm<Eigen::Infinity>();
+      const long long n = static_cast<long long>(std::ceil(s.t_end / h - 1e-9));
+      VecXdd z(z0.size());
+      for (Eigen::Index i = 0; i < z0.size(); ++i) z(i) = dd_real(z0(i));
+      const dd_real hh(h), last = dd_real(s.t_end) - hh * dd_real(double(n - 1));
+      for (long long k = 0; k + 1 < n; ++k) s.step_dd(z, hh);
+      if (n >= 1) s.step_dd(z, last);
+      double e = 0;
+      for (Eigen::Index i = 0; i < compared; ++i)
+        e = std::max(e, std::abs(to_double(z(i) - zref_dd[static_cast<std::size_t>(i)])));
+      return e;
+    };
+    std::vector<double> hs, err, windowed;
+    bool fallback = false;
+    // The walk stops at round-off: inside the window, an octave of h (4 step sizes) without
+    // an error below the smallest so far means the errors no longer follow the method's
+    // order (a typed method stepped in position form loses digits like 1/h); the points past
+    // the smallest error are then left out.
+    double roundoff_h = 0;
+    if (!s.hs.empty()) {
+      hs = s.hs;
+      for (double h : hs) err.push_back(error_at(h));
+      windowed = err;
+    } else {
+      double best = std::numeric_limits<double>::infinity();
+      std::size_t best_at = 0;
+      int since_best = 0;
+      for (int k = 0;; ++k) {
+        const double n = std::ceil(s.t_end * std::exp2(0.25 * k));
+        if (!hs.empty() && std::abs(s.t_end / n - hs.back()) == 0) continue;
+        const double h = s.t_end / n;
+        // In double-double a step costs about twenty of double's: a tenth of the budget (a
+        // method of order 6 or more reaches 1e-25 within a few thousand steps; one that does
+        // not is already far from its claimed order).
+        if (s.substeps * n > (extended ? s.max_substeps / 10 : s.max_substeps)) break;
+        double e = std::numeric_limits<double>::quiet_NaN();
+        try {
+          e = error_at(h);
+        } catch (const NumericalError&) {
+          // a step too large for the base method's solve: no point here
+        }
+        hs.push_back(h);
+        err.push_back(e);
+        const bool in = e <= kWindow * scale && e >= window_low * scale;
+        windowed.push_back(in ? e : std::numeric_limits<double>::quiet_NaN());
+        if (e < window_low * scale) break;
+        if (e < best) {
+          best = e;
+          best_at = hs.size() - 1;
+          since_best = 0;
+        } else if (std::isfinite(e) && best <= kWindow * scale && ++since_best == 4) {
+          roundoff_h = hs[best_at];
+          for (std::size_t i = best_at + 1; i < windowed.size(); ++i)
+            windowed[i] = std::numeric_limits<double>::quiet_NaN();
+          break;
+        }
+      }
+      if (std::count_if(windowed.begin(), windowed.end(),
+                        [](double x) { return std::isfinite(x); }) < 3) {
+        fallback = true;
+        windowed = err;
+        for (std::size_t i = 0; i + 6 < windowed.size(); ++i)
+          windowed[i] = std::numeric_limits<double>::quiet_NaN();
+      }
+    }
+    // The fit keeps the points where the local slopes have settled, in double and in
+    // double-double alike (the chapter's "order: local slopes settled"): among the points
+    // of the window above the floor, the longest run of consecutive local slopes over an
+    // octave of h (4 step sizes) that all lie within order_tol/2 of the run's median, with
+    // the octave behind its first slope; ties go to the smaller steps. It must span two
+    // octaves (9 points); otherwise the whole window, and the report says so. Above the run
+    // the higher terms still bend the slope (the pre-asymptotic range of high orders);
+    // below it, round-off or an implicit solve's noise scatters it (a composition of a typed
+    // L_d stepped by Newton scatters from about 1e-11).
+    double settled_from = 0, settled_to = 0;
+    bool settled_tried = false;
+    if (s.hs.empty() && !fallback) {
+      std::vector<std::size_t> pts;
+      for (std::size_t i = 0; i < windowed.size(); ++i)
+        if (std::isfinite(windowed[i]) && windowed[i] > floor) pts.push_back(i);
+      auto local = [&](std::size_t k) {  // over the octave ending at pts[k]
+        const std::size_t a = pts[k - 4], b = pts[k];
+        return std::log(err[a] / err[b]) / std::log(hs[a] / hs[b]);
+      };
+      settled_tried = pts.size() >= 9;
+      std::size_t best_a = 0, best_b = 0;  // the run of slopes local(a..b), b - a >= 4
+      for (std::size_t a = 4; a < pts.size(); ++a) {
+        std::vector<double> run;
+        for (std::size_t b = a; b < pts.size(); ++b) {
+          run.push_back(local(b));
+          std::vector<double> sorted = run;
+          std::sort(sorted.begin(), sorted.end());
+          const double median = sorted[sorted.size() / 2];
+          if (std::abs(sorted.front() - median) > s.order_tol / 2 ||
+              std::abs(sorted.back() - median) > s.order_tol / 2)
+            break;
+          if (b - a >= 4 && b - a >= best_b - best_a) {
+            best_a = a;
+            best_b = b;
+          }
+        }
+      }
+      if (best_b > 0) {
+        const std::size_t start = best_a - 4;  // the octave behind the first settled slope
+        for (std::size_t k = 0; k < pts.size(); ++k)
+          if (k < start || k > best_b) windowed[pts[k]] = std::numeric_limits<double>::quiet_NaN();
+        settled_from = hs[pts[start]];
+        settled_to = hs[pts[best_b]];
+      }
+    }
+    const PlateauFit fit = fit_order_plateau(hs, windowed, floor);
+    return Pass{extended,   fallback, settled_tried, window_low, floor, roundoff_h, settled_from,
+                settled_to, hs,       err,           windowed,   fit};
+  };
+  // Extended precision where double would hide the asymptotic range: from kExtendedOrder
+  // on, and for any method whose local slopes in double never settle over two octaves
+  // (the window of double lies in its pre-asymptotic range) when it has a step in
+  // double-double. The criterion is the same; only the window moves.
+  bool retried = false;
+  Pass pass = order_pass(s.step_dd && s.expected >= kExtendedOrder && s.hs.empty());
+  if (!pass.extended && s.step_dd && s.hs.empty() && pass.settled_tried &&
+      !(pass.settled_from > 0)) {
+    pass = order_pass(true);
+    retried = true;
+  }
+  OrderStudy o;
+  o.extended = pass.extended;
+  o.fallback = pass.fallback;
+  o.settled_tried = pass.settled_tried;
+  o.retried = retried;
+  o.window_low = pass.window_low;
+  o.roundoff_h = pass.roundoff_h;
+  o.settled_from = pass.settled_from;
+  o.settled_to = pass.settled_to;
+  o.scale = scale;
+  o.hs = std::move(pass.hs);
+  o.err = std::move(pass.err);
+  o.fit = std::move(pass.fit);
+  o.passed = std::isfinite(o.fit.slope) && std::abs(o.fit.slope - s.expected) < s.order_tol;
+  return o;
+}
+
+void report_order(const MapStudy& s, const OrderStudy& o, MapMeasurement& rep) {
+  const bool extended = o.extended, fallback = o.fallback, retried = o.retried;
+  const bool settled_tried = o.settled_tried;
+  const double window_low = o.window_low, roundoff_h = o.roundoff_h, scale = o.scale;
+  const double settled_from = o.settled_from, settled_to = o.settled_to;
+  const std::vector<double>&hs = o.hs, &err = o.err;
+  const PlateauFit& fit = o.fit;
+  const bool ok = o.passed;
+  if (!ok) rep.failed.push_back("order");
+  // The points of the fit, in brief (all of them in the JSON).
+  double hmin = INFINITY, hmax = 0, emin = INFINITY, emax = 0;
+  for (std::size_t i = 0; i < hs.size(); ++i)
+    if (fit.used[i]) {
+      hmin = std::min(hmin, hs[i]);
+      hmax = std::max(hmax, hs[i]);
+      emin = std::min(emin, err[i]);
+      emax = std::max(emax, err[i]);
+    }
+  const std::string points =
+      fit.points > 0
+          ? fmt::format(
+                "h from {:.3g} to {:.3g}, errors from {:.2e} to {:.2e}; {} of {} runs "
+                "fitted ({})",
+                hmax, hmin, emax, emin, fit.points, hs.size(),
+                !s.hs.empty() ? std::string("--h-list, above the floor and the plateau")
+                : fallback
+                    ? fmt::format("the window [{:g}, 1e-6]·scale was not reached: the 6 "
+                                  "smallest step sizes",
+                                  window_low)
+                    : fmt::format("errors in the window [{:g}, 1e-6]·scale", window_low) +
+                          (retried    ? std::string(", runs in double-double (in double the "
+                                                       "local slopes did not settle)")
+                           : extended ? std::string(", runs in double-double")
+                                      : std::string()) +
+                          (settled_from > 0
+                               ? fmt::format(", local slopes settled from h = {:.3g} to {:.3g}",
+                                             settled_from, settled_to)
+                               : std::string(settled_tried ? ", local slopes not settled over two "
+                                                             "octaves: the whole window"
+                                                           : "")) +
+                          (roundoff_h > 0 ? fmt::format("; round-off below h = {:.3g}: no smaller "
+                                                        "error over the next octave of h",
+                                                        roundoff_h)
+                                          : std::string()))
+          : fmt::format("{} runs, none usable", hs.size());
+  rep.line("order",
+           std::isfinite(fit.slope)
+               ? fmt::format("{:.3f} over {} step sizes at T = {:g} (floor {:.1e}); expected {:g} "
+                             "(|p - {:g}| < {:g}): {}",
+                             fit.slope, fit.points, s.t_end, fit.floor, s.expected, s.expected,
+                             s.order_tol, ok ? "yes" : "NO")
+               : fmt::format("not measured: {} of {} errors lie in the window and above the floor "
+                             "{:.1e} (--h-list to choose the step sizes): NO",
+                             fit.points, hs.size(), fit.floor));
+  rep.line("  points", points);
+  std::vector<bool> used = fit.used;
+  rep.js["order"] = {
+      {"h", hs},
+      {"error", err},
+      {"used_in_fit", used},
+      {"fitted", std::isfinite(fit.slope) ? json(fit.slope) : json(nullptr)},
+      {"floor", fit.floor},
+      {"window",
+       s.hs.empty() && !fallback ? json({window_low * scale, kWindow * scale}) : json(nullptr)},
+      {"fitted_on", !s.hs.empty() ? "--h-list"
+                    : fallback    ? "the 6 smallest step sizes"
+                                  : "the window"},
+      {"expected", s.expected},
+      {"tolerance", s.order_tol},
+      {"passed", ok}};
+  if (extended) rep.js["order"]["precision"] = "double-double";
+  if (retried) rep.js["order"]["double_not_settled"] = true;
+  if (settled_tried)
+    rep.js["order"]["settled_h"] =
+        settled_from > 0 ? json({settled_from, settled_to}) : json(nullptr);
+  if (roundoff_h > 0) rep.js["order"]["roundoff_below_h"] = roundoff_h;
+}
+
 void measure_map(const MapStudy& s, MapMeasurement& rep) {
   const Step& step = s.step;
   const Eigen::VectorXd& z0 = s.z0;
@@ -229,232 +471,9 @@ void measure_map(const MapStudy& s, MapMeasurement& rep) {
 
   // --- measured order -----------------------------------------------------------------------
   rep.required.push_back("order");
-  // The components the error is read on: (q, p), never a time-dependent system's clock (its
-  // rounding over many steps says nothing about the method).
-  const Eigen::Index compared = s.timed ? z0.size() - 1 : z0.size();
   if (zref.size() == z0.size()) {
     try {
-      const double scale = std::max(1.0, zref.head(compared).lpNorm<Eigen::Infinity>());
-      // One pass of the order study, in double or (extended) in double-double.
-      struct Pass {
-        bool extended = false, fallback = false, settled_tried = false;
-        double window_low = 0, floor = 0, roundoff_h = 0, settled_from = 0, settled_to = 0;
-        std::vector<double> hs, err, windowed;
-        PlateauFit fit;
-      };
-      auto order_pass = [&](const bool extended) {
-        const double window_low = extended ? kWindowLowExtended : kWindowLow;
-        const double unit =
-            extended ? to_double(unit_roundoff<dd_real>()) : std::numeric_limits<double>::epsilon();
-        const double floor = s.floor ? *s.floor : std::max(10 * ref_error, 16 * unit * scale);
-        // The error at T of a run with steps of h (the last shortened to end at T).
-        auto error_at = [&](double h) {
-          if (!extended)
-            return (run_map(s, z0, h, s.t_end) - zref).head(compared).lpNorm<Eigen::Infinity>();
-          const long long n = static_cast<long long>(std::ceil(s.t_end / h - 1e-9));
-          VecXdd z(z0.size());
-          for (Eigen::Index i = 0; i < z0.size(); ++i) z(i) = dd_real(z0(i));
-          const dd_real hh(h), last = dd_real(s.t_end) - hh * dd_real(double(n - 1));
-          for (long long k = 0; k + 1 < n; ++k) s.step_dd(z, hh);
-          if (n >= 1) s.step_dd(z, last);
-          double e = 0;
-          for (Eigen::Index i = 0; i < compared; ++i)
-            e = std::max(e, std::abs(to_double(z(i) - zref_dd[static_cast<std::size_t>(i)])));
-          return e;
-        };
-        std::vector<double> hs, err, windowed;
-        bool fallback = false;
-        // The walk stops at round-off: inside the window, an octave of h (4 step sizes) without
-        // an error below the smallest so far means the errors no longer follow the method's
-        // order (a typed method stepped in position form loses digits like 1/h); the points past
-        // the smallest error are then left out.
-        double roundoff_h = 0;
-        if (!s.hs.empty()) {
-          hs = s.hs;
-          for (double h : hs) err.push_back(error_at(h));
-          windowed = err;
-        } else {
-          double best = std::numeric_limits<double>::infinity();
-          std::size_t best_at = 0;
-          int since_best = 0;
-          for (int k = 0;; ++k) {
-            const double n = std::ceil(s.t_end * std::exp2(0.25 * k));
-            if (!hs.empty() && std::abs(s.t_end / n - hs.back()) == 0) continue;
-            const double h = s.t_end / n;
-            // In double-double a step costs about twenty of double's: a tenth of the budget (a
-            // method of order 6 or more reaches 1e-25 within a few thousand steps; one that does
-            // not is already far from its claimed order).
-            if (s.substeps * n > (extended ? s.max_substeps / 10 : s.max_substeps)) break;
-            double e = std::numeric_limits<double>::quiet_NaN();
-            try {
-              e = error_at(h);
-            } catch (const NumericalError&) {
-              // a step too large for the base method's solve: no point here
-            }
-            hs.push_back(h);
-            err.push_back(e);
-            const bool in = e <= kWindow * scale && e >= window_low * scale;
-            windowed.push_back(in ? e : std::numeric_limits<double>::quiet_NaN());
-            if (e < window_low * scale) break;
-            if (e < best) {
-              best = e;
-              best_at = hs.size() - 1;
-              since_best = 0;
-            } else if (std::isfinite(e) && best <= kWindow * scale && ++since_best == 4) {
-              roundoff_h = hs[best_at];
-              for (std::size_t i = best_at + 1; i < windowed.size(); ++i)
-                windowed[i] = std::numeric_limits<double>::quiet_NaN();
-              break;
-            }
-          }
-          if (std::count_if(windowed.begin(), windowed.end(),
-                            [](double x) { return std::isfinite(x); }) < 3) {
-            fallback = true;
-            windowed = err;
-            for (std::size_t i = 0; i + 6 < windowed.size(); ++i)
-              windowed[i] = std::numeric_limits<double>::quiet_NaN();
-          }
-        }
-        // The fit keeps the points where the local slopes have settled, in double and in
-        // double-double alike (the chapter's "order: local slopes settled"): among the points
-        // of the window above the floor, the longest run of consecutive local slopes over an
-        // octave of h (4 step sizes) that all lie within order_tol/2 of the run's median, with
-        // the octave behind its first slope; ties go to the smaller steps. It must span two
-        // octaves (9 points); otherwise the whole window, and the report says so. Above the run
-        // the higher terms still bend the slope (the pre-asymptotic range of high orders);
-        // below it, round-off or an implicit solve's noise scatters it (a composition of a typed
-        // L_d stepped by Newton scatters from about 1e-11).
-        double settled_from = 0, settled_to = 0;
-        bool settled_tried = false;
-        if (s.hs.empty() && !fallback) {
-          std::vector<std::size_t> pts;
-          for (std::size_t i = 0; i < windowed.size(); ++i)
-            if (std::isfinite(windowed[i]) && windowed[i] > floor) pts.push_back(i);
-          auto local = [&](std::size_t k) {  // over the octave ending at pts[k]
-            const std::size_t a = pts[k - 4], b = pts[k];
-            return std::log(err[a] / err[b]) / std::log(hs[a] / hs[b]);
-          };
-          settled_tried = pts.size() >= 9;
-          std::size_t best_a = 0, best_b = 0;  // the run of slopes local(a..b), b - a >= 4
-          for (std::size_t a = 4; a < pts.size(); ++a) {
-            std::vector<double> run;
-            for (std::size_t b = a; b < pts.size(); ++b) {
-              run.push_back(local(b));
-              std::vector<double> sorted = run;
-              std::sort(sorted.begin(), sorted.end());
-              const double median = sorted[sorted.size() / 2];
-              if (std::abs(sorted.front() - median) > s.order_tol / 2 ||
-                  std::abs(sorted.back() - median) > s.order_tol / 2)
-                break;
-              if (b - a >= 4 && b - a >= best_b - best_a) {
-                best_a = a;
-                best_b = b;
-              }
-            }
-          }
-          if (best_b > 0) {
-            const std::size_t start = best_a - 4;  // the octave behind the first settled slope
-            for (std::size_t k = 0; k < pts.size(); ++k)
-              if (k < start || k > best_b)
-                windowed[pts[k]] = std::numeric_limits<double>::quiet_NaN();
-            settled_from = hs[pts[start]];
-            settled_to = hs[pts[best_b]];
-          }
-        }
-        const PlateauFit fit = fit_order_plateau(hs, windowed, floor);
-        return Pass{extended, fallback,   settled_tried, window_low,
-                    floor,    roundoff_h, settled_from,  settled_to,
-                    hs,       err,        windowed,      fit};
-      };
-      // Extended precision where double would hide the asymptotic range: from kExtendedOrder
-      // on, and for any method whose local slopes in double never settle over two octaves
-      // (the window of double lies in its pre-asymptotic range) when it has a step in
-      // double-double. The criterion is the same; only the window moves.
-      bool retried = false;
-      Pass pass = order_pass(s.step_dd && s.expected >= kExtendedOrder && s.hs.empty());
-      if (!pass.extended && s.step_dd && s.hs.empty() && pass.settled_tried &&
-          !(pass.settled_from > 0)) {
-        pass = order_pass(true);
-        retried = true;
-      }
-      const bool extended = pass.extended, fallback = pass.fallback;
-      const bool settled_tried = pass.settled_tried;
-      const double window_low = pass.window_low, roundoff_h = pass.roundoff_h;
-      const double settled_from = pass.settled_from, settled_to = pass.settled_to;
-      const std::vector<double>&hs = pass.hs, &err = pass.err;
-      const PlateauFit& fit = pass.fit;
-      const bool ok = std::isfinite(fit.slope) && std::abs(fit.slope - s.expected) < s.order_tol;
-      if (!ok) rep.failed.push_back("order");
-      // The points of the fit, in brief (all of them in the JSON).
-      double hmin = INFINITY, hmax = 0, emin = INFINITY, emax = 0;
-      for (std::size_t i = 0; i < hs.size(); ++i)
-        if (fit.used[i]) {
-          hmin = std::min(hmin, hs[i]);
-          hmax = std::max(hmax, hs[i]);
-          emin = std::min(emin, err[i]);
-          emax = std::max(emax, err[i]);
-        }
-      const std::string points =
-          fit.points > 0
-              ? fmt::format(
-                    "h from {:.3g} to {:.3g}, errors from {:.2e} to {:.2e}; {} of {} runs "
-                    "fitted ({})",
-                    hmax, hmin, emax, emin, fit.points, hs.size(),
-                    !s.hs.empty() ? std::string("--h-list, above the floor and the plateau")
-                    : fallback
-                        ? fmt::format("the window [{:g}, 1e-6]·scale was not reached: the 6 "
-                                      "smallest step sizes",
-                                      window_low)
-                        : fmt::format("errors in the window [{:g}, 1e-6]·scale", window_low) +
-                              (retried    ? std::string(", runs in double-double (in double the "
-                                                           "local slopes did not settle)")
-                               : extended ? std::string(", runs in double-double")
-                                          : std::string()) +
-                              (settled_from > 0
-                                   ? fmt::format(", local slopes settled from h = {:.3g} to {:.3g}",
-                                                 settled_from, settled_to)
-                                   : std::string(settled_tried
-                                                     ? ", local slopes not settled over two "
-                                                       "octaves: the whole window"
-                                                     : "")) +
-                              (roundoff_h > 0
-                                   ? fmt::format("; round-off below h = {:.3g}: no smaller "
-                                                 "error over the next octave of h",
-                                                 roundoff_h)
-                                   : std::string()))
-              : fmt::format("{} runs, none usable", hs.size());
-      rep.line(
-          "order",
-          std::isfinite(fit.slope)
-              ? fmt::format("{:.3f} over {} step sizes at T = {:g} (floor {:.1e}); expected {:g} "
-                            "(|p - {:g}| < {:g}): {}",
-                            fit.slope, fit.points, s.t_end, fit.floor, s.expected, s.expected,
-                            s.order_tol, ok ? "yes" : "NO")
-              : fmt::format("not measured: {} of {} errors lie in the window and above the floor "
-                            "{:.1e} (--h-list to choose the step sizes): NO",
-                            fit.points, hs.size(), fit.floor));
-      rep.line("  points", points);
-      std::vector<bool> used = fit.used;
-      rep.js["order"] = {
-          {"h", hs},
-          {"error", err},
-          {"used_in_fit", used},
-          {"fitted", std::isfinite(fit.slope) ? json(fit.slope) : json(nullptr)},
-          {"floor", fit.floor},
-          {"window",
-           s.hs.empty() && !fallback ? json({window_low * scale, kWindow * scale}) : json(nullptr)},
-          {"fitted_on", !s.hs.empty() ? "--h-list"
-                        : fallback    ? "the 6 smallest step sizes"
-                                      : "the window"},
-          {"expected", s.expected},
-          {"tolerance", s.order_tol},
-          {"passed", ok}};
-      if (extended) rep.js["order"]["precision"] = "double-double";
-      if (retried) rep.js["order"]["double_not_settled"] = true;
-      if (settled_tried)
-        rep.js["order"]["settled_h"] =
-            settled_from > 0 ? json({settled_from, settled_to}) : json(nullptr);
-      if (roundoff_h > 0) rep.js["order"]["roundoff_below_h"] = roundoff_h;
+      report_order(s, study_order(s, zref, zref_dd, ref_error), rep);
     } catch (const NumericalError& e) {
       rep.numerical("order", e);
     }

@@ -208,6 +208,30 @@ StudySystem test_problem_system(const TestProblem& problem, const std::vector<do
 void set_problem(MapStudy& s, const TestProblem& problem, const std::vector<double>& q0,
                  const std::vector<double>& p0);
 
+/// The order study of every route, measured against a reference solution (zref, its
+/// double-double digits zref_dd and estimated error): with `hs` empty, the walk of step counts
+/// T·2^(k/4) until the error leaves the window [1e-12, 1e-6]·scale (1e-25 in double-double),
+/// the fit on the run of settled local slopes; with `hs`, exactly those step sizes. In
+/// double-double when the study has step_dd and expects order kExtendedOrder or more, or when
+/// in double the local slopes never settle. Chapter "Verify your own integrator", the order
+/// criterion.
+struct OrderStudy {
+  bool extended = false;       ///< runs in double-double
+  bool fallback = false;       ///< the window was not reached: the 6 smallest step sizes
+  bool settled_tried = false;  ///< enough points to look for settled local slopes
+  bool retried = false;        ///< double's slopes did not settle: run again in double-double
+  double window_low = 0, roundoff_h = 0, settled_from = 0, settled_to = 0, scale = 1;
+  std::vector<double> hs, err;  ///< every run's step size and error at T
+  PlateauFit fit;
+  bool passed = false;  ///< |fitted − expected| < order_tol
+};
+OrderStudy study_order(const MapStudy& s, const Eigen::VectorXd& zref,
+                       const std::vector<dd_real>& zref_dd, double ref_error);
+
+/// The order study's lines ("order", "  points"), its JSON ("order") and, when it did not
+/// pass, "order" among the failed parts.
+void report_order(const MapStudy& s, const OrderStudy& o, MapMeasurement& rep);
+
 /// The reference, order, symplecticity, reversibility and energy parts, appended to `r`.
 void measure_map(const MapStudy& s, MapMeasurement& r);
 
