@@ -56,10 +56,8 @@ verify::LdSettings check(const VerifyOptions& o, const verify::TypedDiscreteLagr
   p.q0 = parse_state("--q0", o.q0, dflt, why);
   p.p0 = parse_state("--p0", o.p0, dflt, why);
   p.t_end = checked_t_end(o.t_end);
-  p.hs = parse_step_list("--h-list", o.h_list, p.t_end, kMaxStepsLog10);
-  p.expected = parse_number("--expected-order", o.expected);
-  if (!(p.expected > 0 && p.expected <= 12))
-    throw ArgumentError("--expected-order", "must lie in (0, 12]");
+  if (o.has("--h-list")) p.hs = parse_step_list("--h-list", o.h_list, p.t_end, kMaxStepsLog10);
+  p.expected = check_expected_order(o.expected);
   p.order_tol = checked_order_tol(o.order_tol);
   if (!o.floor.empty()) p.floor = checked_floor(o.floor);
   check_energy_run(o, p.h, p.steps);
@@ -423,10 +421,11 @@ std::function<int()> add_verify_command(CLI::App& app) {
   c->add_option("--q0", o->q0, "initial position, comma-separated (default 0.1 in each)");
   c->add_option("--p0", o->p0, "initial momentum dL/dv, comma-separated (default 0.1 in each)");
   c->add_option("--t-end", o->t_end, "time of the order study (default 5)");
-  c->add_option("--h-list", o->h_list, "step sizes of the order study (default 0.2,...,0.0125)");
+  c->add_option("--h-list", o->h_list,
+                "step sizes of the order study (default: the walk h = T/ceil(T 2^(k/4)), k = 0, "
+                "1, ..., until the error leaves the window)");
   c->add_option("--expected-order", o->expected, "order to test against (default 2)");
-  c->add_option("--order-tol", o->order_tol,
-                "accepted |fitted - expected| (default 0.1 with --ld, 0.2 on the other routes)");
+  c->add_option("--order-tol", o->order_tol, "accepted |fitted - expected| (default 0.2)");
   c->add_option("--floor", o->floor,
                 "errors at or below this are left out of the order fit (default: found from the "
                 "data above max(10 x the reference's error, 16 u))");

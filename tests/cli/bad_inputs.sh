@@ -343,6 +343,8 @@ row 2 "--steps"          verify --splitting leapfrog --problem pendulum --steps 
 # The same limits on every route: the --ld route's order study and energy run too.
 row 2 "(0, 1e4]"         verify --ld "$SIMPSON" --potential "$HH" --t-end 1e5
 row 2 "at most 1e9"      verify --ld "$SIMPSON" --potential "$HH" --h 1e4 --steps 1000000
+row 2 "(0, 20]"          verify --ld "$SIMPSON" --potential "$HH" --expected-order 21
+row 2 "(0, 20]"          verify --method gauss:2 --problem pendulum --expected-order 21
 
 # --- inputs read forever (the fourth probe): a device, a FIFO, a deep nesting ------------------
 row 2 "is not a regular file" verify --tableau /dev/zero

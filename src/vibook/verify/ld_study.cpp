@@ -152,10 +152,11 @@ LdStudy run_ld_study(const TypedDiscreteLagrangian& dl, const LdSettings& p) {
   };
 
   // Why an order may not show: the step sizes do not resolve the fastest frequency at q0.
-  auto resolution_hint = [&](bool passed) -> std::string {
-    const double hmax = *std::max_element(p.hs.begin(), p.hs.end());
-    const double hmin = *std::min_element(p.hs.begin(), p.hs.end());
-    if (passed || !(omega * hmax > 1)) return {};
+  auto resolution_hint = [&](bool passed, const std::vector<double>& hs) -> std::string {
+    if (passed || hs.empty()) return {};
+    const double hmax = *std::max_element(hs.begin(), hs.end());
+    const double hmin = *std::min_element(hs.begin(), hs.end());
+    if (!(omega * hmax > 1)) return {};
     return fmt::format(
         " (ω = {:.4g} at q0: ωh runs from {:.3g} to {:.3g}, and the order shows only once ωh is "
         "small; try smaller --h-list)",
@@ -384,8 +385,11 @@ LdStudy run_ld_study(const TypedDiscreteLagrangian& dl, const LdSettings& p) {
   if (!have_ref) failed_line("reference");
   js["reference"] = jref;
 
-  // --- 3. order against the reference -------------------------------------------------------
-  std::vector<double> order_err;
+  // --- 3. order against the reference: the order study of every route (map_study.hpp) -----
+  // The walk of step sizes, the window, the settled local slopes and the tolerance are those
+  // of the other routes; the typed method steps in double (its compiled tape), so the window
+  // is double's [1e-12, 1e-6] (chapter "Verify your own integrator", the order criterion).
+  std::vector<double> order_err, order_h;
   PlateauFit fit;
   bool order_passed = false;
   json jorder;
@@ -393,48 +397,38 @@ LdStudy run_ld_study(const TypedDiscreteLagrangian& dl, const LdSettings& p) {
     phases.push_back({"order", "skipped", "no reference solution", kLdOk, 0});
     line("order", "not measured: no reference solution");
   } else if (run("order", [&] {
-               for (double h : p.hs) {
-                 where.start(fmt::format("order study at h = {:g}", h), h);
-                 const Eigen::VectorXd z = integrate(step, z0, h, p.t_end);
-                 order_err.push_back((z - zref).lpNorm<Eigen::Infinity>());
-               }
-               const double scale = std::max(1.0, zref.lpNorm<Eigen::Infinity>());
-               const double floor =
-                   p.floor ? *p.floor
-                           : std::max(10 * ref_error,
-                                      16 * std::numeric_limits<double>::epsilon() * scale);
-               fit = fit_order_plateau(p.hs, order_err, floor);
-               order_passed =
-                   std::isfinite(fit.slope) && std::abs(fit.slope - p.expected) < p.order_tol;
-               std::vector<bool> used = fit.used;
-               jorder = {{"h", p.hs},
-                         {"error", order_err},
-                         {"used_in_fit", used},
-                         {"fitted", std::isfinite(fit.slope) ? json(fit.slope) : json(nullptr)},
-                         {"points", fit.points},
-                         {"floor", fit.floor},
-                         {"floor_from", p.floor ? "--floor" : "max(10 x reference error, 16 u)"},
-                         {"plateau_points_left_out", fit.plateau},
-                         {"expected", p.expected},
-                         {"tolerance", p.order_tol},
-                         {"T", p.t_end},
-                         {"reference", "independent (continuous equations)"},
-                         {"passed", order_passed}};
-               const std::string what =
-                   std::isfinite(fit.slope)
-                       ? fmt::format("{:.3f} over {} step sizes at T = {:g}", fit.slope, fit.points,
-                                     p.t_end)
-                       : fmt::format("not measured: {} of {} errors lie above the floor {:.1e}",
-                                     fit.points, p.hs.size(), fit.floor);
-               line("order",
-                    fmt::format("{} against the reference (floor {:.1e}{}); expected {:g} "
-                                "(|p - {:g}| < {:g}): {}",
-                                what, fit.floor,
-                                fit.plateau
-                                    ? fmt::format(", {} plateau points left out", fit.plateau)
-                                    : std::string(),
-                                p.expected, p.expected, p.order_tol, order_passed ? "yes" : "NO") +
-                        resolution_hint(order_passed));
+               MapStudy ms;
+               ms.step = step;
+               // Each run restarts the place a failure is reported at: n − 1 steps of h, then
+               // the last one shortened to end at T (run_map).
+               bool last_pending = false;
+               ms.propagate = [&](Eigen::VectorXd& z, double h, long long count) {
+                 if (count > 1 || !last_pending)
+                   where.start(fmt::format("order study at h = {:g}", h), h);
+                 last_pending = count > 1;
+                 for (long long k = 0; k < count; ++k) step(z, h);
+               };
+               ms.z0 = z0;
+               ms.t_end = p.t_end;
+               ms.hs = p.hs;
+               ms.floor = p.floor;
+               ms.order_tol = p.order_tol;
+               ms.expected = p.expected;
+               std::vector<dd_real> zref_dd(static_cast<std::size_t>(zref.size()));
+               for (Eigen::Index i = 0; i < zref.size(); ++i)
+                 zref_dd[static_cast<std::size_t>(i)] = dd_real(zref(i));
+               const OrderStudy o = study_order(ms, zref, zref_dd, ref_error);
+               MapMeasurement mm;
+               report_order(ms, o, mm);
+               out << mm.out.str();
+               jorder = mm.js["order"];
+               jorder["reference"] = "independent (continuous equations)";
+               order_err = o.err;
+               order_h = o.hs;
+               fit = o.fit;
+               order_passed = o.passed;
+               const std::string why = resolution_hint(order_passed, order_h);
+               if (!why.empty()) line("", why.substr(1));
              })) {
   } else {
     failed_line("order");
@@ -787,8 +781,9 @@ LdStudy run_ld_study(const TypedDiscreteLagrangian& dl, const LdSettings& p) {
     have_wp = run("work-precision", [&] {
       std::vector<NamedStep> methods{{"typed", step}};
       for (auto& m : K.classical_steppers()) methods.push_back(std::move(m));
-      where.start("work-precision runs", p.hs[0]);
-      wp = work_precision(methods, z0, p.t_end, zref, p.hs);
+      const std::vector<double> hs = p.hs.empty() ? kWorkPrecisionSteps : p.hs;
+      where.start("work-precision runs", hs[0]);
+      wp = work_precision(methods, z0, p.t_end, zref, hs);
     });
     if (!have_wp) failed_line("work-precision");
   }
@@ -915,6 +910,7 @@ LdStudy run_ld_study(const TypedDiscreteLagrangian& dl, const LdSettings& p) {
   study.failed_checks = failed_checks;
   study.js = std::move(js);
   study.order_error = order_err;
+  study.order_h = order_h;
   study.fit = fit;
   study.order_passed = order_passed;
   study.ref_error = ref_error;

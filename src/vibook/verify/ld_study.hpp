@@ -45,8 +45,9 @@ enum LdStatus : int {
 /// What the study measures, checked by the caller (the command checks its options into it).
 struct LdSettings {
   int dim = 0;
-  std::vector<double> q0, p0;   ///< the initial state (p0 the canonical momentum)
-  std::vector<double> hs;       ///< the order study's step sizes
+  std::vector<double> q0, p0;  ///< the initial state (p0 the canonical momentum)
+  /// The order study's step sizes (--h-list); empty, the walk of every route (study_order)
+  std::vector<double> hs;
   double t_end = 0;             ///< T of the order study
   double expected = 0;          ///< the expected order
   double order_tol = 0;         ///< |fitted − expected| < order_tol
@@ -73,6 +74,9 @@ struct LdPhase {
   int exit = kLdOk;  ///< the exit status its failure asks for
   double seconds = 0;
 };
+
+/// The step sizes of the work-precision runs when no --h-list is given.
+inline const std::vector<double> kWorkPrecisionSteps = {0.2, 0.1, 0.05, 0.025, 0.0125};
 
 /// The result of the reference phase the kernel computes.
 struct LdReference {
@@ -159,7 +163,7 @@ struct LdStudy {
   std::string error_line;  ///< the one line for stderr when it did not pass ("" if none)
   std::vector<std::string> failed_checks;
   // For the page: the data behind its figure and tables.
-  std::vector<double> order_error;
+  std::vector<double> order_error, order_h;  ///< the order study's errors at its step sizes
   PlateauFit fit;
   bool order_passed = false;
   double ref_error = 0;

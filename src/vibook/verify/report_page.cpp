@@ -100,14 +100,14 @@ std::string write_ld_report(const LdStudy& st, const LdSettings& p, const std::s
     std::ostringstream conv;
     if (st.have_work_precision) {
       conv << "h,steps,typed,stormer_verlet,midpoint\n";
-      for (std::size_t i = 0; i < p.hs.size(); ++i)
+      for (std::size_t i = 0; i < st.wp.h.size(); ++i)
         conv << fmt::format("{:.17g},{:.0f},{:.17g},{:.17g},{:.17g}\n", st.wp.h[i], st.wp.steps[i],
                             st.wp.error[0][i], st.wp.error[1][i], st.wp.error[2][i]);
     } else {
       conv << "h,steps,typed\n";
       for (std::size_t i = 0; i < st.order_error.size(); ++i)
-        conv << fmt::format("{:.17g},{:.0f},{:.17g}\n", p.hs[i],
-                            std::ceil(p.t_end / p.hs[i] - 1e-9), st.order_error[i]);
+        conv << fmt::format("{:.17g},{:.0f},{:.17g}\n", st.order_h[i],
+                            std::ceil(p.t_end / st.order_h[i] - 1e-9), st.order_error[i]);
     }
     write_output_file((tmp / "convergence.csv").string(), conv.str(), "--report");
     std::ostringstream env;
@@ -170,12 +170,16 @@ std::string write_ld_report(const LdStudy& st, const LdSettings& p, const std::s
     if (phase_of("order") && phase_of("order")->status == "skipped")
       row("order", "not measured", "—", "skipped: no reference", false);
     else if (failed_row("order", "order")) {
-      std::vector<std::string> used;
+      double hmin = INFINITY, hmax = 0;
       for (std::size_t i = 0; i < st.fit.used.size(); ++i)
-        if (st.fit.used[i]) used.push_back(fmt::format("{:g}", p.hs[i]));
+        if (st.fit.used[i]) {
+          hmin = std::min(hmin, st.order_h[i]);
+          hmax = std::max(hmax, st.order_h[i]);
+        }
       row("order",
-          fmt::format("{:.3f} over h = {} at T = {:g} (floor {:.1e}, {} plateau points left out)",
-                      st.fit.slope, fmt::join(used, ", "), p.t_end, st.fit.floor, st.fit.plateau),
+          fmt::format("{:.3f} over {} step sizes from h = {:.3g} to {:.3g} at T = {:g} (floor "
+                      "{:.1e})",
+                      st.fit.slope, st.fit.points, hmax, hmin, p.t_end, st.fit.floor),
           fmt::format("|p − {:g}| < {:g}", p.expected, p.order_tol), st.order_passed ? "yes" : "no",
           st.order_passed);
     }
