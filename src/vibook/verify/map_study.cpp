@@ -207,12 +207,6 @@ OrderStudy study_order(const MapStudy& s, const Eigen::VectorXd& zref,
   const Eigen::Index compared = s.timed ? z0.size() - 1 : z0.size();
   const double scale = std::max(1.0, zref.head(compared).lpNorm<Eigen::Infinity>());
   // One pass of the order study, in double or (extended) in double-double.
-  struct Pass {
-    bool extended = false, fallback = false, settled_tried = false;
-    double window_low = 0, floor = 0, roundoff_h = 0, settled_from = 0, settled_to = 0;
-    std::vector<double> hs, err, windowed;
-    PlateauFit fit;
-  };
   auto order_pass = [&](const bool extended) {
     const double window_low = extended ? kWindowLowExtended : kWindowLow;
     const double unit =
@@ -331,36 +325,33 @@ OrderStudy study_order(const MapStudy& s, const Eigen::VectorXd& zref,
         settled_to = hs[pts[best_b]];
       }
     }
-    const PlateauFit fit = fit_order_plateau(hs, windowed, floor);
-    return Pass{extended,   fallback, settled_tried, window_low, floor, roundoff_h, settled_from,
-                settled_to, hs,       err,           windowed,   fit};
+    OrderStudy o;
+    o.fit = fit_order_plateau(hs, windowed, floor);
+    o.extended = extended;
+    o.fallback = fallback;
+    o.settled_tried = settled_tried;
+    o.window_low = window_low;
+    o.roundoff_h = roundoff_h;
+    o.settled_from = settled_from;
+    o.settled_to = settled_to;
+    o.scale = scale;
+    o.hs = std::move(hs);
+    o.err = std::move(err);
+    return o;
   };
   // Extended precision where double would hide the asymptotic range: from kExtendedOrder
   // on, and for any method whose local slopes in double never settle over two octaves
   // (the window of double lies in its pre-asymptotic range) when it has a step in
   // double-double. The criterion is the same; only the window moves.
-  bool retried = false;
-  Pass pass = order_pass(s.step_dd && s.expected >= kExtendedOrder && s.hs.empty());
+  OrderStudy pass = order_pass(s.step_dd && s.expected >= kExtendedOrder && s.hs.empty());
   if (!pass.extended && s.step_dd && s.hs.empty() && pass.settled_tried &&
       !(pass.settled_from > 0)) {
     pass = order_pass(true);
-    retried = true;
+    pass.retried = true;
   }
-  OrderStudy o;
-  o.extended = pass.extended;
-  o.fallback = pass.fallback;
-  o.settled_tried = pass.settled_tried;
-  o.retried = retried;
-  o.window_low = pass.window_low;
-  o.roundoff_h = pass.roundoff_h;
-  o.settled_from = pass.settled_from;
-  o.settled_to = pass.settled_to;
-  o.scale = scale;
-  o.hs = std::move(pass.hs);
-  o.err = std::move(pass.err);
-  o.fit = std::move(pass.fit);
-  o.passed = std::isfinite(o.fit.slope) && std::abs(o.fit.slope - s.expected) < s.order_tol;
-  return o;
+  pass.passed =
+      std::isfinite(pass.fit.slope) && std::abs(pass.fit.slope - s.expected) < s.order_tol;
+  return pass;
 }
 
 void report_order(const MapStudy& s, const OrderStudy& o, MapMeasurement& rep) {
