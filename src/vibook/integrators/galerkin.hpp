@@ -266,13 +266,13 @@ class GalerkinIntegrator {
       hess.setZero();
       phi = T(0);
       for (int i = 0; i < ns; ++i) {
-        Eigen::Matrix<T, K, M> B = Eigen::Matrix<T, K, M>::Zero(K, m);
-        for (int k = 0; k < N; ++k) {
-          B(k, k) = T(1);
-          for (int nu = 1; nu <= ns; ++nu) {
-            B(k, nu * N + k) = h * ell(i, nu);
-            B(N + k, nu * N + k) = dell(i, nu);
-          }
+        // B = [a ⊗ I_N; d ⊗ I_N] with a = (1, h ℓ_1, …, h ℓ_S), d = (0, ℓ'_1, …, ℓ'_S) at node i
+        std::vector<T> a(static_cast<std::size_t>(ns + 1)), dd(static_cast<std::size_t>(ns + 1));
+        a[0] = T(1);
+        dd[0] = T(0);
+        for (int nu = 1; nu <= ns; ++nu) {
+          a[static_cast<std::size_t>(nu)] = h * ell(i, nu);
+          dd[static_cast<std::size_t>(nu)] = dell(i, nu);
         }
         Vec<T, K> z;
         for (int k = 0; k < N; ++k) {
@@ -309,8 +309,24 @@ class GalerkinIntegrator {
         for (int j = 0; j < K; ++j) Hl.col(j) = l.derivatives()(j).derivatives();
         const T b = rule_.b[static_cast<std::size_t>(i)];
         phi += b * l.value().value();
-        grad.noalias() += b * (B.transpose() * g);
-        hess.noalias() += b * (B.transpose() * Hl * B);
+        // Bᵀ g and Bᵀ ∇²L B block by block: with B = [a ⊗ I; d ⊗ I], block (μ, ν) of
+        // Bᵀ ∇²L B is a_μ a_ν H_qq + a_μ d_ν H_qv + d_μ a_ν H_vq + d_μ d_ν H_vv (N × N each),
+        // about N times fewer operations than the general product and no dense B (the
+        // double-double order studies of the Galerkin methods spent a third of their time there)
+        const Mat<T, N> Hqq = Hl.template topLeftCorner<N, N>(),
+                        Hqv = Hl.template topRightCorner<N, N>(),
+                        Hvq = Hl.template bottomLeftCorner<N, N>(),
+                        Hvv = Hl.template bottomRightCorner<N, N>();
+        const Vec<T, N> gq = g.template head<N>(), gv = g.template tail<N>();
+        for (int mu = 0; mu <= ns; ++mu) {
+          const T am = b * a[static_cast<std::size_t>(mu)],
+                  dm = b * dd[static_cast<std::size_t>(mu)];
+          grad.template segment<N>(mu * N) += am * gq + dm * gv;
+          const Mat<T, N> rq = am * Hqq + dm * Hvq, rv = am * Hqv + dm * Hvv;
+          for (int nu = 0; nu <= ns; ++nu)
+            hess.template block<N, N>(mu * N, nu * N) +=
+                a[static_cast<std::size_t>(nu)] * rq + dd[static_cast<std::size_t>(nu)] * rv;
+        }
       }
     };
     auto fj = [&](const Vec<T, U>& x, Vec<T, U>& F, Mat<T, U>& J) {
