@@ -267,13 +267,8 @@ class GalerkinIntegrator {
       phi = T(0);
       for (int i = 0; i < ns; ++i) {
         // B = [a ⊗ I_N; d ⊗ I_N] with a = (1, h ℓ_1, …, h ℓ_S), d = (0, ℓ'_1, …, ℓ'_S) at node i
-        std::vector<T> a(static_cast<std::size_t>(ns + 1)), dd(static_cast<std::size_t>(ns + 1));
-        a[0] = T(1);
-        dd[0] = T(0);
-        for (int nu = 1; nu <= ns; ++nu) {
-          a[static_cast<std::size_t>(nu)] = h * ell(i, nu);
-          dd[static_cast<std::size_t>(nu)] = dell(i, nu);
-        }
+        auto a = [&](int nu) { return nu == 0 ? T(1) : T(h * ell(i, nu)); };
+        auto dd = [&](int nu) { return nu == 0 ? T(0) : T(dell(i, nu)); };
         Vec<T, K> z;
         for (int k = 0; k < N; ++k) {
           T qk = q0(k), vk = T(0);
@@ -319,13 +314,11 @@ class GalerkinIntegrator {
                         Hvv = Hl.template bottomRightCorner<N, N>();
         const Vec<T, N> gq = g.template head<N>(), gv = g.template tail<N>();
         for (int mu = 0; mu <= ns; ++mu) {
-          const T am = b * a[static_cast<std::size_t>(mu)],
-                  dm = b * dd[static_cast<std::size_t>(mu)];
+          const T am = b * a(mu), dm = b * dd(mu);
           grad.template segment<N>(mu * N) += am * gq + dm * gv;
           const Mat<T, N> rq = am * Hqq + dm * Hvq, rv = am * Hqv + dm * Hvv;
           for (int nu = 0; nu <= ns; ++nu)
-            hess.template block<N, N>(mu * N, nu * N) +=
-                a[static_cast<std::size_t>(nu)] * rq + dd[static_cast<std::size_t>(nu)] * rv;
+            hess.template block<N, N>(mu * N, nu * N) += a(nu) * rq + dd(nu) * rv;
         }
       }
     };
