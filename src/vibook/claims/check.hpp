@@ -11,6 +11,7 @@
 #pragma once
 
 #include <filesystem>
+#include <fstream>
 #include <functional>
 #include <optional>
 #include <string>
@@ -24,6 +25,13 @@ namespace vibook::claims {
 struct Context {
   std::optional<std::filesystem::path> out_dir;
 };
+
+/// The CSV file `name` in the check's directory, or nothing when the check only measures.
+inline std::optional<std::ofstream> open_csv(const Context& ctx, const std::string& name) {
+  std::optional<std::ofstream> f;
+  if (ctx.out_dir) f.emplace(*ctx.out_dir / name);
+  return f;
+}
 
 /// One check of the ledger.
 struct Check {

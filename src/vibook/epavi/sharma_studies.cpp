@@ -28,11 +28,6 @@ namespace {
 
 constexpr double kTwoPi = 2 * std::numbers::pi;
 
-std::optional<std::ofstream> open_csv(const Context& ctx, const std::string& name) {
-  std::optional<std::ofstream> f;
-  if (ctx.out_dir) f.emplace(*ctx.out_dir / name);
-  return f;
-}
 std::ostream* ptr(std::optional<std::ofstream>& f) { return f ? &*f : nullptr; }
 
 void push_run(claims::ClaimResult& c, const std::string& name, const AdaptiveRun& r) {

@@ -208,7 +208,7 @@ std::vector<claims::ClaimResult> run_p1(const Context&) {
   return {r};
 }
 
-std::vector<claims::ClaimResult> run(const Context&) {
+std::vector<claims::ClaimResult> run_v_ex1(const Context&) {
   claims::ClaimResult r;
   r.id = "V-EX1";
   r.source = "check-v-ex1";
@@ -280,7 +280,7 @@ Check check_v_ex1() {
           "Example 1 discrete Lagrangians generate the classical methods; Prop. 1 consistency",
           false,
           {"V-EX1", "V-P1", "V-ERR-5"},
-          run};
+          run_v_ex1};
 }
 
 }  // namespace vibook::checks

@@ -178,14 +178,8 @@ LrlRun run_lrl(const Method& m, const State<2>& s0, double h, double t_end, std:
   return r;
 }
 
-std::optional<std::ofstream> open_csv(const Context& ctx, const std::string& name) {
-  std::optional<std::ofstream> f;
-  if (ctx.out_dir) f.emplace(*ctx.out_dir / name);
-  return f;
-}
-
 // ---- Fig. 2 ---------------------------------------------------------------------------
-std::vector<claims::ClaimResult> run_fig2(const Context& ctx) {
+std::vector<claims::ClaimResult> run_kepler_fig2(const Context& ctx) {
   const double e = 0.6, h = 0.05, T = 200;
   const State<2> s0 = kepler_perihelion_state(e);
   const KeplerOrbit orbit = KeplerOrbit::perihelion(e);
@@ -747,7 +741,7 @@ Check shen_sun_fig2() {
           "Kepler e = 0.6 orbits of se, sv, VI-1, VI-2 (Shen–Sun Fig. 2)",
           true,
           {"SS-F2"},
-          run_fig2};
+          run_kepler_fig2};
 }
 Check shen_sun_fig345() {
   return {"shen-sun-fig345",

@@ -27,6 +27,12 @@ using printed::Value;
 /// Σ c[k] h^k.
 ex series_sum(const std::vector<ex>& c, const GiNaC::symbol& h, int through = -1);
 
+/// The `source` of every claim these checks write (the check `vibook claims --check` names).
+inline constexpr const char* kCheck = "check-modified";
+
+/// A claim of these checks, `reproduced` until a comparison finds otherwise.
+claims::ClaimResult claim(const std::string& id, const std::string& note);
+
 /// Appends `text` to the note of the erratum `id` among `errata`, when the comparisons found
 /// it (the independent evidence of a misprint, named where the erratum is written).
 void add_evidence(std::vector<claims::ClaimResult>& errata, const std::string& id,

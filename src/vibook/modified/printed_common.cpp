@@ -6,6 +6,15 @@
 
 namespace vibook::checks::printed_detail {
 
+claims::ClaimResult claim(const std::string& id, const std::string& note) {
+  claims::ClaimResult r;
+  r.id = id;
+  r.source = kCheck;
+  r.status = claims::Status::reproduced;
+  r.note = note;
+  return r;
+}
+
 void add_evidence(std::vector<claims::ClaimResult>& errata, const std::string& id,
                   const std::string& text) {
   for (auto& e : errata)

@@ -20,8 +20,6 @@ using GiNaC::numeric;
 using modified::Engine;
 using modified::JetSpace;
 
-constexpr const char* kCheck = "check-modified";
-
 // One component of the engine's vector series.
 Target column(const std::vector<std::vector<ex>>& f, std::size_t i, int through) {
   std::vector<ex> c;

@@ -21,8 +21,6 @@ using modified::JetSpace;
 using modified::Method;
 using modified::Potential;
 
-constexpr const char* kCheck = "check-modified";
-
 // (4.24) and the display after it that defines A_1, A_2.
 constexpr const char* kQuote424 =
     R"(\ddot{x} = -\nabla\phi + \frac{h^2}{48} \left(4\phi_{xxx} \langle \dot{x}, \dot{x} \rangle - \phi_{xx} \nabla\phi - 6\phi_{xxx}^{[1]} \langle \dot{x}, \dot{x} \rangle + 12\phi_{xx}^{[1]} \nabla\phi + [A_1, A_2]^\top \right) + \mathcal{O}(h^4),)";
@@ -34,15 +32,6 @@ void read_a1_a2(JetNotation& n) {
   n.constant("A_{1}", Value::scalar(0)).constant("A_{2}", Value::scalar(0));
   const auto ra = printed::read(kQuoteA, n);
   n.constant("A_{1}", ra.members.at(1)).constant("A_{2}", ra.members.at(3));
-}
-
-claims::ClaimResult claim(const std::string& id, const std::string& note) {
-  claims::ClaimResult r;
-  r.id = id;
-  r.source = kCheck;
-  r.status = claims::Status::reproduced;
-  r.note = note;
-  return r;
 }
 
 // Shen & Sun's 𝕃 names: 𝕃^X([x], h) is the engine's L_disc, 𝕃_mod^X its L_mod, with the jets

@@ -17,17 +17,6 @@ using modified::JetSpace;
 using modified::Method;
 using modified::Potential;
 
-constexpr const char* kCheck = "check-modified";
-
-claims::ClaimResult claim(const std::string& id, const std::string& note) {
-  claims::ClaimResult r;
-  r.id = id;
-  r.source = kCheck;
-  r.status = claims::Status::reproduced;
-  r.note = note;
-  return r;
-}
-
 // Discrete variables x_{j-1}, x_j, x_{j+1} of one degree of freedom as the symbols qm, q0, q1,
 // and the potential U (family 0 of J) evaluated wherever it is applied.
 struct Discrete1 {

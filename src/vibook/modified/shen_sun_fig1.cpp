@@ -39,7 +39,7 @@ struct CosinePendulum {
   }
 };
 
-std::vector<claims::ClaimResult> run(const Context& ctx) {
+std::vector<claims::ClaimResult> run_ss_fig1(const Context& ctx) {
   const std::lock_guard<std::recursive_mutex> lock(modified::ginac_mutex());  // GiNaC: one thread
   const double x0 = std::numbers::pi / 2, p0 = 0.5, h = 0.25;
   const int steps = 2000;
@@ -156,7 +156,7 @@ Check shen_sun_fig1() {
           "discrete orbit (Shen–Sun Fig. 1, (4.20))",
           true,
           {"SS-F1"},
-          run};
+          run_ss_fig1};
 }
 
 }  // namespace vibook::checks

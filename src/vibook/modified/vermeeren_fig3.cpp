@@ -62,9 +62,9 @@ Precession precession(const AngleFit& a, double t_end) {
   return {a.omega_rate() * t_end / std::abs(revs), revs};
 }
 
-std::vector<claims::ClaimResult> run(const Context& ctx) {
+std::vector<claims::ClaimResult> run_fig3(const Context& ctx) {
   const std::lock_guard<std::recursive_mutex> lock(modified::ginac_mutex());  // GiNaC: one thread
-  const double h = 0.5, t_end = 700.0;                              // about 40 revolutions
+  const double h = 0.5, t_end = 700.0;  // about 40 revolutions
   const Vec<double, 2> x0(-3.0, 0.0), v0(0.0, 0.4);
   const KeplerOrbit orbit = KeplerOrbit::from_state(x0, v0);
   const Vec<double, 2> x1 = orbit.at(h).q;
@@ -167,7 +167,7 @@ Check vermeeren_fig3() {
           "(Vermeeren Ex. 4, Fig. 3)",
           true,
           {"V-EX4"},
-          run};
+          run_fig3};
 }
 
 }  // namespace vibook::checks

@@ -1,7 +1,7 @@
 // The parts of LdKernelN (ld_kernel_impl.hpp) that a study runs once: the reference in
 // double-double, the symbolic discrete Lagrangian, EpAVI and the classical steppers of the
-// work-precision table. Included only by the generated ld_kernel_cold_N.cpp, which instantiates
-// them for one dimension; the kernel's own unit (ld_kernel_N.cpp) refers to them.
+// work-precision table. Included only by the generated ld_kernel_N.cpp, which instantiates them
+// for one dimension beside the kernel's step.
 #pragma once
 
 #include "vibook/modified/series.hpp"

@@ -1,7 +1,7 @@
 // LdKernel for dimension N (ld_study.hpp): the dimension-dependent operations of a typed
 // discrete Lagrangian. Included only by the generated ld_kernel_N.cpp, one per dimension; the
 // parts a study runs once (the reference, the symbolic L_d, EpAVI, the classical steppers) are
-// defined in ld_kernel_cold_impl.hpp and compiled in ld_kernel_cold_N.cpp.
+// defined in ld_kernel_cold_impl.hpp and compiled in the same unit.
 #pragma once
 
 #include <mutex>
@@ -162,7 +162,7 @@ class LdKernelN final : public LdKernel {
   }
 
   // The continuous equations in double-double (ld_kernel_cold_impl.hpp, with the other parts
-  // that run once a study: compiled in a unit of their own).
+  // that run once a study).
   LdReference reference(const LdSettings& s) const override;
 
   modified::SymbolicDL symbolic(std::shared_ptr<modified::JetSpace> jets) const override;

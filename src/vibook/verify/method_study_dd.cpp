@@ -21,7 +21,7 @@ namespace {
 template <class P>
 GalerkinDD galerkin_dd_for(const P& prob, const Quadrature& rule) {
   constexpr int N = P::N;
-  auto L = mechanical_lagrangian(prob);
+  auto L = mechanical_lagrangian_of(prob);
   using Integrator = GalerkinIntegrator<N, Eigen::Dynamic, decltype(L), dd_real>;
   const QuadratureT<dd_real> r = quadrature_in<dd_real>(rule);
   auto steps = dd_steps<N>([&] { return std::make_shared<Integrator>(L, r); });

@@ -20,7 +20,7 @@
 namespace vibook::verify::method_detail {
 
 template <class P>
-auto mechanical_lagrangian(P prob) {
+auto mechanical_lagrangian_of(P prob) {
   // L = |v|²/2 − V(q); the return type declared, as AutoDiff needs (autodiff.hpp)
   return [prob](const auto& q, const auto& v) -> std::remove_cvref_t<decltype(q(0))> {
     using T = std::remove_cvref_t<decltype(q(0))>;
@@ -55,7 +55,7 @@ std::pair<Step, GeneratingStep> galerkin_step_of(const L& lagrangian, const Quad
 template <class P>
 std::pair<Step, GeneratingStep> galerkin_step(const P& prob, const Quadrature& rule,
                                               const char* who) {
-  return galerkin_step_of<P::N>(mechanical_lagrangian(prob), rule, who);
+  return galerkin_step_of<P::N>(mechanical_lagrangian_of(prob), rule, who);
 }
 
 // The Galerkin integrator of `rule` on the test problem `problem` in double-double: its step

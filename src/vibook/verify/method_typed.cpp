@@ -2,8 +2,8 @@
 // measure_method_typed): the integrator of integrators/galerkin.hpp for the Lagrangian typed
 // after --lagrangian, or for L = |v|²/2 − V(q) with V typed after --potential, evaluated on its
 // tree in the nested AutoDiff numbers the integrator's Newton method asks for. The work for each
-// dimension (1 to 3, each with 1 to 5 stages) is instantiated in a unit of its own
-// (method_typed_n.cpp.in).
+// dimension (1 to 3, each with 1 to 5 stages) is instantiated in one unit per
+// dimension (typed_n.cpp.in).
 #include <stdexcept>
 #include <string>
 #include <vector>

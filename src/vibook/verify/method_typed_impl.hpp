@@ -1,6 +1,6 @@
 /// \file method_typed_impl.hpp
 /// \brief measure_method_typed for N degrees of freedom (method_typed.cpp dispatches on the
-/// dimension; method_typed_n.cpp.in instantiates each N in a unit of its own, so that the
+/// dimension; typed_n.cpp.in instantiates each N in one unit per dimension, so that the
 /// three compile in parallel). Internal: not installed.
 #pragma once
 

@@ -3,8 +3,8 @@
 // H = |p|²/2 + V(q), V the expression typed after --potential, its force by forward AutoDiff on
 // the expression's tree (and the force's Jacobian, for the implicit stages, by AutoDiff on
 // that); or HamiltonianPrkMethod on the H typed after --hamiltonian, ∇H and its Hessian the
-// same way. The work for each dimension (1 to 3, each with 1 to 6 stages) is instantiated in a
-// unit of its own (tableau_typed_n.cpp.in).
+// same way. The work for each dimension (1 to 3, each with 1 to 6 stages) is instantiated in
+// one unit per dimension (typed_n.cpp.in).
 #include <stdexcept>
 #include <string>
 #include <vector>

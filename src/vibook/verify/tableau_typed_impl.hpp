@@ -1,6 +1,6 @@
 /// \file tableau_typed_impl.hpp
 /// \brief measure_tableau_typed for N degrees of freedom (tableau_typed.cpp dispatches on the
-/// dimension; tableau_typed_n.cpp.in instantiates each N in a unit of its own). Internal: not
+/// dimension; typed_n.cpp.in instantiates each N in one unit per dimension). Internal: not
 /// installed.
 #pragma once
 

@@ -16,7 +16,7 @@ using namespace vibook;
 
 namespace {
 
-Eigen::VectorXd state(double q, double p) {
+Eigen::VectorXd pendulum_state(double q, double p) {
   Eigen::VectorXd z(2);
   z << q, p;
   return z;
@@ -26,7 +26,7 @@ Eigen::VectorXd state(double q, double p) {
 double pendulum_energy(const Eigen::VectorXd& z) { return 0.5 * z(1) * z(1) - std::cos(z(0)); }
 
 // Explicit Euler: first order, neither symplectic nor symmetric; its energy grows.
-void explicit_euler(Eigen::VectorXd& z, double h) {
+void pendulum_euler(Eigen::VectorXd& z, double h) {
   const double q = z(0), p = z(1);
   z(0) = q + h * p;
   z(1) = p - h * std::sin(q);
@@ -37,8 +37,8 @@ void explicit_euler(Eigen::VectorXd& z, double h) {
 TEST_CASE("verify: Störmer–Verlet passes, explicit Euler fails, on the pendulum") {
   StormerVerlet<Pendulum> sv;
   const verify::Step sv_step = [&](Eigen::VectorXd& z, double h) { verify::step_qp<1>(sv, z, h); };
-  const verify::Step euler_step = explicit_euler;
-  const Eigen::VectorXd z0 = state(1.0, 0.5);
+  const verify::Step euler_step = pendulum_euler;
+  const Eigen::VectorXd z0 = pendulum_state(1.0, 0.5);
   const double T = 2.0;
   // Reference: Störmer–Verlet at h = 1e-5 (error ~1e-10, below the fit's floor of 1e-8).
   const Eigen::VectorXd ref = verify::integrate(sv_step, z0, 1e-5, T);
@@ -54,7 +54,8 @@ TEST_CASE("verify: Störmer–Verlet passes, explicit Euler fails, on the pendul
     CHECK(std::abs(e.order - 1.0) < 0.1);
   }
   SUBCASE("symplecticity") {
-    const std::vector<Eigen::VectorXd> zs{state(1.0, 0.5), state(-0.3, 1.2), state(2.0, -0.1)};
+    const std::vector<Eigen::VectorXd> zs{pendulum_state(1.0, 0.5), pendulum_state(-0.3, 1.2),
+                                          pendulum_state(2.0, -0.1)};
     const auto s = verify::symplecticity_defect(sv_step, zs, 0.1, 1e-8);
     CHECK(s.passed);
     CHECK(s.samples == 3);
@@ -64,7 +65,7 @@ TEST_CASE("verify: Störmer–Verlet passes, explicit Euler fails, on the pendul
     CHECK(e.defect > 1e-3);
   }
   SUBCASE("reversibility") {
-    const std::vector<Eigen::VectorXd> zs{state(1.0, 0.5), state(-0.3, 1.2)};
+    const std::vector<Eigen::VectorXd> zs{pendulum_state(1.0, 0.5), pendulum_state(-0.3, 1.2)};
     CHECK(verify::reversibility_defect(sv_step, zs, 0.1, 1e-14).passed);
     const auto e = verify::reversibility_defect(euler_step, zs, 0.1, 1e-14);
     CHECK_FALSE(e.passed);
