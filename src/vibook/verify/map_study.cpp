@@ -364,14 +364,8 @@ void report_order(const MapStudy& s, const OrderStudy& o, MapMeasurement& rep) {
   const bool ok = o.passed;
   if (!ok) rep.failed.push_back("order");
   // The points of the fit, in brief (all of them in the JSON).
-  double hmin = INFINITY, hmax = 0, emin = INFINITY, emax = 0;
-  for (std::size_t i = 0; i < hs.size(); ++i)
-    if (fit.used[i]) {
-      hmin = std::min(hmin, hs[i]);
-      hmax = std::max(hmax, hs[i]);
-      emin = std::min(emin, err[i]);
-      emax = std::max(emax, err[i]);
-    }
+  const auto [hmin, hmax] = used_range(fit, hs);
+  const auto [emin, emax] = used_range(fit, err);
   const std::string points =
       fit.points > 0
           ? fmt::format(

@@ -170,12 +170,7 @@ std::string write_ld_report(const LdStudy& st, const LdSettings& p, const std::s
     if (phase_of("order") && phase_of("order")->status == "skipped")
       row("order", "not measured", "—", "skipped: no reference", false);
     else if (failed_row("order", "order")) {
-      double hmin = INFINITY, hmax = 0;
-      for (std::size_t i = 0; i < st.fit.used.size(); ++i)
-        if (st.fit.used[i]) {
-          hmin = std::min(hmin, st.order_h[i]);
-          hmax = std::max(hmax, st.order_h[i]);
-        }
+      const auto [hmin, hmax] = used_range(st.fit, st.order_h);
       row("order",
           fmt::format("{:.3f} over {} step sizes from h = {:.3g} to {:.3g} at T = {:g} (floor "
                       "{:.1e})",

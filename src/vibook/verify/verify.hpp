@@ -24,6 +24,7 @@
 #include <limits>
 #include <stdexcept>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <Eigen/Dense>
@@ -163,6 +164,18 @@ struct PlateauFit {
   double floor = 0;        ///< the floor applied before the plateau search
   int plateau = 0;         ///< points left out as the plateau (beyond the floor)
 };
+
+/// The smallest and largest of xs over the points the fit used (+inf and 0 when it used none):
+/// the step sizes or errors a report quotes for the fit.
+inline std::pair<double, double> used_range(const PlateauFit& f, const std::vector<double>& xs) {
+  double lo = std::numeric_limits<double>::infinity(), hi = 0;
+  for (std::size_t i = 0; i < xs.size() && i < f.used.size(); ++i)
+    if (f.used[i]) {
+      lo = std::min(lo, xs[i]);
+      hi = std::max(hi, xs[i]);
+    }
+  return {lo, hi};
+}
 
 /// Fit error ≈ C h^p as described at PlateauFit. `floor` < 0: no floor. At least 3 points
 /// must remain, else slope is NaN and points the number that remained.
