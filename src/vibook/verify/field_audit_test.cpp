@@ -6,7 +6,6 @@
 #include <doctest/doctest.h>
 
 #include "vibook/claims/ledger.hpp"
-#include "vibook/figures/registry.hpp"
 #include "vibook/verify/field_audit.hpp"
 
 using namespace vibook;
@@ -24,46 +23,15 @@ verify::AuditEntry find(const std::string& id) {
 
 }  // namespace
 
-TEST_CASE("field audit: every published composition passes, every wrong one is flagged") {
-  std::vector<claims::ClaimResult> results;
-  for (const char* id : {"field-audit", "field-audit-odeint"}) {
-    const auto* check = figures::find(id);
-    REQUIRE(check != nullptr);
-    for (auto& r : figures::run_check(*check, {})) results.push_back(std::move(r));
-  }
-  // every row but the Galerkin, splitting and new-system ones (long studies)
-  std::size_t measured = 0;
-  for (const auto& a : verify::audit_entries())
-    measured += a.method.empty() && a.splitting.empty() && a.constrained.empty() && !a.forced;
-  REQUIRE(results.size() == measured);
-  for (const auto& r : results) {
-    INFO(r.id, ": ", r.note);
-    if (r.id.ends_with("-BRIEF")) {
-      // The order a Boost header's Doxygen brief states, read when the check runs, against
-      // the stepper's measured order (4 on both problems: what the class's order_value says).
-      const double stated = r.value("expected_order");
-      CHECK(stated >= 1);
-      CHECK(std::abs(r.value("order_kepler") - 4) < 0.2);
-      CHECK(std::abs(r.value("order_henon-heiles") - 4) < 0.2);
-      CHECK(r.status == (std::abs(stated - 4) < 0.2 ? claims::Status::reproduced
-                                                    : claims::Status::not_reproduced));
-      // Its headline blames the documentation, not the stepper, and gives the measured order.
-      if (r.status == claims::Status::not_reproduced)
-        CHECK(r.headline.starts_with("the order stated in the Doxygen brief of odeint's "));
-      continue;
-    }
-    CHECK(r.status == claims::Status::reproduced);
-    // The measured order is on the row, for both problems (a number, not a copied one).
-    CHECK(std::isfinite(r.value("order_kepler")));
-    CHECK(std::isfinite(r.value("order_henon-heiles")));
-  }
-  // Every row is a claim of the ledger, under the audit's key.
-  claims::Ledger ledger;
-  for (const auto& r : results) ledger.record(r);
+// Every published composition passes and every wrong one is flagged: the checks field-audit and
+// field-audit-odeint run once per build, in the book, and tests/cli/field_audit_ledger.py (the
+// ctest field_audit_ledger) judges their rows in the claims.json it writes. Here, without a run:
+// every row of the audit is a claim of the ledger's paper A, with its statement.
+TEST_CASE("field audit: every row is a claim of paper A with its statement") {
   for (const auto& a : verify::audit_entries()) {
-    const auto* row = ledger.find(a.info.id);
-    REQUIRE(row != nullptr);
-    CHECK(row->info.paper == "A");
+    INFO(a.info.id);
+    CHECK(a.info.paper == "A");
+    CHECK(a.info.id.starts_with("A-"));
     CHECK(!claims::paper_statement(a.info.id).empty());
   }
 }
