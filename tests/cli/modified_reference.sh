@@ -3,8 +3,8 @@
 # are used, Newton at doubling precision) prints exactly what its reference path prints
 # (`vibook modified --reference`: GiNaC's diff symbol by symbol, full precision throughout, the
 # engine's original algorithms). Compared byte for byte, standard error and status included:
-# every method x potential x what at order 4, a generic potential in 2-D at order 4 and 1-D at
-# order 6, --alpha, and the 3-D cases the reference path finishes in seconds; 3-D at h^6 and h^8
+# every method x potential x what at order 4, a generic potential in 2-D at order 4 (below) and
+# 1-D at order 6, --alpha, and the 3-D cases the reference path finishes in seconds; 3-D at h^6 and h^8
 # against the direct route; --ld and --lagrangian against the library's own methods, and one
 # non-separable Lagrangian written two ways (compared in SymPy).
 # Usage: modified_reference.sh path/to/vibook
@@ -20,11 +20,19 @@ one() {
     diff <(printf '%s\n' "$b") <(printf '%s\n' "$a") | head -5
   fi
 }
+# In 2-D every method's modified equation, meshed and disc forms, and one of the three derived
+# from the equation (the Lagrangian, the Hamiltonian, the vector field) in turn: each derived
+# form is compared in 2-D for two or three methods, and for every method in 1-D.
+derived=(lagrangian hamiltonian vector-field)
+k=0
 for m in sv se se-adjoint midpoint vi1 vi1-adjoint vi2; do
   for what in equation lagrangian hamiltonian vector-field meshed disc; do
     for pot in generic kepler pendulum; do one --method "$m" --potential "$pot" --order 4 --what "$what"; done
+  done
+  for what in equation meshed disc "${derived[$((k % 3))]}"; do
     one --method "$m" --dim 2 --order 4 --what "$what"
   done
+  k=$((k + 1))
   one --method "$m" --order 6 --what hamiltonian --format latex
 done
 one --method vi1 --potential kepler --alpha 1/3 --order 4 --what hamiltonian
