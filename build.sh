@@ -85,11 +85,12 @@ case "$action" in
     ;;
   test)
     # One build of everything and the book: the book starts as soon as the command is linked,
-    # while the test units still compile (the machine's cores stay busy to the end). One job
-    # more than cores, in both: a test waiting on a child (a stepper's timeout, a Python host,
-    # the browser) or the book's serial end would otherwise leave a core idle. Measured on
-    # 2 cores: ctest -j 2 used 85 % of the cores' time (592 CPU-s in 348 s), -j 3 93 % (321 s).
-    cmake --build "$bdir" -j "$((jobs + 1))" --target all book
+    # while the test units still compile (the machine's cores stay busy to the end). The tests
+    # run one more than cores at a time: a test waiting on a child (a stepper's timeout, a
+    # Python host, the browser) would otherwise leave a core idle. Measured on 2 cores: ctest
+    # -j 2 used 85 % of the cores' time (592 CPU-s in 348 s), -j 3 93 % (321 s). The build does
+    # not gain so: a fresh clone's build took 504 s at -j 3 and 472 s at -j 2.
+    cmake --build "$bdir" -j "$jobs" --target all book
     ctest --test-dir "$bdir" --output-on-failure -j "$((jobs + 1))"
     ;;
   bench)
