@@ -29,6 +29,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <concepts>
 #include <limits>
 #include <stdexcept>
 #include <string>
@@ -193,6 +194,21 @@ inline Quadrature quadrature_rule(const std::string& family, int s) {
   throw std::invalid_argument("quadrature_rule: unknown family '" + family + "'");
 }
 
+namespace galerkin_detail {
+
+// A Lagrangian that declares itself L = |v|²/2 − V(q) (unit mass: `unit_mass_mechanical`)
+// and gives V by `potential(q)`. Its derivatives in (q, v) are known apart from V's:
+// ∇_v L = v, ∇²_vv L = I, ∇²_qv L = 0; only V is differentiated, in N variables instead of 2N
+// (the nested AutoDiff over double-double of the Galerkin order studies spent most of its time
+// differentiating the kinetic term in directions that cannot change it).
+template <class L, int N, class T>
+concept UnitMassMechanical = L::unit_mass_mechanical &&
+    requires(const L& l, const Vec<ad::Dual2<N, T>, N>& q) {
+  { l.potential(q) } -> std::same_as<ad::Dual2<N, T>>;
+};
+
+}  // namespace galerkin_detail
+
 /// The Galerkin variational integrator of the file comment for a Lagrangian `L(q, v)` (a
 /// callable templated on the scalar, returning a scalar), N degrees of freedom, S stages
 /// (the polynomial's degree and the number of quadrature nodes). S may be Eigen::Dynamic: the
@@ -279,31 +295,56 @@ class GalerkinIntegrator {
           z(k) = qk;
           z(N + k) = vk;
         }
-        Vec<Out, K> Y;
-        for (int k = 0; k < K; ++k) {
-          Y(k) = Out(In(z(k), K, k));
-          Y(k).derivatives().setZero();
-          Y(k).derivatives()(k) = In(T(1));
-        }
-        const Vec<Out, N> qq = Y.template head<N>(), vv = Y.template tail<N>();
-        const Out l = [&] {
-          if constexpr (std::is_invocable_v<const Lagrangian&, const Vec<Out, N>&,
-                                            const Vec<Out, N>&, const Out&>) {
-            const Out ti = constant_of<Out>(T(t_ + rule_.c[static_cast<std::size_t>(i)] * h));
-            static_assert(ad::returns_scalar<decltype(L_(qq, vv, ti)), Out>,
-                          VIBOOK_RETURNS_SCALAR_MESSAGE);
-            return L_(qq, vv, ti);
-          } else {
-            static_assert(ad::returns_scalar<decltype(L_(qq, vv)), Out>,
-                          VIBOOK_RETURNS_SCALAR_MESSAGE);
-            return L_(qq, vv);
-          }
-        }();
-        const Vec<T, K> g = l.value().derivatives();
-        Mat<T, K> Hl;
-        for (int j = 0; j < K; ++j) Hl.col(j) = l.derivatives()(j).derivatives();
         const T b = rule_.b[static_cast<std::size_t>(i)];
-        phi += b * l.value().value();
+        Vec<T, K> g;
+        Mat<T, K> Hl;
+        if constexpr (galerkin_detail::UnitMassMechanical<Lagrangian, N, T>) {
+          // L = |v|²/2 − V(q): the same numbers the general path below computes (its kinetic
+          // term's q-derivatives are exact zeros, its v-derivatives v and I exactly), V's
+          // derivatives in the N position variables only.
+          using InQ = ad::Dual<N, T>;
+          using OutQ = ad::Dual2<N, T>;
+          Vec<OutQ, N> Yq;
+          for (int k = 0; k < N; ++k) {
+            Yq(k) = OutQ(InQ(z(k), N, k));
+            Yq(k).derivatives().setZero();
+            Yq(k).derivatives()(k) = InQ(T(1));
+          }
+          const OutQ V = L_.potential(Yq);
+          const Vec<T, N> v = z.template tail<N>();
+          phi += b * (constant<T>(0.5) * squared_norm(v) - V.value().value());
+          Hl.setZero();
+          for (int k = 0; k < N; ++k) {
+            g(k) = T(0) - V.value().derivatives()(k);
+            g(N + k) = v(k);
+            Hl(N + k, N + k) = T(1);
+            for (int j = 0; j < N; ++j) Hl(k, j) = T(0) - V.derivatives()(j).derivatives()(k);
+          }
+        } else {
+          Vec<Out, K> Y;
+          for (int k = 0; k < K; ++k) {
+            Y(k) = Out(In(z(k), K, k));
+            Y(k).derivatives().setZero();
+            Y(k).derivatives()(k) = In(T(1));
+          }
+          const Vec<Out, N> qq = Y.template head<N>(), vv = Y.template tail<N>();
+          const Out l = [&] {
+            if constexpr (std::is_invocable_v<const Lagrangian&, const Vec<Out, N>&,
+                                              const Vec<Out, N>&, const Out&>) {
+              const Out ti = constant_of<Out>(T(t_ + rule_.c[static_cast<std::size_t>(i)] * h));
+              static_assert(ad::returns_scalar<decltype(L_(qq, vv, ti)), Out>,
+                            VIBOOK_RETURNS_SCALAR_MESSAGE);
+              return L_(qq, vv, ti);
+            } else {
+              static_assert(ad::returns_scalar<decltype(L_(qq, vv)), Out>,
+                            VIBOOK_RETURNS_SCALAR_MESSAGE);
+              return L_(qq, vv);
+            }
+          }();
+          g = l.value().derivatives();
+          for (int j = 0; j < K; ++j) Hl.col(j) = l.derivatives()(j).derivatives();
+          phi += b * l.value().value();
+        }
         // Bᵀ g and Bᵀ ∇²L B block by block: with B = [a ⊗ I; d ⊗ I], block (μ, ν) of
         // Bᵀ ∇²L B is a_μ a_ν H_qq + a_μ d_ν H_qv + d_μ a_ν H_vq + d_μ d_ν H_vv (N × N each),
         // about N times fewer operations than the general product and no dense B (the

@@ -19,13 +19,27 @@
 
 namespace vibook::verify::method_detail {
 
+// A test problem's L = |v|²/2 − V(q) as a callable L(q, v), its return type declared, as
+// AutoDiff needs (autodiff.hpp). It declares itself of unit mass and gives V, so that the
+// Galerkin step differentiates V alone (galerkin_detail::UnitMassMechanical).
 template <class P>
-auto mechanical_lagrangian_of(P prob) {
-  // L = |v|²/2 − V(q); the return type declared, as AutoDiff needs (autodiff.hpp)
-  return [prob](const auto& q, const auto& v) -> std::remove_cvref_t<decltype(q(0))> {
+struct MechanicalLagrangian {
+  static constexpr bool unit_mass_mechanical = true;
+  P prob;
+  template <class Q, class V>
+  auto operator()(const Q& q, const V& v) const -> std::remove_cvref_t<decltype(q(0))> {
     using T = std::remove_cvref_t<decltype(q(0))>;
     return constant<T>(0.5) * squared_norm(v) - prob.template potential<T>(q);
-  };
+  }
+  template <class T>
+  T potential(const Vec<T, P::N>& q) const {
+    return prob.template potential<T>(q);
+  }
+};
+
+template <class P>
+MechanicalLagrangian<P> mechanical_lagrangian_of(P prob) {
+  return {prob};
 }
 
 // The one-step map of the Galerkin integrator of the Lagrangian `lagrangian(q, v)` (a callable
