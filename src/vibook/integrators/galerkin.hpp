@@ -20,7 +20,8 @@
 /// One step: given (q0, p0), Newton's method on the s·N unknowns (Q^1 … Q^{s−1}, q1) together,
 ///   ∂A/∂Q^ν = 0 (ν = 1 … s−1),   p0 + ∂A/∂Q^0 = 0,
 /// then p1 = ∂A/∂Q^s, with A the quadrature action; every derivative, the Newton Jacobian (a
-/// block of A's Hessian) included, by nested forward AutoDiff on the one callable L(q, v). The
+/// block of A's Hessian) included, by nested forward AutoDiff on the one callable L(q, v) (on V
+/// alone when L declares itself |v|²/2 − V(q): galerkin_detail::UnitMassMechanical). The
 /// unknowns are carried as increments Q^ν = q0 + h W_ν (see step()), so that the momenta are
 /// not differences of positions over h.
 ///
