@@ -292,6 +292,7 @@ class CompiledDiscreteLagrangian {
       : t_(std::make_shared<const CompiledTapes>(compile_tapes(checked(dl)))) {
     t_->newton.load_constants(wn_);
     t_->momentum.load_constants(wm_);
+    t_->all.load_constants(wa_);
     const Tape& T = t_->newton;
     for (int k = N; k < N + N * N; ++k) {  // is every output of D2 D1 L_d in the prefix?
       const int o = T.outputs()[k];
@@ -378,8 +379,20 @@ class CompiledDiscreteLagrangian {
   template <class S>
   ad::TwoPoint<N, S> evaluate(const Vec<S, N>& q0, const Vec<S, N>& q1, const S& h) const {
     const Tape& T = t_->all;
-    std::vector<S> w;
-    T.load_constants(w);
+    // In double, the work array starts as a copy of wa_ (the constants loaded once, the same
+    // numbers) in storage each thread keeps: no allocation and no division per evaluation
+    // (RATTLE on typed constraints evaluates a tape several times a step).
+    std::vector<S> local;
+    std::vector<S>& w = [&]() -> std::vector<S>& {
+      if constexpr (std::is_same_v<S, double>) {
+        thread_local std::vector<double> scratch;
+        scratch.assign(wa_.begin(), wa_.end());
+        return scratch;
+      } else {
+        T.load_constants(local);
+        return local;
+      }
+    }();
     for (int i = 0; i < N; ++i) {
       w[i] = q0(i);
       w[N + i] = q1(i);
@@ -420,6 +433,7 @@ class CompiledDiscreteLagrangian {
   std::shared_ptr<const CompiledTapes> t_;
   // Work arrays: a copy of the object (one per integrator) has its own; the tapes are shared.
   mutable std::vector<double> wn_, wm_;
+  std::vector<double> wa_;  ///< the tape of everything's work array, its constants loaded
   mutable bool have_prefix_ = false, have_momentum_ = false;
   bool jacobian_constant_ = true, carry_ = true;
   NativeTapes native_;
