@@ -71,6 +71,23 @@ g++ -std=c++20 -O2 $flags "$prefix/share/doc/vibook/examples/henon_heiles_simpso
     $(pkg-config --cflags --libs vibook-modified) -o "$tmp/example_pc" ||
   { echo "FAIL: the README's pkg-config line does not build the example"; exit 1; }
 "$tmp/example_pc" >/dev/null || { echo "FAIL: the example built by pkg-config"; exit 1; }
+# `vibook modified` as a library call (command.hpp), whose printing uses fmt: a program linking
+# vibook-modified alone must link (fmt among the archive's requirements) and print what the
+# command prints.
+cat >"$tmp/derive.cpp" <<'CPP'
+#include <iostream>
+#include "vibook/modified/command.hpp"
+int main() {
+  vibook::modified::Derivation d;  // Stormer-Verlet, a generic potential, order h^2
+  std::cout << vibook::modified::derive(d);
+}
+CPP
+# shellcheck disable=SC2046,SC2086
+g++ -std=c++20 -O2 $flags "$tmp/derive.cpp" $(pkg-config --cflags --libs vibook-modified) \
+    -o "$tmp/derive" || { echo "FAIL: modified::derive does not link from vibook-modified"; exit 1; }
+"$tmp/derive" >"$tmp/derive.txt" && "$prefix/bin/vibook" modified --method sv --order 2 >"$tmp/cmd.txt" &&
+  cmp -s "$tmp/derive.txt" "$tmp/cmd.txt" ||
+  { echo "FAIL: modified::derive differs from vibook modified:"; diff "$tmp/cmd.txt" "$tmp/derive.txt" | head -5; exit 1; }
 
 # 3. The installed command, with its scripts under the prefix: a verify report with its figure.
 [ -x "$prefix/bin/vibook" ] && [ -f "$prefix/share/vibook/figures/verify-report.gp" ] ||
