@@ -117,10 +117,15 @@ file(COPY ${FIGS}/verify-report/verify-report.svg DESTINATION ${IMAGES})
 # Three more for the chapter: a wrong discrete Lagrangian (the kinetic term doubled), which must
 # fail with status 5; symplectic Euler, first order, with its modified Hamiltonian; a
 # fourth-order method whose --h-list reaches the round-off plateau.
+# Each writes its report (OUT), its JSON (OUT.json) and its standard error (OUT.stderr) to the
+# generated directory: tests/cli/book_examples.sh checks the report lines, the verdict and the
+# one-line message of the examples the CLI suites would otherwise run a second time.
 function(vibook_verify_case out want)
-  execute_process(COMMAND ${VIBOOK} verify ${ARGN} OUTPUT_FILE ${GEN}/${out}
-                  ERROR_VARIABLE err RESULT_VARIABLE rc)
+  string(REGEX REPLACE "\\.txt$" "" stem ${out})
+  execute_process(COMMAND ${VIBOOK} verify ${ARGN} --json-out ${GEN}/${stem}.json
+                  OUTPUT_FILE ${GEN}/${out} ERROR_FILE ${GEN}/${stem}.stderr RESULT_VARIABLE rc)
   if(NOT rc EQUAL want)
+    file(READ ${GEN}/${stem}.stderr err)
     message(FATAL_ERROR "vibook verify (${out}) exited ${rc}, expected ${want}: ${err}")
   endif()
 endfunction()

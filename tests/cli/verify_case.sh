@@ -23,15 +23,35 @@ case_() {
   if [ "$got" != "$want" ]; then
     bad "$name: exit $got, expected $want: $(cat "$tmp/err") $(cat "$tmp/out")"; return
   fi
-  if [ "$want" = 0 ]; then
-    [ -s "$tmp/err" ] && { bad "$name: stderr not empty: $(cat "$tmp/err")"; return; }
-  elif [ "$(wc -l <"$tmp/err")" != 1 ] || ! grep -q "^vibook: " "$tmp/err"; then
-    bad "$name: want one stderr line, got: $(cat "$tmp/err")"; return
+  judged "$name" "$want" "$failed" "$tmp/out" "$tmp/err" "$tmp/v.json" "${pats[@]}"
+}
+
+# book_case NAME FILE STATUS 'FAILED-CHECKS' 'REGEX...': the same checks on an example the book
+# build ran (book/build_book.cmake, vibook_verify_case: FILE, its .json and .stderr in the
+# directory BOOK_GEN), instead of running it a second time. Its exit status is the book build's
+# to check (it stops on any other).
+book_case() {
+  local name=$1 file=$2 want=$3 failed=$4; shift 4
+  local stem=$BOOK_GEN/${file%.txt}
+  if [ ! -f "$BOOK_GEN/$file" ] || [ ! -f "$stem.json" ] || [ ! -f "$stem.stderr" ]; then
+    bad "$name: no $BOOK_GEN/$file with its .json and .stderr: build the book first"; return
   fi
-  for p in "${pats[@]}"; do
-    grep -Eq -- "$p" "$tmp/out" || { bad "$name: report lacks /$p/: $(cat "$tmp/out")"; return; }
+  judged "$name" "$want" "$failed" "$BOOK_GEN/$file" "$stem.stderr" "$stem.json" "$@"
+}
+
+# judged NAME STATUS FAILED OUT ERR JSON REGEX...: the stderr line, the report's lines and the
+# JSON verdict of one run whose exit status was STATUS.
+judged() {
+  local name=$1 want=$2 failed=$3 out=$4 err=$5 json=$6; shift 6
+  if [ "$want" = 0 ]; then
+    [ -s "$err" ] && { bad "$name: stderr not empty: $(cat "$err")"; return; }
+  elif [ "$(wc -l <"$err")" != 1 ] || ! grep -q "^vibook: " "$err"; then
+    bad "$name: want one stderr line, got: $(cat "$err")"; return
+  fi
+  for p in "$@"; do
+    grep -Eq -- "$p" "$out" || { bad "$name: report lacks /$p/: $(cat "$out")"; return; }
   done
-  python3 - "$tmp/v.json" "$failed" <<'PY' || { bad "$name: JSON verdict"; return; }
+  python3 - "$json" "$failed" <<'PY' || { bad "$name: JSON verdict"; return; }
 import json, os, sys
 j = json.load(open(sys.argv[1]))
 want = [w for w in sys.argv[2].split(",") if w]

@@ -21,9 +21,8 @@ cp "$tmp/v.json" "$tmp/cat-spherical.json"
 case_ rattle-double 0 "" 'order +(1\.9|2\.0)[0-9]* over .*: yes' '^hidden constraint .*: yes' \
   -- --method rattle --problem double-pendulum
 cp "$tmp/v.json" "$tmp/cat-double.json"
-case_ shake-spherical 5 "order,symmetric,time-reversible,hidden constraint" \
-  '^position constraint .*: yes' '^hidden constraint .*h = 0\.05: [0-9.]+e-0[12].*: NO' \
-  -- --method shake --problem spherical-pendulum
+# (shake on the spherical pendulum, which fails the hidden constraint, is the book's example:
+# checked in book_examples.sh where the book build ran it)
 arg rattle-off-manifold --q0 --method rattle --q0 1,0,0.1
 arg rattle-not-tangent --p0 --method rattle --q0 1,0,0 --p0 1,0,0
 arg rattle-unconstrained --problem --method rattle --problem kepler
@@ -57,8 +56,7 @@ same_errors ld-trapezoid-is-rattle "$tmp/v.json" "$tmp/cat-spherical.json" 20 1e
 : >"$tmp/not-a-dir"
 arg ld-constraint-report --report --ld "$TRAP" --potential z --constraint "$SPH_G" \
   --q0 "$SPH_Q" --p0 0,0.8,0 --report "$tmp/not-a-dir"
-case_ ld-v-at-q1 5 "order,energy" 'order +(0\.9|1\.0)[0-9]* over .*: NO' \
-  -- --ld "$SE" --potential z --constraint "$SPH_G" --q0 "$SPH_Q" --p0 0,0.8,0
+# (claimed of order 2 it fails: the book's example, checked in book_examples.sh)
 case_ ld-v-at-q1-first-order 0 "" 'order +(0\.9|1\.0)[0-9]* over .*: yes' \
   '^position constraint .*: yes' '^hidden constraint .*: yes' \
   -- --ld "$SE" --potential z --constraint "$SPH_G" --q0 "$SPH_Q" --p0 0,0.8,0 --expected-order 1
