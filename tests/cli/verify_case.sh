@@ -1,7 +1,7 @@
-# Shared by verify_verdicts.sh, verify_composition.sh and verify_stepper.sh (sourced, with V set
-# to the vibook command): a temporary directory, the pass/fail counters; case_, one run of
-# `vibook verify` checked for its exit status, its stderr line, lines of its report and its JSON
-# verdict; arg, one bad argument.
+# Shared by the verify suites and book_examples.sh (sourced, with V set to the vibook command): a
+# temporary directory, the pass/fail counters; case_, one run of `vibook verify` checked for its
+# exit status, its stderr line, lines of its report and its JSON verdict; book_case, the same
+# checks on an example the book build ran; arg, one bad argument.
 # VERIFY_PHASES=1 also checks that every phase that ran is in the JSON (the --ld route has
 # phases; the --composition route has none).
 tmp=$(mktemp -d)

@@ -52,8 +52,8 @@ Eigen::VectorXd sphere_state() {
 
 // Each problem and each method once here, through the library's call: RATTLE on the spherical
 // pendulum, the unprojected method on the double pendulum. The other two pairs (RATTLE on the
-// double pendulum, the unprojected method on the spherical one) are cases of
-// tests/cli/verify_constraint.sh and examples of the book, through the same measure_constrained.
+// double pendulum, the unprojected method on the spherical one) are the book's examples, checked
+// by tests/cli/book_examples.sh, through the same measure_constrained.
 TEST_CASE(
     "RATTLE on the spherical pendulum, and without the velocity projection it fails on the double "
     "pendulum") {

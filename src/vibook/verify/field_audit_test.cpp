@@ -105,8 +105,9 @@ TEST_CASE(
     "field audit: the new kinds of system, a forced Galerkin row passes on both forced "
     "systems") {
   // The rows are a long study (field-audit-systems); the Galerkin row is judged here on both
-  // forced systems. The wrong midpoint rule (order 1: its walk runs to a million steps) is a CLI
-  // test (verify_time.sh), the unprojected RATTLE a doctest of constrained_test.cpp.
+  // forced systems. The wrong midpoint rule (order 1: its walk runs to a million steps) is the
+  // book's example, checked by tests/cli/book_examples.sh; the unprojected RATTLE is a doctest of
+  // constrained_test.cpp.
   const auto g = verify::judge_audit_entry(find("A-FORCED-GAUSS2"));
   INFO(g.note);
   CHECK(g.status == claims::Status::reproduced);
