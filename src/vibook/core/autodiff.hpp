@@ -49,6 +49,21 @@ Vec<Dual<N, T>, N> variables(const Vec<T, N>& x) {
   return v;
 }
 
+/// Seed x as the N independent variables of a Dual2<N, T> vector: each variable's value a
+/// Dual<N, T> seeded as by `variables`, and its outer derivatives the same unit vector (the
+/// value, gradient and Hessian of f come out of one evaluation of f on them).
+template <int N, class T = double>
+Vec<Dual2<N, T>, N> variables2(const Vec<T, N>& x) {
+  using In = Dual<N, T>;
+  Vec<Dual2<N, T>, N> v;
+  for (int i = 0; i < N; ++i) {
+    v(i) = Dual2<N, T>(In(x(i), N, i));
+    v(i).derivatives().setZero();
+    v(i).derivatives()(i) = In(T(1));
+  }
+  return v;
+}
+
 /// Compile-time guard: a callable evaluated on AutoDiff scalars must return the scalar type
 /// itself. An Eigen AutoDiff *expression* returned from a lambda with a deduced return type
 /// refers to temporaries that are gone when the lambda returns.

@@ -277,7 +277,6 @@ class GalerkinIntegrator {
     // 2N variables (q, v) by nested AutoDiff (small, whatever S is).
     auto derivatives = [&](const Vec<T, U>& x) {
       constexpr int K = 2 * N;
-      using In = ad::Dual<K, T>;
       using Out = ad::Dual2<K, T>;
       grad.setZero();
       hess.setZero();
@@ -303,15 +302,8 @@ class GalerkinIntegrator {
           // L = |v|²/2 − V(q): the same numbers the general path below computes (its kinetic
           // term's q-derivatives are exact zeros, its v-derivatives v and I exactly), V's
           // derivatives in the N position variables only.
-          using InQ = ad::Dual<N, T>;
-          using OutQ = ad::Dual2<N, T>;
-          Vec<OutQ, N> Yq;
-          for (int k = 0; k < N; ++k) {
-            Yq(k) = OutQ(InQ(z(k), N, k));
-            Yq(k).derivatives().setZero();
-            Yq(k).derivatives()(k) = InQ(T(1));
-          }
-          const OutQ V = L_.potential(Yq);
+          const ad::Dual2<N, T> V =
+              L_.potential(ad::variables2<N, T>(Vec<T, N>(z.template head<N>())));
           const Vec<T, N> v = z.template tail<N>();
           phi += b * (constant<T>(0.5) * squared_norm(v) - V.value().value());
           Hl.setZero();
@@ -322,12 +314,7 @@ class GalerkinIntegrator {
             for (int j = 0; j < N; ++j) Hl(k, j) = T(0) - V.derivatives()(j).derivatives()(k);
           }
         } else {
-          Vec<Out, K> Y;
-          for (int k = 0; k < K; ++k) {
-            Y(k) = Out(In(z(k), K, k));
-            Y(k).derivatives().setZero();
-            Y(k).derivatives()(k) = In(T(1));
-          }
+          const Vec<Out, K> Y = ad::variables2<K, T>(z);
           const Vec<Out, N> qq = Y.template head<N>(), vv = Y.template tail<N>();
           const Out l = [&] {
             if constexpr (std::is_invocable_v<const Lagrangian&, const Vec<Out, N>&,

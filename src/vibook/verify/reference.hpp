@@ -37,15 +37,8 @@ namespace vibook::verify {
 /// Value, gradient and Hessian of f(Vec<S, M>) → S at x, by nested forward AutoDiff over T.
 template <int M, class T, class F>
 void value_gradient_hessian(F&& f, const Vec<T, M>& x, T& value, Vec<T, M>& g, Mat<T, M>& H) {
-  using In = ad::Dual<M, T>;
   using Out = ad::Dual2<M, T>;
-  Vec<Out, M> X;
-  for (int i = 0; i < M; ++i) {
-    X(i) = Out(In(x(i), M, i));
-    X(i).derivatives().setZero();
-    X(i).derivatives()(i) = In(T(1));
-  }
-  const Out r = f(X);
+  const Out r = f(ad::variables2<M, T>(x));
   value = r.value().value();
   g = r.value().derivatives();
   for (int j = 0; j < M; ++j) H.col(j) = r.derivatives()(j).derivatives();
