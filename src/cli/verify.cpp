@@ -136,11 +136,10 @@ const std::vector<std::pair<std::vector<const char*>, Route>>& routes() {
           "a splitting runs on --problem or on H = |p|^2/2 + V with --potential"}}}},
       {{"--tableau"},
        {"--tableau",
-        {"--tableau", "--problem", "--potential", "--hamiltonian", "--dim"},
+        {"--tableau", "--problem", "--potential", "--hamiltonian", "--dim", "--symbolic"},
         {{"--lagrangian",
           "a partitioned Runge-Kutta method runs on Hamilton's equations; type H after "
-          "--hamiltonian (or V after --potential)"},
-         {"--symbolic", "the variational order of a tableau is measured"}}}},
+          "--hamiltonian (or V after --potential)"}}}},
       {{"--method"},
        {"--method",
         {"--method", "--problem", "--potential", "--lagrangian", "--dim", "--symbolic",
@@ -346,7 +345,7 @@ std::function<int()> add_verify_command(CLI::App& app) {
                 "collocation, order 2S; Lobatto IIIA-IIIB, order 2S-2), on --problem or on "
                 "--potential (1-3 dimensions)");
   c->add_option("--symbolic", o->symbolic,
-                "with --method or --composition: when the symbolic engine "
+                "with --method, --composition or --tableau: when the symbolic engine "
                 "derives the variational order beside the measured one: auto (default: where it "
                 "is quick, i.e. one degree of freedom, a polynomial Lagrangian, or order <= 4), "
                 "always, never");

@@ -8,6 +8,7 @@
 #include "args.hpp"
 #include "verify_map.hpp"
 #include "vibook/core/output_file.hpp"
+#include "vibook/verify/method_symbolic.hpp"
 #include "vibook/verify/tableau_study.hpp"
 
 namespace vibook::cli {
@@ -21,6 +22,7 @@ struct Plan {
   std::unique_ptr<verify::TypedDiscreteLagrangian> sys;
   std::vector<double> q0, p0;
   MapStudy study;  // the measurement settings
+  verify::SymbolicUse symbolic = verify::SymbolicUse::automatic;
 };
 
 Plan check(const VerifyOptions& o) {
@@ -47,6 +49,7 @@ Plan check(const VerifyOptions& o) {
     throw ArgumentError("--expected-order",
                         "is required: the tableau file '" + o.tableau + "' has no 'order'");
   }
+  p.symbolic = verify::parse_symbolic_use(o.symbolic);
   check_study_options(o, p.study);
   return p;
 }
@@ -56,6 +59,15 @@ Plan check(const VerifyOptions& o) {
 int run_tableau(const VerifyOptions& o) {
   Plan p = check(o);
   MapReport rep;
+  // The variational order derived from a and b (a system typed as H has no symbolic L here).
+  const int n = static_cast<int>(p.q0.size());
+  const modified::SymbolicLagrangian L = !p.sys ? verify::test_problem_lagrangian(p.problem->name)
+                                         : o.has("--hamiltonian") || n > 3
+                                             ? modified::SymbolicLagrangian()
+                                         : n == 1 ? verify::typed_lagrangian<1>(p.sys.get())
+                                         : n == 2 ? verify::typed_lagrangian<2>(p.sys.get())
+                                                  : verify::typed_lagrangian<3>(p.sys.get());
+  verify::derive_tableau_variational_order(p.spec, n, L, p.symbolic, p.study);
   if (!p.sys) {
     verify::measure_tableau(p.spec, *p.problem, p.q0, p.p0, p.study, o.symmetric, rep);
     return rep.finish(o);

@@ -2,8 +2,8 @@
 # `vibook verify --tableau FILE`: partitioned Runge-Kutta methods from the example tableaus
 # (examples/tableaus/) reach their documented orders on nonlinear problems (built in, typed
 # after --potential, or any H typed after --hamiltonian), pass the symplecticity conditions at
-# 120 digits and measure their variational order; the two wrong
-# tableaus fail (Lobatto IIIA for both halves: not symplectic; a mistyped entry: conditions,
+# 120 digits and measure their variational order, which the engine also derives from a and b;
+# the wrong tableaus fail (Lobatto IIIA for both halves: not symplectic; a mistyped entry: conditions,
 # order, symplecticity); bad files and arguments exit 2 before any work.
 # Usage: verify_tableau.sh path/to/vibook path/to/examples/tableaus
 set -u
@@ -15,7 +15,52 @@ source "$(dirname "$0")/verify_case.sh"
 case_ lobatto3 0 "" 'Lobatto IIIA-IIIB \(3 stages\)' 'symplectic \(b = bhat .*: yes' \
   'order +(3\.9|4\.0)[0-9]* over .*: yes' \
   '^variational order +(3\.[89]|4\.[01])[0-9] \(measured.*expected 4: agrees' \
-  'time-reversible .*: yes' '^verdict +PASS' -- --tableau "$T/lobatto3-iiia-iiib.json"
+  '^  derived +4 by the engine: .*expected 4: yes \(part of the verdict\); measured 4\.0[0-9]: agrees' \
+  'time-reversible .*: yes' '^verdict +PASS \(order, variational order,' \
+  -- --tableau "$T/lobatto3-iiia-iiib.json"
+# The variational order derived from a and b (the chapter's "The variational order derived"):
+# Lobatto IIIA-IIIB is the Galerkin method lobatto:3, and the two derivations (the tableau's
+# stage velocities, the Galerkin control points) give the same L_d - L_d^E term for term.
+cp "$tmp/v.json" "$tmp/lobatto3-tableau.json"
+"$V" verify --method lobatto:3 --json-out "$tmp/lobatto3-method.json" >/dev/null 2>&1
+python3 - "$tmp/lobatto3-tableau.json" "$tmp/lobatto3-method.json" <<'PY' && ok ||
+import json, sys
+a, b = (json.load(open(f))["variational_order"]["engine"] for f in sys.argv[1:3])
+assert a["derived"] and a["order"] == 4 and a["defect"] == b["defect"], (a, b)
+PY
+  bad "lobatto3: the tableau's derived L_d - L_d^E is not lobatto:3's"
+# The Gauss 2 file's 45-digit decimals, held to 1e-12: gauss:2's exact h^5 term comes back.
+case_ gauss2-derived 0 "" \
+  '^  derived +4 by the engine \(the entries as the decimals typed, a term with every number below 1e-12 counted as zero\)' \
+  -- --tableau "$T/gauss2.json" --problem pendulum
+cp "$tmp/v.json" "$tmp/gauss2-tableau.json"
+"$V" verify --method gauss:2 --problem pendulum --json-out "$tmp/gauss2-method.json" >/dev/null 2>&1
+python3 - "$tmp/gauss2-tableau.json" "$tmp/gauss2-method.json" <<'PY' && ok ||
+import json, sys
+a, b = (json.load(open(f))["variational_order"]["engine"] for f in sys.argv[1:3])
+assert a["order"] == 4 and a["first_term_shown"] == b["defect"][4], (a["first_term_shown"], b["defect"])
+PY
+  bad "gauss2: the tableau's first term is not gauss:2's"
+# The edges: one stage, first order (symplectic Euler as a pair: no interior point to
+# eliminate) passes; a symplectic tableau of order 2 (Lobatto IIIA-IIIB with the middle row of a
+# changed and ahat rebuilt from the conditions) presented as order 4 fails on the derived order
+# as on the measured one.
+printf '{"name": "symplectic Euler", "order": 1, "a": [["1"]], "b": ["1"], "ahat": [["0"]], "bhat": ["1"]}' \
+  >"$tmp/se.json"
+case_ se-derived 0 "" '^  derived +1 by the engine: L_d - L_d\^E = h\^2 \(-1/2\*sin\(x1\)\*v1\).*expected 1: yes' \
+  '^verdict +PASS \(order, variational order,' -- --tableau "$tmp/se.json" --problem pendulum
+cat >"$tmp/order2.json" <<'EOF'
+{"name": "a symplectic pair of order 2", "order": 4,
+ "a": [["0", "0", "0"], ["1/4", "1/4", "0"], ["1/6", "2/3", "1/6"]],
+ "b": ["1/6", "2/3", "1/6"],
+ "ahat": [["1/6", "-1/3", "0"], ["1/6", "5/12", "0"], ["1/6", "2/3", "0"]],
+ "bhat": ["1/6", "2/3", "1/6"]}
+EOF
+case_ order2-as-4 5 "order,variational order,energy" 'symplectic \(b = bhat .*: yes' \
+  '^  derived +2 by the engine: .*expected 4: NO \(part of the verdict\); measured 2\.0[0-9]: agrees' \
+  -- --tableau "$tmp/order2.json" --problem henon-heiles
+case_ never 0 "" '^  derived +not derived \(--symbolic never\)' \
+  -- --tableau "$tmp/se.json" --problem pendulum --symbolic never
 case_ gauss2 0 "" 'order +(3\.9|4\.0)[0-9]* over .*: yes' \
   '^variational order +(3\.[89]|4\.[01])[0-9] \(measured' -- --tableau "$T/gauss2.json" \
   --problem henon-heiles
@@ -37,8 +82,11 @@ case_ lobatto4-iiia-only 5 "symplectic" 'symplectic \(b = bhat .*: NO' \
 # lies in their pre-asymptotic range (7.5 for order 8 on Kepler); from order 6 on the order
 # study runs in double-double with its window down to 1e-24, where the slopes have settled.
 case_ gauss4-kepler 0 "" 'order +(7\.[89]|8\.[01])[0-9]* over .*: yes' 'runs in double-double' \
+  '^  derived +not derived by default: to h\^9 in 2 dimensions' \
   '^symplectic +defect .*: yes$' -- --tableau "$T/gauss4.json" --problem kepler --steps 4096
+# (derived to h^9 on the pendulum only with --symbolic always: its 45-digit entries, 13 s)
 case_ gauss4-pendulum 0 "" 'order +(7\.[89]|8\.[01])[0-9]* over .*: yes' \
+  '^  derived +not derived by default: entries of up to 4[0-9] digits' \
   -- --tableau "$T/gauss4.json" --problem pendulum --steps 4096
 case_ gauss5-kepler 0 "" 'order +(9\.[89]|10\.[01])[0-9]* over .*: yes' \
   -- --tableau "$T/gauss5.json" --problem kepler --steps 4096
@@ -66,6 +114,7 @@ case_ lobatto3-as-6 5 "order,energy" 'expected 6 .*: NO' \
 # orbit out of the potential well, and the run ends in a numerical failure, exit 3).
 HH='x^2/2+y^2/2+x^2*y-y^3/3'
 case_ typed-lobatto3 0 "" 'order +(3\.9|4\.0)[0-9]* over .*: yes' 'V = x\^2/2.* \(--potential\)' \
+  '^  derived +4 by the engine: .*expected 4: yes' \
   'symplectic \(b = bhat .*: yes' -- --tableau "$T/lobatto3-iiia-iiib.json" --potential "$HH" \
   --q0 0.1,0.2 --p0 0.3,0.1
 case_ typed-typo 5 "order,symplectic,symmetric,time-reversible,energy" 'symplectic \(b = bhat .*: NO' \
@@ -93,6 +142,7 @@ case_ ham-gauss2 0 "" 'order +(3\.9|4\.0)[0-9]* over .*: yes' '\(--hamiltonian\)
   -- --tableau "$T/gauss2.json" --hamiltonian "$MASS" --q0 0.5 --p0 0.3 --steps 4096
 case_ ham-lobatto3 0 "" 'order +(3\.9|4\.0)[0-9]* over .*: yes' \
   '^variational order +(3\.[89]|4\.[01])[0-9] \(measured.*agrees' \
+  '^  derived +not derived: the system is typed as a Hamiltonian' \
   -- --tableau "$T/lobatto3-iiia-iiib.json" --hamiltonian "$MASS" --q0 0.5 --p0 0.3 --steps 4096
 case_ ham-typo 5 "order,symplectic,symmetric,time-reversible,energy" 'symplectic \(b = bhat .*: NO' \
   -- --tableau "$T/wrong-lobatto3-typo.json" --hamiltonian "$MASS" --q0 0.5 --p0 0.3 --steps 4096

@@ -102,7 +102,77 @@ SymbolicDL galerkin_dl_n(const ExactQuadrature& rule, const SymbolicLagrangian& 
                                  InexactLiterals::error);
 }
 
+// --- a symplectic partitioned Runge–Kutta method (galerkin_dl.hpp, prk_dl) -------------------
+template <int N>
+SymbolicDL prk_dl_n(const std::vector<std::vector<ex>>& a, const std::vector<ex>& b,
+                    const SymbolicLagrangian& L, std::shared_ptr<JetSpace> jets,
+                    std::string description) {
+  const int s = static_cast<int>(b.size());
+  // k: the largest weight, the first of equal ones (the weights are exact numbers)
+  int k = 0;
+  for (int i = 1; i < s; ++i)
+    if (GiNaC::abs(GiNaC::ex_to<GiNaC::numeric>(b[i])) >
+        GiNaC::abs(GiNaC::ex_to<GiNaC::numeric>(b[k])))
+      k = i;
+  const std::vector<GiNaC::numeric> at(static_cast<std::size_t>(s - 1), GiNaC::numeric(1, 2));
+  const auto dl = [&](const Vec<ex, N>& q0, const std::vector<Vec<ex, N>>& X, const Vec<ex, N>& q1,
+                      const ex& h) {
+    // the stage velocities: V_j = (X_j − q0)/(h/2) for j ≠ k, V_k from the constraint
+    std::vector<std::vector<ex>> V(static_cast<std::size_t>(s), std::vector<ex>(N, ex(0)));
+    for (int j = 0, m = 0; j < s; ++j) {
+      if (j == k) continue;
+      for (int d = 0; d < N; ++d) V[j][d] = 2 * (X[static_cast<std::size_t>(m)](d) - q0(d)) / h;
+      ++m;
+    }
+    for (int d = 0; d < N; ++d) {
+      ex rest = (q1(d) - q0(d)) / h;
+      for (int j = 0; j < s; ++j)
+        if (j != k) rest -= b[j] * V[j][d];
+      V[k][d] = rest / b[k];
+    }
+    ex sum = 0;
+    for (int i = 0; i < s; ++i) {
+      std::vector<ex> x(N);
+      for (int d = 0; d < N; ++d) {
+        ex y = q0(d);
+        for (int j = 0; j < s; ++j) y += h * a[i][j] * V[j][d];
+        x[d] = y;
+      }
+      sum += b[i] * L(x, V[i]);
+    }
+    return h * sum;
+  };
+  return symbolic_dl_interior<N>(dl, std::move(jets), std::move(description), at,
+                                 InexactLiterals::error);
+}
+
 }  // namespace
+
+SymbolicDL prk_dl(const std::vector<std::vector<ex>>& a, const std::vector<ex>& b,
+                  const SymbolicLagrangian& L, std::shared_ptr<JetSpace> jets,
+                  std::string description) {
+  const std::size_t s = b.size();
+  if (s == 0 || a.size() != s)
+    throw std::invalid_argument("prk_dl: a tableau needs an s x s matrix a and s weights b");
+  for (std::size_t i = 0; i < s; ++i) {
+    if (a[i].size() != s)
+      throw std::invalid_argument("prk_dl: a tableau needs an s x s matrix a and s weights b");
+    if (!GiNaC::is_a<GiNaC::numeric>(b[i]) || b[i].is_zero())
+      throw std::invalid_argument(
+          "prk_dl: every weight b_i must be a nonzero number (a zero weight leaves its stage "
+          "velocity undetermined)");
+  }
+  switch (jets->dofs()) {
+    case 1:
+      return prk_dl_n<1>(a, b, L, std::move(jets), std::move(description));
+    case 2:
+      return prk_dl_n<2>(a, b, L, std::move(jets), std::move(description));
+    case 3:
+      return prk_dl_n<3>(a, b, L, std::move(jets), std::move(description));
+    default:
+      throw std::invalid_argument("prk_dl: 1 to 3 degrees of freedom");
+  }
+}
 
 SymbolicDL galerkin_dl(const ExactQuadrature& rule, const SymbolicLagrangian& L,
                        std::shared_ptr<JetSpace> jets, std::string description) {

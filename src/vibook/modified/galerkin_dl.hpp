@@ -46,4 +46,21 @@ using SymbolicLagrangian = std::function<ex(const std::vector<ex>& q, const std:
 SymbolicDL galerkin_dl(const ExactQuadrature& rule, const SymbolicLagrangian& L,
                        std::shared_ptr<JetSpace> jets, std::string description);
 
+/// A symplectic partitioned Runge–Kutta method as a discrete Lagrangian, from its positions'
+/// tableau (a, b) alone (Suris; Marsden & West 2001, on symplectic partitioned Runge–Kutta
+/// methods; Hairer, Lubich & Wanner §VI.6):
+///
+///   L_d(q0, q1, h) = ext h Σ_i b_i L(q0 + h Σ_j a_ij V_j, V_i)  subject to  q1 = q0 + h Σ_j b_j
+///   V_j,
+///
+/// whose discrete Euler–Lagrange equations are the method with â_ij = b_j (1 − a_ji / b_i).
+/// The constraint fixes the stage velocity V_k of the largest weight (the first of equal ones);
+/// each other V_j is the interior point X_j = q0 + (h/2) V_j of SymbolicDL::qm, started on the
+/// chord at τ = 1/2 (where V_j = (q1 − q0)/h), for the engine to eliminate as series in h.
+/// Entries exact (rationals); every b_i nonzero (std::invalid_argument otherwise);
+/// N = jets->dofs() from 1 to 3.
+SymbolicDL prk_dl(const std::vector<std::vector<ex>>& a, const std::vector<ex>& b,
+                  const SymbolicLagrangian& L, std::shared_ptr<JetSpace> jets,
+                  std::string description);
+
 }  // namespace vibook::modified

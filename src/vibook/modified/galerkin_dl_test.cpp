@@ -7,6 +7,7 @@
 #include <doctest/doctest.h>
 
 #include "vibook/integrators/galerkin.hpp"
+#include "vibook/modified/canonical.hpp"
 #include "vibook/modified/galerkin_dl.hpp"
 
 using namespace vibook;
@@ -101,4 +102,37 @@ TEST_CASE("galerkin symbolic: variational order 2s for Gauss and 2s - 2 for Loba
   ExactQuadrature moved = *exact_quadrature("gauss", 2);
   moved.c = {numeric(3, 10), numeric(7, 10)};
   CHECK(galerkin_order(moved, 4).order == 2);
+}
+
+TEST_CASE("prk symbolic: a symplectic tableau's variational order from a and b, two-sided") {
+  // prk_dl (Suris; Marsden & West 2001): on the pendulum, Lobatto IIIA-IIIB (three stages,
+  // order 4) gives the Galerkin lobatto:3's L_d - L_d^E term for term (HLW Theorem VI.6.4), the
+  // Stormer-Verlet pair order 2 and symplectic Euler (one stage, no interior point) order 1,
+  // each with its first term nonzero. The wrong input: Lobatto IIIA-IIIB's middle row of a
+  // changed to (1/4, 1/4, 0), which stays a symplectic pair with ahat rebuilt from the
+  // conditions but drops to order 2.
+  auto order_of = [](const std::vector<std::vector<ex>>& a, const std::vector<ex>& b, int K) {
+    auto J = std::make_shared<JetSpace>(1);
+    Engine E(prk_dl(a, b, pendulum, J, "tableau"), K);
+    return E.variational_order(pendulum({J->x(0, 0)}, {J->x(1, 0)}));
+  };
+  const numeric sixth(1, 6), two3(2, 3);
+  const std::vector<ex> b3 = {sixth, two3, sixth};
+  const VariationalOrder lobatto = order_of(
+      {{0, 0, 0}, {numeric(5, 24), numeric(1, 3), numeric(-1, 24)}, {sixth, two3, sixth}}, b3, 4);
+  CHECK(lobatto.order == 4);
+  const VariationalOrder galerkin = galerkin_order(*exact_quadrature("lobatto", 3), 4);
+  REQUIRE(lobatto.defect.size() == galerkin.defect.size());
+  for (std::size_t k = 0; k < lobatto.defect.size(); ++k)  // (each on its own jets: as text)
+    CHECK(canonical_string(lobatto.defect[k], Format::text) ==
+          canonical_string(galerkin.defect[k], Format::text));
+  CHECK(!vanishes(lobatto.defect[4]));
+  const numeric half(1, 2);
+  CHECK(order_of({{0, 0}, {half, half}}, {half, half}, 2).order == 2);
+  CHECK(order_of({{1}}, {1}, 1).order == 1);
+  const VariationalOrder wrong =
+      order_of({{0, 0, 0}, {numeric(1, 4), numeric(1, 4), 0}, {sixth, two3, sixth}}, b3, 4);
+  CHECK(wrong.order == 2);
+  // a zero weight leaves its stage velocity undetermined: refused
+  CHECK_THROWS_AS(order_of({{0, 0}, {half, half}}, {1, 0}, 2), std::invalid_argument);
 }

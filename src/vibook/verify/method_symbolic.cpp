@@ -24,6 +24,7 @@
 #include "vibook/modified/canonical.hpp"
 #include "vibook/modified/ginac_eigen.hpp"
 #include "vibook/problems/problems.hpp"
+#include "vibook/verify/tableau_study.hpp"
 
 namespace vibook::verify {
 
@@ -84,6 +85,8 @@ struct Derivation {
   bool long_digits = false;
   int stages = 0;      ///< a composition's stages (the cost grows quickly with them)
   bool typed = false;  ///< stages of a typed L_d (--composition ld)
+  /// A tableau's longest entry, in digits (typed decimals: long numbers beyond 20).
+  std::size_t entry_digits = 0;
 };
 
 // The number of one term of an expanded polynomial (a numeric, or a product's numeric factors).
@@ -220,6 +223,13 @@ void install(Derivation derivation, SymbolicUse use, MapStudy& study) {
           "about 30 s, yoshida6 on Kepler: unfinished after 11 minutes at 40 digits, on one "
           "core); --symbolic always runs it",
           d.stages, quick ? "" : ", on a Lagrangian that is not polynomial,");
+    // A tableau typed to many digits (the Gauss files, 45): by default only to h^5
+    if (skip.empty() && use == SymbolicUse::automatic && d.entry_digits > 20 && K > 4)
+      skip = fmt::format(
+          "not derived by default: entries of up to {} digits make every number long, and to "
+          "h^{} the engine takes a minute or more (the four-stage Gauss file: about 13 s on the "
+          "pendulum and 75 s on Henon-Heiles, on one core); --symbolic always runs it",
+          d.entry_digits, K + 1);
     if (skip.empty() && use == SymbolicUse::automatic && d.cut_rule && d.dim > 1)
       skip = fmt::format(
           "not derived by default: with the nodes cut to 30 digits the engine takes minutes in "
@@ -810,6 +820,82 @@ NystromTheorem10 nystrom_theorem10(const std::vector<mpfr_real>& c,
   r.h2_difference =
       largest_coefficient(E[2][0] - (beta1 * f11 * xdot * xdot + beta2 * f1 * f)).to_double();
   return r;
+}
+
+// --- a symplectic tableau (book chapter "Verify your own integrator", section "A method from
+// its tableau": the variational order derived) --------------------------------------------------
+
+void derive_tableau_variational_order(const TableauSpec& spec, int dim,
+                                      modified::SymbolicLagrangian L, SymbolicUse use,
+                                      MapStudy& study) {
+  // Without the conditions (or for an RKN tableau) the tableau route says itself why there is
+  // no discrete Lagrangian to derive.
+  if (spec.rkn || !spec.symplectic_conditions) return;
+  const std::lock_guard<std::recursive_mutex> lock(modified::ginac_mutex());
+  Derivation d;
+  d.dim = dim;
+  d.L = L;
+  d.stages = static_cast<int>(spec.b_text.size());
+  d.source =
+      "engine: the tableau's L_d = ext h sum_i b_i L(q0 + h sum_j a_ij V_j, V_i) subject to q1 = "
+      "q0 + h sum_j b_j V_j, the stage velocities eliminated as series in h; L_d - L_d^E along "
+      "the solutions of the intended L, expanded about the step's midpoint (Suris; Marsden & "
+      "West 2001; Hairer, Lubich & Wanner VI.6)";
+  // The entries as the rationals they are written as.
+  std::vector<std::vector<modified::ex>> a;
+  std::vector<modified::ex> b;
+  bool decimal = false;
+  std::size_t longest = 0;  // digits of the longest entry
+  auto read = [&](const std::string& t) -> std::optional<modified::ex> {
+    const std::optional<GiNaC::numeric> x = exact_number(t);
+    if (!x) return std::nullopt;
+    for (std::size_t i = 1; i < t.size(); ++i)
+      if (std::isdigit(static_cast<unsigned char>(t[i - 1])) && t[i] == '.') decimal = true;
+    longest = std::max<std::size_t>(longest, std::count_if(t.begin(), t.end(), [](char ch) {
+                                      return std::isdigit(static_cast<unsigned char>(ch));
+                                    }));
+    return modified::ex(*x);
+  };
+  std::string unread;
+  for (std::size_t i = 0; i < spec.b_text.size() && unread.empty(); ++i) {
+    const auto bi = read(spec.b_text[i]);
+    if (!bi)
+      unread = fmt::format("b[{}] ('{}')", i, spec.b_text[i]);
+    else
+      b.push_back(*bi);
+    a.emplace_back();
+    for (std::size_t k = 0; k < spec.a_text[i].size() && unread.empty(); ++k) {
+      const auto aik = read(spec.a_text[i][k]);
+      if (!aik)
+        unread = fmt::format("a[{}][{}] ('{}')", i, k, spec.a_text[i][k]);
+      else
+        a.back().push_back(*aik);
+    }
+  }
+  if (!L) {
+    d.skip =
+        "not derived: the system is typed as a Hamiltonian, and vibook does not form its "
+        "Lagrangian symbolically";
+  } else if (!unread.empty()) {
+    d.skip = "not derived: the entry " + unread +
+             " is not a decimal or a ratio, which the engine needs to read exactly";
+  } else if (std::any_of(b.begin(), b.end(), [](const modified::ex& x) { return x.is_zero(); })) {
+    d.skip =
+        "not derived: a weight b_i = 0 leaves its stage velocity undetermined in h sum_i b_i "
+        "L(Q_i, V_i)";
+  }
+  if (decimal) d.entry_digits = longest;
+  if (decimal) {
+    // As typed composition coefficients: the tolerance the conditions hold the entries to.
+    d.zero_below = kTypedZeroBelow;
+    d.precision =
+        "the entries as the decimals typed, a term with every number below 1e-12 counted as "
+        "zero";
+  }
+  d.make_dl = [a, b, L, name = spec.name](std::shared_ptr<modified::JetSpace> J) {
+    return modified::prk_dl(a, b, L, std::move(J), name);
+  };
+  install(std::move(d), use, study);
 }
 
 }  // namespace vibook::verify

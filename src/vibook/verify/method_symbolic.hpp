@@ -114,6 +114,18 @@ void derive_composition_variational_order(const CompositionSpec& spec, int dim,
                                           const SymbolicStageDl& ld, modified::SymbolicLagrangian L,
                                           SymbolicUse use, MapStudy& study);
 
+struct TableauSpec;  // verify/tableau_study.hpp
+
+/// The same for a symplectic tableau (`vibook verify --tableau`): its discrete Lagrangian from
+/// a and b (modified::prk_dl), the entries read exactly as written; with a decimal among them
+/// a term whose every number is below 1e-12 counts as zero (the tolerance of the tableau's
+/// conditions). Nothing is installed for a tableau that fails the symplecticity conditions or
+/// an RKN tableau (the tableau route reports why). An empty `L` (a system typed as a
+/// Hamiltonian) is reported as not derived.
+void derive_tableau_variational_order(const TableauSpec& spec, int dim,
+                                      modified::SymbolicLagrangian L, SymbolicUse use,
+                                      MapStudy& study);
+
 /// The intended Lagrangian of a typed system on the engine's symbols: L(q, v) as typed after
 /// --lagrangian, or |v|²/2 − V(q) with V typed after --potential (not for a system typed as a
 /// Hamiltonian other than |p|²/2 + V). `sys` must outlive it.

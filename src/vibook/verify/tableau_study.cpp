@@ -218,6 +218,12 @@ TableauSpec parse_tableau(const std::string& content, const std::string& path) {
   }
   const auto b = row(path, j["b"], "b", s);
   const auto a = matrix(path, j["a"], "a", s);
+  auto text = [](const json& e) { return e.is_string() ? e.get<std::string>() : e.dump(); };
+  for (std::size_t i = 0; i < s; ++i) {
+    t.b_text.push_back(text(j["b"][i]));
+    t.a_text.emplace_back();
+    for (std::size_t k = 0; k < s; ++k) t.a_text.back().push_back(text(j["a"][i][k]));
+  }
   const auto bhat = j.contains("bhat") ? row(path, j["bhat"], "bhat", s) : b;
   const auto ahat = j.contains("ahat") ? matrix(path, j["ahat"], "ahat", s) : a;
   auto absd = [](const mpfr_real& x) { return static_cast<double>(x < 0 ? mpfr_real(-x) : x); };

@@ -61,6 +61,10 @@ struct TableauSpec {
   bool symplectic_conditions = false;  ///< both of the last two at most 1e-12
   double expected = 0;
   std::string expected_from;
+  /// The entries of a and b as written in the file (a JSON number as it is printed): what the
+  /// symbolic engine reads exactly (method_symbolic.hpp, derive_tableau_variational_order).
+  std::vector<std::vector<std::string>> a_text;
+  std::vector<std::string> b_text;
   // A Runge–Kutta–Nyström tableau (abar, bbar): then `tableau` is unused, and the residuals
   // above are those of the RKN conditions (weights: |Σ b_i − 1| and |Σ b̄_i − 1/2|; bhat:
   // |b̄_i − b_i(1 − c_i)|; symplectic: |b_i(b̄_j − ā_ij) − b_j(b̄_i − ā_ji)|).
