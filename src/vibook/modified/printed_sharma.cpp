@@ -5,6 +5,7 @@
 #include <random>
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include "vibook/avi/avi.hpp"
 #include "vibook/kepler/kepler.hpp"
@@ -346,40 +347,118 @@ std::vector<claims::FormulaComparison> sharma_discrete_prints(
     const std::string conv = "vibook's time-marching step (extended.hpp) on " + dl +
                              ": p_k = −D2 L_d(k, k+1) = "
                              "D4 L_d(k−1, k) and E_k = D1 L_d(k, k+1) = −D3 L_d(k−1, k)";
+    // Our side shown in the step's midpoint, difference and duration (Target::shown_as): a
+    // derivative of L_d(k+o, k+o+1) written in q̄ = (q_{k+o} + q_{k+o+1})/2, Δq = q_{k+o+1} −
+    // q_{k+o} and Δt = t_{k+o+1} − t_{k+o}, instead of the components of q_{k+o}, q_{k+o+1}
+    // multiplied out (|q̄|² as six terms).
+    const char* const half[] = {"k-\\frac{1}{2}", "k+\\frac{1}{2}"};
+    std::vector<std::vector<GiNaC::symbol>> qb(2), dqs(2);
+    std::vector<GiNaC::symbol> dts;
+    for (int o = 0; o < 2; ++o) {
+      for (int i = 0; i < 2; ++i) {
+        qb[o].emplace_back(fmt::format("qbar{}_{}", i + 1, o),
+                           fmt::format("{{\\bar{{q}}^{{{}}}_{{{}}}}}", i + 1, half[o]));
+        dqs[o].emplace_back(fmt::format("dq{}_{}", i + 1, o),
+                            fmt::format("{{\\Delta q^{{{}}}_{{{}}}}}", i + 1, half[o]));
+      }
+      dts.emplace_back(fmt::format("dt_{}", o), fmt::format("{{\\Delta t_{{{}}}}}", half[o]));
+    }
+    // step o = −1 (from k−1 to k) or 0 (from k to k+1): into the abbreviations and back
+    auto to_short = [&](int o) {
+      GiNaC::exmap m;
+      for (int i = 0; i < 2; ++i) {
+        m[q[o + 1][i]] = qb[o + 1][i] - dqs[o + 1][i] / 2;
+        m[q[o + 2][i]] = qb[o + 1][i] + dqs[o + 1][i] / 2;
+      }
+      m[t[o + 1]] = t[o + 2] - dts[o + 1];
+      return m;
+    };
+    auto back = [&](std::initializer_list<int> steps) {
+      GiNaC::exmap m;
+      for (int o : steps)
+        for (int i = 0; i < 2; ++i) {
+          m[qb[o + 1][i]] = (q[o + 1][i] + q[o + 2][i]) / 2;
+          m[dqs[o + 1][i]] = q[o + 2][i] - q[o + 1][i];
+          m[dts[o + 1]] = t[o + 2] - t[o + 1];
+        }
+      return m;
+    };
+    auto where = [&](std::initializer_list<int> steps) {
+      std::vector<std::string> parts;
+      for (int o : steps) {
+        const std::string a = o < 0 ? "k-1" : "k", b = o < 0 ? "k" : "k+1";
+        parts.push_back(fmt::format(
+            "\\bar{{\\mathbf{{q}}}}_{{{0}}} = \\tfrac{{1}}{{2}}(\\mathbf{{q}}_{{{1}}} + "
+            "\\mathbf{{q}}_{{{2}}}),\\ \\Delta\\mathbf{{q}}_{{{0}}} = \\mathbf{{q}}_{{{2}}} - "
+            "\\mathbf{{q}}_{{{1}}},\\ \\Delta t_{{{0}}} = t_{{{2}}} - t_{{{1}}}",
+            half[o + 1], a, b));
+      }
+      return "\\text{with } " + fmt::format("{}", fmt::join(parts, ",\\ "));
+    };
+    // a derivative of L_d(k+o, k+o+1), shown: the powers' bases multiplied out again, so that
+    // |q̄|² reads as two squares
+    auto tidy = [](const ex& e) {
+      struct Bases : GiNaC::map_function {
+        ex operator()(const ex& x) override {
+          if (GiNaC::is_a<GiNaC::power>(x))
+            return GiNaC::pow(GiNaC::expand(x.op(0).map(*this)), x.op(1));
+          return x.map(*this);
+        }
+      } bases;
+      return bases(e);
+    };
+    auto shown = [&](int o, const std::vector<ex>& d) {
+      std::vector<ex> r;
+      for (const ex& x : d) r.push_back(tidy(x.subs(to_short(o))));
+      return r;
+    };
     // (11)–(12): the variation of the discrete action Σ L_d (9) with respect to q_k and t_k.
-    std::vector<ex> dq, dt;
+    std::vector<ex> dq, dt, dq_shown, dt_shown;
     {
       const ex S = Ld_at(-1) + Ld_at(0);
       dq = {S.diff(q[1][0]), S.diff(q[1][1])};
       dt = {S.diff(t[1])};
+      for (int i = 0; i < 2; ++i)
+        dq_shown.push_back(shown(-1, {Ld_at(-1).diff(q[1][i])})[0] +
+                           shown(0, {Ld_at(0).diff(q[1][i])})[0]);
+      dt_shown = {shown(-1, {Ld_at(-1).diff(t[1])})[0] + shown(0, {Ld_at(0).diff(t[1])})[0]};
     }
+    auto exact_shown = [&](const std::vector<ex>& target, const std::vector<ex>& display,
+                           std::initializer_list<int> steps) {
+      Target tg = Target::exactly(target);
+      tg.shown_as(display, back(steps), where(steps));
+      return tg;
+    };
+    auto one_step = [&](int o, const std::vector<ex>& target) {
+      return exact_shown(target, shown(o, target), {o});
+    };
     const std::string var = "the derivative of the discrete action Σ L_d (9), with " + dl + ", ";
     cmp(Paper::S,
         R"(\mathbf{D}_4 L_d(t_{k-1}, \mathbf{q}_{k-1}, t_k, \mathbf{q}_k) + \mathbf{D}_2 L_d(t_k, \mathbf{q}_k, t_{k+1}, \mathbf{q}_{k+1}) = \mathbf{0}, \quad (11))",
         "the discrete Euler–Lagrange equation in q (11), its left-hand side",
-        var + "with respect to q_k", n, Target::exactly(dq), {0});
+        var + "with respect to q_k", n, exact_shown(dq, dq_shown, {-1, 0}), {0});
     cmp(Paper::S,
         R"(\mathbf{D}_3 L_d(t_{k-1}, \mathbf{q}_{k-1}, t_k, \mathbf{q}_k) + \mathbf{D}_1 L_d(t_k, \mathbf{q}_k, t_{k+1}, \mathbf{q}_{k+1}) = 0. \quad (12))",
         "the discrete energy equation (12), its left-hand side", var + "with respect to t_k", n,
-        Target::exactly(dt), {0});
+        exact_shown(dt, dt_shown, {-1, 0}), {0});
     cmp(Paper::S,
         R"(\mathbf{p}_k = \mathbf{D}_4 L_d(t_{k-1}, \mathbf{q}_{k-1}, t_k, \mathbf{q}_k). \quad (13))",
-        "the discrete momentum (13)", conv, n, Target::exactly(d_slot(-1, 4)), {1});
+        "the discrete momentum (13)", conv, n, one_step(-1, d_slot(-1, 4)), {1});
     cmp(Paper::S,
         R"(E_k = \mathbf{D}_3 L_d(t_{k-1}, \mathbf{q}_{k-1}, t_k, \mathbf{q}_k). \quad (14))",
-        "the discrete energy (14)", conv, n, Target::exactly(neg(d_slot(-1, 3))), {1});
+        "the discrete energy (14)", conv, n, one_step(-1, neg(d_slot(-1, 3))), {1});
     cmp(Paper::S,
         R"(-\mathbf{D}_2 L_d(t_k, \mathbf{q}_k, t_{k+1}, \mathbf{q}_{k+1}) = \mathbf{p}_k, \quad (15))",
-        "the momentum equation (15)", conv, n, Target::exactly(neg(d_slot(0, 2))), {0});
+        "the momentum equation (15)", conv, n, one_step(0, neg(d_slot(0, 2))), {0});
     cmp(Paper::S,
         R"(\mathbf{D}_1 L_d(t_k, \mathbf{q}_k, t_{k+1}, \mathbf{q}_{k+1}) = E_k, \quad (16))",
-        "the energy equation (16)", conv, n, Target::exactly(d_slot(0, 1)), {0});
+        "the energy equation (16)", conv, n, one_step(0, d_slot(0, 1)), {0});
     cmp(Paper::S,
         R"(\mathbf{p}_{k+1} = \mathbf{D}_4 L_d(t_k, \mathbf{q}_k, t_{k+1}, \mathbf{q}_{k+1}), \quad (17))",
-        "the momentum update (17)", conv, n, Target::exactly(d_slot(0, 4)), {1});
+        "the momentum update (17)", conv, n, one_step(0, d_slot(0, 4)), {1});
     cmp(Paper::S,
         R"(E_{k+1} = -\mathbf{D}_3 L_d(t_k, \mathbf{q}_k, t_{k+1}, \mathbf{q}_{k+1}). \quad (18))",
-        "the energy update (18)", conv, n, Target::exactly(neg(d_slot(0, 3))), {1});
+        "the energy update (18)", conv, n, one_step(0, neg(d_slot(0, 3))), {1});
   } else if (group == "eq39") {
     const V2 qs(J->x(0, 0), J->x(0, 1));
     {

@@ -45,6 +45,19 @@ Target Target::exactly(const std::vector<ex>& components) {
 
 Target Target::exactly(const ex& scalar) { return exactly(std::vector<ex>{scalar}); }
 
+Target& Target::shown_as(std::vector<ex> display, GiNaC::exmap abbreviations, std::string latex) {
+  if (display.size() != exact.size())
+    throw std::logic_error("Target::shown_as: one shown form per component");
+  for (std::size_t i = 0; i < display.size(); ++i)
+    if (!modified::vanishes(display[i].subs(abbreviations) - exact[i]))
+      throw std::logic_error("Target::shown_as: component " + std::to_string(i + 1) +
+                             " shown is not the target once its abbreviations are substituted");
+  shown = std::move(display);
+  where = std::move(abbreviations);
+  where_latex = std::move(latex);
+  return *this;
+}
+
 namespace {
 
 // Abstract calls compare equal only with their arguments in one form: expand them.
@@ -607,7 +620,9 @@ claims::FormulaComparison compare(const Spec& spec, const std::vector<Case>& cas
       // an exact polynomial in h with two powers or more: collected by them (a screen of
       // expanded terms otherwise: Shen & Sun's (4.4b) on a test force)
       const ex h = cases[0].notation->jets().h();
-      for (const auto& e : t.exact) {
+      // shown in abbreviations (Target::shown_as, checked equal to the target)
+      for (const auto& e : t.shown) comps.push_back(readable_latex(e));
+      for (const auto& e : t.shown.empty() ? t.exact : std::vector<ex>{}) {
         const ex x = GiNaC::expand(e);
         std::vector<ex> c;
         if (x.has(h) && x.is_polynomial(h))
@@ -651,6 +666,7 @@ claims::FormulaComparison compare(const Spec& spec, const std::vector<Case>& cas
                      ? comps[0]
                      : "\\begin{bmatrix}" + fmt::format("{}", fmt::join(comps, " \\\\ ")) +
                            "\\end{bmatrix}";
+    if (!t.shown.empty() && !t.where_latex.empty()) out.ours += ",\\quad " + t.where_latex;
   }
   std::vector<Token> tokens;
   try {

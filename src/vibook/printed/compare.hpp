@@ -60,6 +60,16 @@ struct Target {
   static Target vector_series(const std::vector<std::vector<ex>>& f, int through = -1);
   static Target exactly(const std::vector<ex>& components);
   static Target exactly(const ex& scalar);
+
+  /// How our side of an exact target is shown: `shown[i]` in abbreviations (a midpoint, a
+  /// difference) that `where` maps back to the target's symbols, printed followed by
+  /// `where_latex` ("\\bar q = …"). The comparison uses `exact` alone; the display is checked
+  /// equal to it (`exact[i]` once `where` is substituted), and std::logic_error says which
+  /// component is not.
+  std::vector<ex> shown;
+  GiNaC::exmap where;
+  std::string where_latex;
+  Target& shown_as(std::vector<ex> display, GiNaC::exmap abbreviations, std::string latex);
 };
 
 /// One setting in which the display is read and what it must equal there.
