@@ -196,3 +196,18 @@ TEST_CASE("compare: a mutated formula is read as what it says") {
     CHECK_FALSE(same(printed, other));
   }
 }
+
+TEST_CASE("compare: a target shown in abbreviations must be the target once they are substituted") {
+  // Target::shown_as: the midpoint m = (a + b)/2 and difference d = b - a of a step. A form
+  // that is the target passes; one with a slip (m where 2m is meant, the sign of d) is refused.
+  const GiNaC::symbol a("a"), b("b"), m("m"), d("d");
+  const GiNaC::exmap back = {{m, (a + b) / 2}, {d, b - a}};
+  const ex target = a * a + 2 * a * b + b * b + b - a;  // (a + b)^2 + (b - a)
+  Target ok = Target::exactly(target);
+  CHECK_NOTHROW(ok.shown_as({4 * m * m + d}, back, "m = (a + b)/2, d = b - a"));
+  CHECK(ok.shown.size() == 1);
+  Target slip = Target::exactly(target);
+  CHECK_THROWS_AS(slip.shown_as({2 * m * m + d}, back, ""), std::logic_error);
+  CHECK_THROWS_AS(slip.shown_as({4 * m * m - d}, back, ""), std::logic_error);
+  CHECK(slip.shown.empty());
+}
