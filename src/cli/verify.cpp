@@ -156,7 +156,7 @@ const std::vector<std::pair<std::vector<const char*>, Route>>& routes() {
       {{"--composition"},
        {"--composition",
         {"--composition", "--coefficients", "--problem", "--symbolic", "--ld", "--lagrangian",
-         "--hamiltonian", "--potential", "--dim"},
+         "--hamiltonian", "--potential", "--dim", "--constraint"},
         {}}},
   };
   return table;
@@ -186,8 +186,15 @@ const Route& route_of(const VerifyOptions& o, const CLI::App& c) {
         by = opt;
       }
   const Route& r = chosen ? *chosen : kLd;
-  // --composition BASE other than ld runs on --problem only
-  const bool other_base = r.name == std::string("--composition") && o.composition != "ld";
+  // --composition BASE other than ld (and rattle, on a constrained system) runs on --problem
+  // only; constraints are composed with RATTLE alone
+  const bool composition = r.name == std::string("--composition");
+  const bool other_base = composition && o.composition != "ld" && o.composition != "rattle";
+  if (composition && o.composition != "rattle" && !o.constraints.empty())
+    throw ArgumentError("--constraint",
+                        "does not apply to --composition " + o.composition +
+                            ": only RATTLE's steps are composed on a constraint manifold "
+                            "(--composition rattle)");
   for (const CLI::Option* opt : c.get_options()) {
     const std::string name = opt->get_name();
     if (opt->count() == 0 || name.rfind("--", 0) != 0) continue;
@@ -203,8 +210,9 @@ const Route& route_of(const VerifyOptions& o, const CLI::App& c) {
     if (in(kCommon) || in(r.takes)) continue;
     if (name == "--constraint")
       throw ArgumentError(name, fmt::format("does not apply to {}: constraints are stepped by "
-                                            "--method rattle (or shake), by the constrained "
-                                            "discrete Euler-Lagrange equations of an --ld and by "
+                                            "--method rattle (or shake), its compositions "
+                                            "(--composition rattle), the constrained "
+                                            "discrete Euler-Lagrange equations of an --ld and "
                                             "a black-box stepper",
                                             r.name));
     for (const auto& [n, why] : r.notes)
@@ -252,7 +260,8 @@ int run(const VerifyOptions& o, const CLI::App& c) {
   }
   // A partitioned Runge-Kutta method from its tableau (verify_tableau.cpp).
   if (r.name == std::string("--tableau")) return run_tableau(o);
-  if (o.has("--constraint") && r.name != std::string("a black-box stepper")) {
+  if (o.has("--constraint") && r.name != std::string("a black-box stepper") &&
+      r.name != std::string("--composition")) {
     // Constraints typed as expressions (verify_constrained.cpp): RATTLE or its unprojected
     // variant, or the constrained DEL of the --ld, on H = |p|^2/2 + V.
     if (r.name == std::string("--method")) {
@@ -358,8 +367,10 @@ std::function<int()> add_verify_command(CLI::App& app) {
                 "verify a composition of this base method instead of an --ld: sv, midpoint, se, "
                 "se-adjoint, or Shen & Sun's vi1, vi1-adjoint, vi2 (on --problem); or ld, the "
                 "--ld typed (its adjoint -L_d(q1, q0, -h) for '*' stages; dimensions 1-3) on the "
-                "system of --potential or --hamiltonian (order conditions at 120 digits, "
-                "measured order, symplecticity, reversibility, energy)");
+                "system of --potential or --hamiltonian; or rattle, RATTLE on a constrained "
+                "system (--potential with --constraint, or --problem spherical-pendulum or "
+                "double-pendulum) (order conditions at 120 digits, measured order, "
+                "symplecticity, reversibility, energy)");
   c->add_option(
       "--splitting", o->splitting,
       "verify a splitting method of H = T(p) + V(q) instead of an --ld: its flows in "

@@ -6,13 +6,15 @@
 
 #include <cmath>
 #include <mutex>
-#include "verify_map.hpp"
-
 #include <string>
 #include <vector>
 
+#include <fmt/format.h>
+#include <fmt/ranges.h>
+
 #include "args.hpp"
 #include "cli.hpp"
+#include "verify_map.hpp"
 #include "vibook/core/output_file.hpp"
 #include "vibook/core/precision.hpp"
 #include "vibook/integrators/composition.hpp"
@@ -103,6 +105,49 @@ Plan check(const VerifyOptions& o) {
 }  // namespace
 
 int run_composition(const VerifyOptions& o) {
+  // Compositions of RATTLE on a constrained system (the chapter's "Compositions of RATTLE"):
+  // each stage a whole RATTLE step; no other base is stepped on a constraint manifold.
+  if (!o.constraints.empty() || (o.splitting.empty() && o.composition == "rattle")) {
+    VerifyOptions c = o;
+    if (o.composition == "rattle" && !o.problem.empty()) {
+      // a constrained test problem: its potential, constraints and state, typed
+      const verify::ConstrainedProblem* cp = verify::find_constrained_problem(o.problem);
+      if (!cp)
+        throw ArgumentError("--problem", "'" + o.problem +
+                                             "' is not a constrained test problem "
+                                             "(spherical-pendulum, double-pendulum)");
+      if (!o.potential.empty() || !o.constraints.empty())
+        throw ArgumentError("--problem",
+                            "names a constrained test problem; --potential and --constraint "
+                            "give the system: give one of them");
+      c.problem.clear();
+      c.potential = cp->potential;
+      c.constraints = cp->constraint_texts;
+      if (c.q0.empty()) c.q0 = fmt::format("{}", fmt::join(cp->q0, ","));
+      if (c.p0.empty()) c.p0 = fmt::format("{}", fmt::join(cp->p0, ","));
+    }
+    if (!o.splitting.empty())
+      throw ArgumentError("--constraint",
+                          "does not apply to --splitting: its drifts and kicks leave the "
+                          "constraint manifold (compose RATTLE: --composition rattle)");
+    if (o.composition != "rattle")
+      throw ArgumentError("--constraint",
+                          "does not apply to --composition " + o.composition +
+                              ": only RATTLE's steps are composed on a constraint manifold "
+                              "(--composition rattle)");
+    if (c.constraints.empty())
+      throw ArgumentError("--constraint",
+                          "is required with --composition rattle (with --potential), or a "
+                          "constrained --problem: RATTLE steps a constrained system");
+    for (const char* other : {"--ld", "--lagrangian", "--hamiltonian", "--symbolic"})
+      if (o.has(other))
+        throw ArgumentError(other,
+                            "does not apply to --composition rattle: the system is H = "
+                            "|p|^2/2 + V(q) with --potential and the constraints");
+    verify::CompositionSpec spec;
+    check_coefficients(o, spec);
+    return run_constrained_composition(c, std::move(spec));
+  }
   if (!o.splitting.empty() && !o.potential.empty()) {
     // A splitting on H = |p|^2/2 + V typed: its equivalent composition of symplectic Euler,
     // stepped as the composition of a typed L_d: symplectic Euler's own discrete Lagrangian

@@ -16,8 +16,15 @@
 
 namespace vibook::cli {
 
-int run_constrained_typed(const VerifyOptions& o, verify::ConstrainedStep step) {
-  const bool del = step == verify::ConstrainedStep::del;
+namespace {
+
+// The typed constrained system of `o` (--potential, --constraint, --q0, --p0, --dim) and the
+// study's settings, checked before any work; `ld` the --ld text when one is stepped.
+std::unique_ptr<verify::TypedDiscreteLagrangian> constrained_system(const VerifyOptions& o,
+                                                                    const std::string& ld,
+                                                                    std::vector<double>& q0,
+                                                                    std::vector<double>& p0,
+                                                                    MapStudy& study) {
   if (o.potential.empty())
     throw ArgumentError("--potential",
                         "is required with --constraint: the system is H = |p|^2/2 + V(q) on the "
@@ -42,19 +49,36 @@ int run_constrained_typed(const VerifyOptions& o, verify::ConstrainedStep step) 
   }
   std::unique_ptr<verify::TypedDiscreteLagrangian> sys;
   {
-    verify::TypedTexts texts{o.ld, o.potential, "", "p^2/2 + V(q)", dim};
-    texts.system_only = !del;
+    verify::TypedTexts texts{ld, o.potential, "", "p^2/2 + V(q)", dim};
+    texts.system_only = ld.empty();
     texts.constraints = o.constraints;
     sys = std::make_unique<verify::TypedDiscreteLagrangian>(texts);
   }
-  std::vector<double> q0, p0;
-  MapStudy study;
   check_typed_initial_state(o, sys->dim(), q0, p0, study);
   check_study_options(o, study);
+  return sys;
+}
+
+}  // namespace
+
+int run_constrained_typed(const VerifyOptions& o, verify::ConstrainedStep step) {
+  const bool del = step == verify::ConstrainedStep::del;
+  std::vector<double> q0, p0;
+  MapStudy study;
+  const auto sys = constrained_system(o, del ? o.ld : std::string(), q0, p0, study);
   study.expected = 2;
   if (o.has("--expected-order") || del) study.expected = check_expected_order(o.expected);
   MapReport rep;
   verify::measure_constrained_typed(*sys, {o.potential, o.ld}, step, q0, p0, study, rep);
+  return rep.finish(o);
+}
+
+int run_constrained_composition(const VerifyOptions& o, verify::CompositionSpec spec) {
+  std::vector<double> q0, p0;
+  MapStudy study;
+  const auto sys = constrained_system(o, "", q0, p0, study);
+  MapReport rep;
+  verify::measure_constrained_composition(spec, *sys, o.potential, q0, p0, study, rep);
   return rep.finish(o);
 }
 

@@ -48,5 +48,8 @@ int run_method(const VerifyOptions& o);
 int run_stepper(const VerifyOptions& o);
 /// --constraint with --method rattle|shake (`step`) or an --ld (verify_constrained.cpp).
 int run_constrained_typed(const VerifyOptions& o, verify::ConstrainedStep step);
+/// `--composition rattle --coefficients …` with --potential and --constraint
+/// (verify_constrained.cpp).
+int run_constrained_composition(const VerifyOptions& o, verify::CompositionSpec spec);
 
 }  // namespace vibook::cli

@@ -79,5 +79,41 @@ arg constraint-ld-adaptive --adaptive --ld "$TRAP" --potential z --adaptive epav
 arg constraint-empty --constraint --method rattle --potential z --constraint ' ' --q0 "$SPH_Q" \
   --p0 0,0.8,0
 
+# Compositions of RATTLE (the chapter's "Compositions of RATTLE"): the triple jump reaches order
+# 4 on both test problems and keeps both constraints; the edge, Yoshida's sixth order, measured
+# in double; the wrong input, the triple jump with its middle coefficient's sign flipped, is not
+# consistent and fails on its conditions and its order while each stage keeps the constraints.
+RATTLE_OK=(order conditions, order, consistency, symplectic, symmetric, time-reversible,
+  position constraint, hidden constraint, energy)
+case_ rattle-yoshida4 0 "" 'order conditions .*' 'order 4 by the conditions' \
+  'order +(3\.9|4\.0)[0-9]* over .*: yes' '^position constraint .*: yes' \
+  '^hidden constraint .*: yes' '^symplectic +on the constraint manifold.*: yes' \
+  '^variational order +not measured' "^verdict +PASS \(${RATTLE_OK[*]}\)" \
+  -- --composition rattle --coefficients yoshida4 --problem spherical-pendulum
+case_ rattle-yoshida4-double 0 "" 'order +(3\.9|4\.0)[0-9]* over .*: yes' \
+  '^hidden constraint .*: yes' -- --composition rattle --coefficients yoshida4 \
+  --problem double-pendulum
+case_ rattle-yoshida6 0 "" 'order +(5\.[89]|6\.[01])[0-9]* over .*: yes' 'in double only' \
+  -- --composition rattle --coefficients yoshida6 --problem spherical-pendulum
+case_ rattle-yoshida4-typed 0 "" 'order +(3\.9|4\.0)[0-9]* over .*: yes' \
+  'V = z \(--potential\), constraints g1 = \(x\^2\+y\^2\+z\^2-1\)/2' \
+  -- --composition rattle --coefficients yoshida4 --potential z --constraint "$SPH_G" \
+  --q0 "$SPH_Q" --p0 0,0.8,0
+case_ rattle-flipped 5 "order conditions,order,consistency,energy" \
+  'order 0 by the conditions.*NO' '^position constraint .*: yes' '^hidden constraint .*: yes' \
+  -- --composition rattle --expected-order 4 --problem spherical-pendulum \
+  --coefficients 1.35120719195965763405,1.70241438391931526810,1.35120719195965763405
+arg composition-constraint-sv --constraint --composition sv --coefficients yoshida4 \
+  --potential z --constraint "$SPH_G" --q0 "$SPH_Q" --p0 0,0.8,0
+arg composition-rattle-unconstrained --constraint --composition rattle --coefficients yoshida4
+arg composition-rattle-kepler --problem --composition rattle --coefficients yoshida4 \
+  --problem kepler
+arg composition-rattle-both --problem --composition rattle --coefficients yoshida4 \
+  --problem spherical-pendulum --potential z --constraint "$SPH_G"
+arg composition-rattle-ld --ld --composition rattle --coefficients yoshida4 \
+  --problem spherical-pendulum --ld "$TRAP"
+arg composition-rattle-off --q0 --composition rattle --coefficients yoshida4 --potential z \
+  --constraint "$SPH_G" --q0 1,0,0.1 --p0 0,0.8,0
+
 echo "verify_constraint: $pass passed, $fail failed"
 [ "$fail" = 0 ]

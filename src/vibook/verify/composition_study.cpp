@@ -586,7 +586,7 @@ void measure(const CompositionSpec& p, const std::vector<double>& q0, const std:
 
 void measure_composition(const CompositionSpec& spec, const CompositionStage& base,
                          const CompositionStage& adjoint, const std::string& system_line,
-                         MapStudy study, MapMeasurement& rep) {
+                         MapStudy study, MapMeasurement& rep, bool variational) {
   const Composed k = conditions(spec, rep);
   rep.line("system", system_line);
   // The composed step, stage by stage; the sum of the stages' L_d is the composed L_d.
@@ -603,11 +603,13 @@ void measure_composition(const CompositionSpec& spec, const CompositionStage& ba
   study.symmetric_claimed = study.symmetric_claimed || k.symmetric;
   study.conditions_order = k.conditions_order;
   study.symmetric_note = " (reported only: the composition is not symmetric)";
-  study.generating = composed;
-  study.generating_from = fmt::format(
-      "the sum of the {} stages' discrete Lagrangians ({}) at the positions the stages pass "
-      "through",
-      k.c.size(), spec.base->name);
+  if (variational) {
+    study.generating = composed;
+    study.generating_from = fmt::format(
+        "the sum of the {} stages' discrete Lagrangians ({}) at the positions the stages pass "
+        "through",
+        k.c.size(), spec.base->name);
+  }
   measure_map(study, rep);
 }
 

@@ -94,9 +94,11 @@ using CompositionStage = std::function<double(Eigen::VectorXd& z, double h)>;
 
 /// Measure the composition of `base` (with its adjoint `adjoint`; spec.base names it and says
 /// whether it is symmetric) on the system `study` is set up for by the caller (z0, field,
-/// equations, H); `system_line` describes that system in the report. Appended to `rep`.
+/// equations, H); `system_line` describes that system in the report. Appended to `rep`. With
+/// `variational` false the stages' values are not a discrete Lagrangian the study can measure
+/// (a constrained system's): the variational order is not measured.
 void measure_composition(const CompositionSpec& spec, const CompositionStage& base,
                          const CompositionStage& adjoint, const std::string& system_line,
-                         MapStudy study, MapMeasurement& rep);
+                         MapStudy study, MapMeasurement& rep, bool variational = true);
 
 }  // namespace vibook::verify

@@ -82,6 +82,21 @@ void set_constrained_typed_system(MapStudy& study, const TypedDiscreteLagrangian
                                   const std::vector<double>& p0,
                                   const std::string& where = "of the --constraint equations");
 
+struct CompositionSpec;  // verify/composition_study.hpp
+
+/// A composition of RATTLE steps (`vibook verify --composition rattle --coefficients …` with
+/// --potential and --constraint; Reich 1996): the stages of `spec` (a catalogue entry or a
+/// typed list; an adjoint stage is RATTLE again, RATTLE being symmetric) each a whole RATTLE
+/// step of size γ_i h on the typed constrained system, measured by measure_composition with the
+/// phases of measure_constrained_typed (its constraint residuals, symplecticity on the
+/// manifold, the index-1 reference); the variational order is not measured. The same
+/// ArgumentErrors as measure_constrained_typed. `sys` must outlive the call.
+void measure_constrained_composition(const CompositionSpec& spec,
+                                     const TypedDiscreteLagrangian& sys,
+                                     const std::string& potential, const std::vector<double>& q0,
+                                     const std::vector<double>& p0, MapStudy study,
+                                     MapMeasurement& rep);
+
 /// RATTLE (`project`) or its unprojected variant on the typed constrained system, as a study's
 /// map (z = (q, p)); the multipliers' solves report residual and iterations in a SolveError.
 /// `sys` must outlive it.

@@ -2,6 +2,7 @@
 /// \brief Constraints typed after --constraint on a typed potential, stepped by RATTLE or by
 /// the constrained discrete Euler–Lagrange equations of a typed --ld, measured by the map study
 /// (constrained.hpp; chapter "Verify your own integrator", section "Constrained systems").
+#include <limits>
 #include <memory>
 #include <mutex>
 #include <string>
@@ -11,6 +12,7 @@
 #include <fmt/format.h>
 
 #include "vibook/modified/engine.hpp"
+#include "vibook/verify/composition_study.hpp"
 #include "vibook/verify/constrained.hpp"
 #include "vibook/verify/constrained_impl.hpp"
 #include "vibook/verify/tape.hpp"
@@ -208,6 +210,47 @@ void set_constrained_typed_system(MapStudy& study, const TypedDiscreteLagrangian
     constexpr int N = decltype(dim)::value;
     if constexpr (N >= 2 && N <= kMaxConstrainedDim)
       set_constrained_system(TypedConstrained<N>(sys, potential), where, q0, p0, study);
+  });
+}
+
+// --- compositions of RATTLE (book chapter "Verify your own integrator", section "Compositions of
+// RATTLE"; Reich 1996) ----------------------------------------------------------------------------
+void measure_constrained_composition(const CompositionSpec& spec,
+                                     const TypedDiscreteLagrangian& sys,
+                                     const std::string& potential, const std::vector<double>& q0,
+                                     const std::vector<double>& p0, MapStudy study,
+                                     MapMeasurement& rep) {
+  check_constrained(sys);
+  with_dim(sys.dim(), [&](auto dim) {
+    constexpr int N = decltype(dim)::value;
+    if constexpr (N >= 2 && N <= kMaxConstrainedDim) {
+      const TypedConstrained<N> prob(sys, potential);
+      set_constrained_system(prob, "of the --constraint equations", q0, p0, study);
+      static const CompositionBase base{
+          "rattle", true,
+          "RATTLE (Andersen 1983; HLW VII.1.4) on the typed constrained system: symmetric, so "
+          "its own adjoint, order 2"};
+      CompositionSpec composed = spec;
+      composed.base = &base;
+      // Each stage a whole RATTLE step of γ_i h: every stage ends on T*Q. The stages' values
+      // are no discrete Lagrangian the study measures (variational = false).
+      const CompositionStage stage = [prob](Eigen::VectorXd& z, double h) {
+        rattle_step(prob, true, z, h);
+        return std::numeric_limits<double>::quiet_NaN();
+      };
+      const std::string line = fmt::format(
+          "H = |p|^2/2 + V(q), V = {} (--potential), constraints {}; {} positions; q0 = {}, "
+          "p0 = {}",
+          potential.empty() ? "0" : potential, constraints_text(sys), N, vec_text(q0),
+          vec_text(p0));
+      std::vector<std::string> gs;
+      for (int i = 0; i < sys.constraint_count(); ++i) gs.push_back(sys.constraint_text(i));
+      rep.js["system"] = {{"potential", potential}, {"constraints", gs}, {"q0", q0}, {"p0", p0}};
+      measure_composition(composed, stage, stage, line, std::move(study), rep, false);
+      rep.line("variational order",
+               "not measured: the constrained discrete Lagrangian's exact side is not "
+               "implemented");
+    }
   });
 }
 
