@@ -222,6 +222,9 @@ vibook_verify_case(verify-time-python.txt 0 --stepper-cmd
 # pendulum must pass; without its velocity projection it must fail (the hidden constraint).
 vibook_verify_case(verify-rattle.txt 0 --method rattle --problem spherical-pendulum)
 vibook_verify_case(verify-shake.txt 5 --method shake --problem spherical-pendulum)
+# The triple jump composed of RATTLE steps (the chapter's "Compositions of RATTLE").
+vibook_verify_case(verify-rattle-yoshida4.txt 0 --composition rattle --coefficients yoshida4
+                   --problem spherical-pendulum)
 # Constraints typed after --constraint: RATTLE on the double pendulum typed as V and two
 # constraints must pass; the constrained discrete Euler-Lagrange equations of the trapezoidal
 # L_d must pass at order 2 (RATTLE written variationally), those of V at q1 alone must fail there.

@@ -20,6 +20,14 @@ book_case rattle-spherical verify-rattle.txt 0 "" 'order +(1\.9|2\.0)[0-9]* over
   '^hidden constraint .*: yes'
 case_ rattle-double 0 "" 'order +(1\.9|2\.0)[0-9]* over .*: yes' '^hidden constraint .*: yes' \
   -- --method rattle --problem double-pendulum
+# The triple jump composed of RATTLE steps (verify_constraint.sh has the other compositions):
+# order 4 by its conditions and measured, both constraints kept, symplectic on the manifold.
+RATTLE_OK=(order conditions, order, consistency, symplectic, symmetric, time-reversible,
+  position constraint, hidden constraint, energy)
+book_case rattle-yoshida4 verify-rattle-yoshida4.txt 0 "" 'order 4 by the conditions' \
+  'order +(3\.9|4\.0)[0-9]* over .*: yes' '^position constraint .*: yes' \
+  '^hidden constraint .*: yes' '^symplectic +on the constraint manifold.*: yes' \
+  '^variational order +not measured' "^verdict +PASS \(${RATTLE_OK[*]}\)"
 book_case typed-rattle-double verify-constraint-double.txt 0 "" \
   'order +(1\.9|2\.0)[0-9]* over .*: yes' 'constraints g1 = .*, g2 = '
 same_errors typed-double-same-errors "$BOOK_GEN/verify-constraint-double.json" "$tmp/v.json" 10
