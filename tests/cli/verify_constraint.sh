@@ -96,7 +96,8 @@ case_ rattle-yoshida4-typed 0 "" 'order +(3\.9|4\.0)[0-9]* over .*: yes' \
 case_ rattle-flipped 5 "order conditions,order,consistency,energy" \
   'order 0 by the conditions.*NO' '^position constraint .*: yes' '^hidden constraint .*: yes' \
   -- --composition rattle --expected-order 4 --problem spherical-pendulum \
-  --coefficients 1.35120719195965763405,1.70241438391931526810,1.35120719195965763405
+  --coefficients 1.35120719195965763405,1.70241438391931526810,1.35120719195965763405 \
+  --h-list 0.1,0.05,0.025,0.0125
 arg composition-constraint-sv --constraint --composition sv --coefficients yoshida4 \
   --potential z --constraint "$SPH_G" --q0 "$SPH_Q" --p0 0,0.8,0
 arg composition-rattle-unconstrained --constraint --composition rattle --coefficients yoshida4
