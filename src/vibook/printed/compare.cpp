@@ -45,13 +45,26 @@ Target Target::exactly(const std::vector<ex>& components) {
 
 Target Target::exactly(const ex& scalar) { return exactly(std::vector<ex>{scalar}); }
 
-Target& Target::shown_as(std::vector<ex> display, GiNaC::exmap abbreviations, std::string latex) {
-  if (display.size() != exact.size())
+Target& Target::shown_as(std::vector<ex> display, GiNaC::exmap abbreviations, std::string latex,
+                         const ex& h) {
+  const bool is_series = !series.empty();
+  if (display.size() != (is_series ? series.size() : exact.size()))
     throw std::logic_error("Target::shown_as: one shown form per component");
-  for (std::size_t i = 0; i < display.size(); ++i)
-    if (!modified::vanishes(display[i].subs(abbreviations) - exact[i]))
+  for (std::size_t i = 0; i < display.size(); ++i) {
+    bool same = true;
+    if (!is_series) {
+      same = modified::vanishes(display[i].subs(abbreviations) - exact[i]);
+    } else {
+      const ex x = GiNaC::expand(display[i].subs(abbreviations));
+      for (std::size_t k = 0; k < series[i].size() && same; ++k)
+        if (through < 0 || static_cast<int>(k) <= through)
+          same = modified::vanishes(x.coeff(h, static_cast<int>(k)) - series[i][k]);
+    }
+    if (!same)
       throw std::logic_error("Target::shown_as: component " + std::to_string(i + 1) +
                              " shown is not the target once its abbreviations are substituted");
+  }
+  shown_h = h;
   shown = std::move(display);
   where = std::move(abbreviations);
   where_latex = std::move(latex);
@@ -646,7 +659,7 @@ claims::FormulaComparison compare(const Spec& spec, const std::vector<Case>& cas
       }
       // an abstract potential in 2-3 dimensions: in the papers' vector notation
       // (vector_notation.hpp), so that the two sides can be compared by eye
-      if (const auto vn = modified::VectorNotation::of(J, all)) {
+      if (const auto vn = t.shown.empty() ? modified::VectorNotation::of(J, all) : std::nullopt) {
         if (series.size() == 1) {
           out.ours = vn->scalar_series(series[0]);
         } else {
@@ -658,8 +671,20 @@ claims::FormulaComparison compare(const Spec& spec, const std::vector<Case>& cas
           out.ours = vn->vector_series(field);
         }
       }
-      for (const auto& c : series)
-        comps.push_back(by_powers_of_h(c) + fmt::format(" + \\mathcal{{O}}(h^{{{}}})", c.size()));
+      if (!t.shown.empty()) {
+        // shown in the abstract field's derivatives (Target::shown_as, checked coefficient by
+        // coefficient)
+        for (std::size_t i = 0; i < t.shown.size(); ++i) {
+          const ex x = GiNaC::expand(t.shown[i]);
+          std::vector<ex> c;
+          for (std::size_t k = 0; k < series[i].size(); ++k)
+            c.push_back(x.coeff(t.shown_h, static_cast<int>(k)));
+          comps.push_back(by_powers_of_h(c) + fmt::format(" + \\mathcal{{O}}(h^{{{}}})", c.size()));
+        }
+      } else {
+        for (const auto& c : series)
+          comps.push_back(by_powers_of_h(c) + fmt::format(" + \\mathcal{{O}}(h^{{{}}})", c.size()));
+      }
     }
     if (out.ours.empty())
       out.ours = comps.size() == 1

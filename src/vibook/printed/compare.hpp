@@ -61,15 +61,18 @@ struct Target {
   static Target exactly(const std::vector<ex>& components);
   static Target exactly(const ex& scalar);
 
-  /// How our side of an exact target is shown: `shown[i]` in abbreviations (a midpoint, a
-  /// difference) that `where` maps back to the target's symbols, printed followed by
-  /// `where_latex` ("\\bar q = …"). The comparison uses `exact` alone; the display is checked
-  /// equal to it (`exact[i]` once `where` is substituted), and std::logic_error says which
-  /// component is not.
+  /// How our side is shown: `shown[i]` in abbreviations (a midpoint, a difference; the
+  /// derivatives of an abstract field) that `where` maps back to the target's symbols, printed
+  /// followed by `where_latex`. The comparison uses the target alone; the display is checked
+  /// equal to it, and std::logic_error says which component is not: `exact[i]` once `where` is
+  /// substituted, or for a series each coefficient of h^k compared (k up to `through`), the
+  /// shown form then a polynomial in `h`, printed by powers of h.
   std::vector<ex> shown;
   GiNaC::exmap where;
   std::string where_latex;
-  Target& shown_as(std::vector<ex> display, GiNaC::exmap abbreviations, std::string latex);
+  ex shown_h;  ///< the h of a shown series
+  Target& shown_as(std::vector<ex> display, GiNaC::exmap abbreviations, std::string latex,
+                   const ex& h = ex(0));
 };
 
 /// One setting in which the display is read and what it must equal there.

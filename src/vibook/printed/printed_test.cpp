@@ -210,4 +210,12 @@ TEST_CASE("compare: a target shown in abbreviations must be the target once they
   CHECK_THROWS_AS(slip.shown_as({2 * m * m + d}, back, ""), std::logic_error);
   CHECK_THROWS_AS(slip.shown_as({4 * m * m - d}, back, ""), std::logic_error);
   CHECK(slip.shown.empty());
+  // A series, compared through h^1: the shown form's coefficients of h^0 and h^1 are checked,
+  // and a slip in one of them is refused (one beyond `through` is not compared).
+  const GiNaC::symbol h("h"), g("g");
+  const GiNaC::exmap at = {{g, a + b}};
+  Target series = Target::scalar_series({a + b, 2 * (a + b)}, 1);
+  CHECK_NOTHROW(series.shown_as({g + 2 * h * g + 7 * h * h}, at, "", h));
+  Target wrong = Target::scalar_series({a + b, 2 * (a + b)}, 1);
+  CHECK_THROWS_AS(wrong.shown_as({g + 3 * h * g}, at, "", h), std::logic_error);
 }
