@@ -93,7 +93,7 @@ PY
 
 # A stepper that fails mid-run: status 3, one stderr line naming the part, the step and state.
 "$V" verify --stepper-cmd "python3 $PY refuse pendulum" --problem pendulum --expected-order 2 \
-  --h 0.005 --h-list 0.02,0.01,0.005 >"$tmp/out" 2>"$tmp/err"
+  --h 0.005 --h-list 0.02,0.01,0.005 --steps 2048 >"$tmp/out" 2>"$tmp/err"
 got=$?
 if [ "$got" = 3 ] && [ "$(wc -l <"$tmp/err")" = 1 ] &&
    grep -q "order: .*steps of h = 0.02 from q = (1), p = (0.5): the stepper answered 'error': step" "$tmp/err" &&
