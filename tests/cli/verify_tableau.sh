@@ -29,9 +29,10 @@ a, b = (json.load(open(f))["variational_order"]["engine"] for f in sys.argv[1:3]
 assert a["derived"] and a["order"] == 4 and a["defect"] == b["defect"], (a, b)
 PY
   bad "lobatto3: the tableau's derived L_d - L_d^E is not lobatto:3's"
-# The Gauss 2 file's 45-digit decimals, held to 1e-12: gauss:2's exact h^5 term comes back.
+# The Gauss 2 file's 45-digit decimals, each term below 1e-39 counted as zero (the cut leaves
+# terms near 1e-45): gauss:2's exact h^5 term comes back.
 case_ gauss2-derived 0 "" \
-  '^  derived +4 by the engine \(the entries as the decimals typed, a term with every number below 1e-12 counted as zero\)' \
+  '^  derived +4 by the engine \(the entries as the decimals typed, to 44 digits and more, a term with every number below 1e-39 counted as zero\)' \
   -- --tableau "$T/gauss2.json" --problem pendulum
 cp "$tmp/v.json" "$tmp/gauss2-tableau.json"
 "$V" verify --method gauss:2 --problem pendulum --json-out "$tmp/gauss2-method.json" >/dev/null 2>&1

@@ -846,14 +846,27 @@ void derive_tableau_variational_order(const TableauSpec& spec, int dim,
   std::vector<modified::ex> b;
   bool decimal = false;
   std::size_t longest = 0;  // digits of the longest entry
+  std::size_t cut_at = 0;   // significant digits of the shortest long decimal (0: none)
   auto read = [&](const std::string& t) -> std::optional<modified::ex> {
     const std::optional<GiNaC::numeric> x = exact_number(t);
     if (!x) return std::nullopt;
+    bool point = false;
     for (std::size_t i = 1; i < t.size(); ++i)
-      if (std::isdigit(static_cast<unsigned char>(t[i - 1])) && t[i] == '.') decimal = true;
-    longest = std::max<std::size_t>(longest, std::count_if(t.begin(), t.end(), [](char ch) {
-                                      return std::isdigit(static_cast<unsigned char>(ch));
-                                    }));
+      if (std::isdigit(static_cast<unsigned char>(t[i - 1])) && t[i] == '.') point = true;
+    decimal = decimal || point;
+    const std::size_t digits = std::count_if(
+        t.begin(), t.end(), [](char ch) { return std::isdigit(static_cast<unsigned char>(ch)); });
+    longest = std::max(longest, digits);
+    if (point && digits > 20) {
+      // an entry written to many digits: the value it stands for, cut after its last one
+      const std::size_t first = t.find_first_of("123456789");
+      const std::size_t significant =
+          first == std::string::npos
+              ? 0
+              : std::count_if(t.begin() + static_cast<std::ptrdiff_t>(first), t.end(),
+                              [](char ch) { return std::isdigit(static_cast<unsigned char>(ch)); });
+      cut_at = cut_at == 0 ? significant : std::min(cut_at, significant);
+    }
     return modified::ex(*x);
   };
   std::string unread;
@@ -884,13 +897,27 @@ void derive_tableau_variational_order(const TableauSpec& spec, int dim,
         "not derived: a weight b_i = 0 leaves its stage velocity undetermined in h sum_i b_i "
         "L(Q_i, V_i)";
   }
-  if (decimal) d.entry_digits = longest;
   if (decimal) {
-    // As typed composition coefficients: the tolerance the conditions hold the entries to.
-    d.zero_below = kTypedZeroBelow;
-    d.precision =
-        "the entries as the decimals typed, a term with every number below 1e-12 counted as "
-        "zero";
+    d.entry_digits = longest;
+    if (cut_at > 20) {
+      // Entries written to D significant digits (the Gauss files: 45) stand for numbers they
+      // cut: the cut leaves terms near 10^-D, and a term with every number below 10^-(D-5)
+      // counts as zero. A fixed 1e-12 would also hide true terms: the first of Gauss 5 (order
+      // 10) has numbers near 4e-13 (its error constant (5!)^4/(11 (10!)^3)), of Gauss 6 near
+      // 2e-16.
+      d.zero_below = GiNaC::numeric(1) / GiNaC::numeric(10).power(static_cast<long>(cut_at) - 5);
+      d.precision = fmt::format(
+          "the entries as the decimals typed, to {} digits and more, a term with every number "
+          "below 1e-{} counted as zero",
+          cut_at, cut_at - 5);
+    } else {
+      // Short decimals, as typed composition coefficients: the tolerance the conditions hold
+      // the entries to.
+      d.zero_below = kTypedZeroBelow;
+      d.precision =
+          "the entries as the decimals typed, a term with every number below 1e-12 counted as "
+          "zero";
+    }
   }
   d.make_dl = [a, b, L, name = spec.name](std::shared_ptr<modified::JetSpace> J) {
     return modified::prk_dl(a, b, L, std::move(J), name);
