@@ -116,6 +116,21 @@ std::string constraints_text(const TypedDiscreteLagrangian& sys) {
   return s;
 }
 
+// The report's "system" line and the JSON's "system" of a typed constrained system.
+std::string system_line(const TypedDiscreteLagrangian& sys, const std::string& potential,
+                        const std::vector<double>& q0, const std::vector<double>& p0) {
+  return fmt::format(
+      "H = |p|^2/2 + V(q), V = {} (--potential), constraints {}; {} positions; q0 = {}, p0 = {}",
+      potential.empty() ? "0" : potential, constraints_text(sys), sys.dim(), vec_text(q0),
+      vec_text(p0));
+}
+nlohmann::json system_json(const TypedDiscreteLagrangian& sys, const std::string& potential,
+                           const std::vector<double>& q0, const std::vector<double>& p0) {
+  std::vector<std::string> gs;
+  for (int i = 0; i < sys.constraint_count(); ++i) gs.push_back(sys.constraint_text(i));
+  return {{"potential", potential}, {"constraints", gs}, {"q0", q0}, {"p0", p0}};
+}
+
 template <int N>
 void measure_n(const TypedDiscreteLagrangian& sys, const ConstrainedTexts& texts,
                ConstrainedStep kind, const std::vector<double>& q0, const std::vector<double>& p0,
@@ -155,14 +170,9 @@ void measure_n(const TypedDiscreteLagrangian& sys, const ConstrainedTexts& texts
                                  "wrong); documented as RATTLE, order 2");
   }
   rep.line("expected order", fmt::format("{:g}", s.expected));
-  rep.line("system", fmt::format("H = |p|^2/2 + V(q), V = {} (--potential), constraints {}; "
-                                 "{} positions; q0 = {}, p0 = {}",
-                                 texts.potential.empty() ? "0" : texts.potential,
-                                 constraints_text(sys), N, vec_text(q0), vec_text(p0)));
-  std::vector<std::string> gs;
-  for (int i = 0; i < sys.constraint_count(); ++i) gs.push_back(sys.constraint_text(i));
+  rep.line("system", system_line(sys, texts.potential, q0, p0));
   rep.js["method"] = {{"name", name}, {"expected", s.expected}};
-  rep.js["system"] = {{"potential", texts.potential}, {"constraints", gs}, {"q0", q0}, {"p0", p0}};
+  rep.js["system"] = system_json(sys, texts.potential, q0, p0);
   if (kind == ConstrainedStep::del) rep.js["system"]["ld"] = texts.ld;
   measure_map(s, rep);
   rep.line("variational order",
@@ -238,15 +248,9 @@ void measure_constrained_composition(const CompositionSpec& spec,
         rattle_step(prob, true, z, h);
         return std::numeric_limits<double>::quiet_NaN();
       };
-      const std::string line = fmt::format(
-          "H = |p|^2/2 + V(q), V = {} (--potential), constraints {}; {} positions; q0 = {}, "
-          "p0 = {}",
-          potential.empty() ? "0" : potential, constraints_text(sys), N, vec_text(q0),
-          vec_text(p0));
-      std::vector<std::string> gs;
-      for (int i = 0; i < sys.constraint_count(); ++i) gs.push_back(sys.constraint_text(i));
-      rep.js["system"] = {{"potential", potential}, {"constraints", gs}, {"q0", q0}, {"p0", p0}};
-      measure_composition(composed, stage, stage, line, std::move(study), rep, false);
+      rep.js["system"] = system_json(sys, potential, q0, p0);
+      measure_composition(composed, stage, stage, system_line(sys, potential, q0, p0),
+                          std::move(study), rep, false);
       rep.line("variational order",
                "not measured: the constrained discrete Lagrangian's exact side is not "
                "implemented");
