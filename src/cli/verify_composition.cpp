@@ -146,7 +146,9 @@ int run_composition(const VerifyOptions& o) {
                             "|p|^2/2 + V(q) with --potential and the constraints");
     verify::CompositionSpec spec;
     check_coefficients(o, spec);
-    return run_constrained_composition(c, std::move(spec));
+    return run_constrained_composition(
+        c, std::move(spec),
+        o.problem.empty() ? "--potential" : "the test problem " + o.problem + ", typed");
   }
   if (!o.splitting.empty() && !o.potential.empty()) {
     // A splitting on H = |p|^2/2 + V typed: its equivalent composition of symplectic Euler,

@@ -73,12 +73,13 @@ int run_constrained_typed(const VerifyOptions& o, verify::ConstrainedStep step) 
   return rep.finish(o);
 }
 
-int run_constrained_composition(const VerifyOptions& o, verify::CompositionSpec spec) {
+int run_constrained_composition(const VerifyOptions& o, verify::CompositionSpec spec,
+                                const std::string& given) {
   std::vector<double> q0, p0;
   MapStudy study;
   const auto sys = constrained_system(o, "", q0, p0, study);
   MapReport rep;
-  verify::measure_constrained_composition(spec, *sys, o.potential, q0, p0, study, rep);
+  verify::measure_constrained_composition(spec, *sys, o.potential, q0, p0, study, rep, given);
   return rep.finish(o);
 }
 

@@ -50,6 +50,7 @@ int run_stepper(const VerifyOptions& o);
 int run_constrained_typed(const VerifyOptions& o, verify::ConstrainedStep step);
 /// `--composition rattle --coefficients …` with --potential and --constraint
 /// (verify_constrained.cpp).
-int run_constrained_composition(const VerifyOptions& o, verify::CompositionSpec spec);
+int run_constrained_composition(const VerifyOptions& o, verify::CompositionSpec spec,
+                                const std::string& given);
 
 }  // namespace vibook::cli

@@ -90,12 +90,13 @@ struct CompositionSpec;  // verify/composition_study.hpp
 /// step of size γ_i h on the typed constrained system, measured by measure_composition with the
 /// phases of measure_constrained_typed (its constraint residuals, symplecticity on the
 /// manifold, the index-1 reference); the variational order is not measured. The same
-/// ArgumentErrors as measure_constrained_typed. `sys` must outlive the call.
+/// ArgumentErrors as measure_constrained_typed. `given` names where the system came from in
+/// the report ("--potential", or a constrained test problem). `sys` must outlive the call.
 void measure_constrained_composition(const CompositionSpec& spec,
                                      const TypedDiscreteLagrangian& sys,
                                      const std::string& potential, const std::vector<double>& q0,
                                      const std::vector<double>& p0, MapStudy study,
-                                     MapMeasurement& rep);
+                                     MapMeasurement& rep, const std::string& given = "--potential");
 
 /// RATTLE (`project`) or its unprojected variant on the typed constrained system, as a study's
 /// map (z = (q, p)); the multipliers' solves report residual and iterations in a SolveError.

@@ -116,12 +116,14 @@ std::string constraints_text(const TypedDiscreteLagrangian& sys) {
   return s;
 }
 
-// The report's "system" line and the JSON's "system" of a typed constrained system.
+// The report's "system" line and the JSON's "system" of a typed constrained system; `given`
+// says where V and the constraints came from.
 std::string system_line(const TypedDiscreteLagrangian& sys, const std::string& potential,
-                        const std::vector<double>& q0, const std::vector<double>& p0) {
+                        const std::vector<double>& q0, const std::vector<double>& p0,
+                        const std::string& given = "--potential") {
   return fmt::format(
-      "H = |p|^2/2 + V(q), V = {} (--potential), constraints {}; {} positions; q0 = {}, p0 = {}",
-      potential.empty() ? "0" : potential, constraints_text(sys), sys.dim(), vec_text(q0),
+      "H = |p|^2/2 + V(q), V = {} ({}), constraints {}; {} positions; q0 = {}, p0 = {}",
+      potential.empty() ? "0" : potential, given, constraints_text(sys), sys.dim(), vec_text(q0),
       vec_text(p0));
 }
 nlohmann::json system_json(const TypedDiscreteLagrangian& sys, const std::string& potential,
@@ -229,7 +231,7 @@ void measure_constrained_composition(const CompositionSpec& spec,
                                      const TypedDiscreteLagrangian& sys,
                                      const std::string& potential, const std::vector<double>& q0,
                                      const std::vector<double>& p0, MapStudy study,
-                                     MapMeasurement& rep) {
+                                     MapMeasurement& rep, const std::string& given) {
   check_constrained(sys);
   with_dim(sys.dim(), [&](auto dim) {
     constexpr int N = decltype(dim)::value;
@@ -249,7 +251,7 @@ void measure_constrained_composition(const CompositionSpec& spec,
         return std::numeric_limits<double>::quiet_NaN();
       };
       rep.js["system"] = system_json(sys, potential, q0, p0);
-      measure_composition(composed, stage, stage, system_line(sys, potential, q0, p0),
+      measure_composition(composed, stage, stage, system_line(sys, potential, q0, p0, given),
                           std::move(study), rep, false);
       rep.line("variational order",
                "not measured: the constrained discrete Lagrangian's exact side is not "
