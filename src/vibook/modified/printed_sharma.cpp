@@ -375,12 +375,13 @@ std::vector<claims::FormulaComparison> sharma_discrete_prints(
     };
     auto back = [&](std::initializer_list<int> steps) {
       GiNaC::exmap m;
-      for (int o : steps)
+      for (int o : steps) {
         for (int i = 0; i < 2; ++i) {
           m[qb[o + 1][i]] = (q[o + 1][i] + q[o + 2][i]) / 2;
           m[dqs[o + 1][i]] = q[o + 2][i] - q[o + 1][i];
-          m[dts[o + 1]] = t[o + 2] - t[o + 1];
         }
+        m[dts[o + 1]] = t[o + 2] - t[o + 1];
+      }
       return m;
     };
     auto where = [&](std::initializer_list<int> steps) {

@@ -850,9 +850,7 @@ void derive_tableau_variational_order(const TableauSpec& spec, int dim,
   auto read = [&](const std::string& t) -> std::optional<modified::ex> {
     const std::optional<GiNaC::numeric> x = exact_number(t);
     if (!x) return std::nullopt;
-    bool point = false;
-    for (std::size_t i = 1; i < t.size(); ++i)
-      if (std::isdigit(static_cast<unsigned char>(t[i - 1])) && t[i] == '.') point = true;
+    const bool point = types_a_decimal(t);  // (exact_number reads no exponent)
     decimal = decimal || point;
     const std::size_t digits = std::count_if(
         t.begin(), t.end(), [](char ch) { return std::isdigit(static_cast<unsigned char>(ch)); });
