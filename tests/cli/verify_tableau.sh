@@ -60,6 +60,17 @@ EOF
 case_ order2-as-4 5 "order,variational order,energy" 'symplectic \(b = bhat .*: yes' \
   '^  derived +2 by the engine: .*expected 4: NO \(part of the verdict\); measured 2\.0[0-9]: agrees' \
   -- --tableau "$tmp/order2.json" --problem henon-heiles
+# Decimals: short ones are the numbers themselves (Stormer-Verlet as 0.5: the exact test);
+# the Gauss 2 file cut to 17 digits leaves terms near 1e-17, which no threshold separates from
+# the true terms of high-order methods: not derived, and the line says why.
+printf '{"name": "Stormer-Verlet in decimals", "order": 2, "a": [["0", "0"], ["0.5", "0.5"]], "b": ["0.5", "0.5"], "ahat": [["0.5", "0"], ["0.5", "0"]], "bhat": ["0.5", "0.5"]}' \
+  >"$tmp/sv-decimal.json"
+case_ sv-decimal 0 "" '^  derived +2 by the engine: L_d - L_d\^E = h\^3' \
+  -- --tableau "$tmp/sv-decimal.json" --problem pendulum
+printf '{"name": "Gauss 2 to 17 digits", "order": 4, "a": [["1/4", "-0.038675134594812882"], ["0.53867513459481288", "1/4"]], "b": ["1/2", "1/2"]}' \
+  >"$tmp/gauss2-17.json"
+case_ gauss2-17-digits 0 "" '^  derived +not derived: entries typed to 17 significant digits' \
+  -- --tableau "$tmp/gauss2-17.json" --problem pendulum
 case_ never 0 "" '^  derived +not derived \(--symbolic never\)' \
   -- --tableau "$tmp/se.json" --problem pendulum --symbolic never
 case_ gauss2 0 "" 'order +(3\.9|4\.0)[0-9]* over .*: yes' \

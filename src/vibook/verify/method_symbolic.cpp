@@ -825,6 +825,11 @@ NystromTheorem10 nystrom_theorem10(const std::vector<mpfr_real>& c,
 // --- a symplectic tableau (book chapter "Verify your own integrator", section "A method from
 // its tableau": the variational order derived) --------------------------------------------------
 
+// A tableau's decimal entries: up to kExactDecimalDigits significant digits they are the
+// numbers meant (0.5, 0.125); beyond, the numbers they cut, which the derivation needs written
+// to at least kCutDigitsNeeded digits (derive_tableau_variational_order says why).
+constexpr std::size_t kExactDecimalDigits = 6, kCutDigitsNeeded = 25;
+
 void derive_tableau_variational_order(const TableauSpec& spec, int dim,
                                       modified::SymbolicLagrangian L, SymbolicUse use,
                                       MapStudy& study) {
@@ -846,7 +851,7 @@ void derive_tableau_variational_order(const TableauSpec& spec, int dim,
   std::vector<modified::ex> b;
   bool decimal = false;
   std::size_t longest = 0;  // digits of the longest entry
-  std::size_t cut_at = 0;   // significant digits of the shortest long decimal (0: none)
+  std::size_t cut_at = 0;   // significant digits of the shortest cut decimal (0: none)
   auto read = [&](const std::string& t) -> std::optional<modified::ex> {
     const std::optional<GiNaC::numeric> x = exact_number(t);
     if (!x) return std::nullopt;
@@ -855,16 +860,16 @@ void derive_tableau_variational_order(const TableauSpec& spec, int dim,
     const std::size_t digits = std::count_if(
         t.begin(), t.end(), [](char ch) { return std::isdigit(static_cast<unsigned char>(ch)); });
     longest = std::max(longest, digits);
-    if (point && digits > 20) {
-      // an entry written to many digits: the value it stands for, cut after its last one
-      const std::size_t first = t.find_first_of("123456789");
-      const std::size_t significant =
-          first == std::string::npos
-              ? 0
-              : std::count_if(t.begin() + static_cast<std::ptrdiff_t>(first), t.end(),
-                              [](char ch) { return std::isdigit(static_cast<unsigned char>(ch)); });
+    const std::size_t first = t.find_first_of("123456789");
+    const std::size_t significant =
+        first == std::string::npos
+            ? 0
+            : std::count_if(t.begin() + static_cast<std::ptrdiff_t>(first), t.end(),
+                            [](char ch) { return std::isdigit(static_cast<unsigned char>(ch)); });
+    // a decimal of more than 6 significant digits stands for a number it cuts after its last
+    // digit (0.5 or 0.125 is the number itself)
+    if (point && significant > kExactDecimalDigits)
       cut_at = cut_at == 0 ? significant : std::min(cut_at, significant);
-    }
     return modified::ex(*x);
   };
   std::string unread;
@@ -895,26 +900,25 @@ void derive_tableau_variational_order(const TableauSpec& spec, int dim,
         "not derived: a weight b_i = 0 leaves its stage velocity undetermined in h sum_i b_i "
         "L(Q_i, V_i)";
   }
-  if (decimal) {
-    d.entry_digits = longest;
-    if (cut_at > 20) {
-      // Entries written to D significant digits (the Gauss files: 45) stand for numbers they
-      // cut: the cut leaves terms near 10^-D, and a term with every number below 10^-(D-5)
-      // counts as zero. A fixed 1e-12 would also hide true terms: the first of Gauss 5 (order
-      // 10) has numbers near 4e-13 (its error constant (5!)^4/(11 (10!)^3)), of Gauss 6 near
-      // 2e-16.
+  if (decimal) d.entry_digits = longest;
+  if (cut_at > 0 && d.skip.empty()) {
+    // Entries cut to D significant digits leave terms of L_d − L_d^E near 10^-D (the 45-digit
+    // Gauss files: at most 2e-46); the true first terms of tableaus up to six stages reach down
+    // to Gauss 6's, near 2e-16 (Gauss 5: 4e-13, its error constant (5!)^4/(11 (10!)^3)). A
+    // term with every number below 10^-(D-5) counts as zero, which separates the two only when
+    // that threshold lies well below 2e-16: from D = 25 (10^-20) on. Fewer digits: not derived.
+    if (cut_at < kCutDigitsNeeded) {
+      d.skip = fmt::format(
+          "not derived: entries typed to {} significant digits leave terms near 1e-{}, which the "
+          "engine cannot tell from the true first terms of high-order methods (Gauss 6's: near "
+          "2e-16); type them to {} digits or more, or as ratios",
+          cut_at, cut_at, kCutDigitsNeeded);
+    } else {
       d.zero_below = GiNaC::numeric(1) / GiNaC::numeric(10).power(static_cast<long>(cut_at) - 5);
       d.precision = fmt::format(
           "the entries as the decimals typed, to {} digits and more, a term with every number "
           "below 1e-{} counted as zero",
           cut_at, cut_at - 5);
-    } else {
-      // Short decimals, as typed composition coefficients: the tolerance the conditions hold
-      // the entries to.
-      d.zero_below = kTypedZeroBelow;
-      d.precision =
-          "the entries as the decimals typed, a term with every number below 1e-12 counted as "
-          "zero";
     }
   }
   d.make_dl = [a, b, L, name = spec.name](std::shared_ptr<modified::JetSpace> J) {

@@ -117,9 +117,9 @@ void derive_composition_variational_order(const CompositionSpec& spec, int dim,
 struct TableauSpec;  // verify/tableau_study.hpp
 
 /// The same for a symplectic tableau (`vibook verify --tableau`): its discrete Lagrangian from
-/// a and b (modified::prk_dl), the entries read exactly as written; with long decimals among
-/// them (D > 20 significant digits in the shortest) a term whose every number is below
-/// 10^-(D-5) counts as zero, with short ones below 1e-12 (the tolerance of the conditions). Nothing is installed for a tableau that fails the symplecticity conditions or
+/// a and b (modified::prk_dl), the entries read exactly as written; with decimals of more than
+/// six significant digits among them (D in the shortest) a term whose every number is below
+/// 10^-(D-5) counts as zero, and below D = 25 it is not derived. Nothing is installed for a tableau that fails the symplecticity conditions or
 /// an RKN tableau (the tableau route reports why). An empty `L` (a system typed as a
 /// Hamiltonian) is reported as not derived.
 void derive_tableau_variational_order(const TableauSpec& spec, int dim,
