@@ -287,6 +287,7 @@ namespace {
 struct Composed {
   std::vector<double> c;
   std::vector<bool> adj;
+  std::vector<dd_real> c_dd;  ///< the coefficients rounded from their 120 digits (to_dd)
   bool symmetric = false;
   double expected = 0;
   double conditions_order = 0;  ///< the order the conditions give (below 1: not consistent)
@@ -405,7 +406,7 @@ Composed splitting_conditions(const CompositionSpec& p, MapMeasurement& rep) {
   if (nystrom)
     js["order_conditions"]["trees"] =
         "Nystrom trees (T = |p|^2/2): the splitting as a Runge-Kutta-Nystrom method";
-  return {c, adj, palindrome, expected, double(oc.order)};
+  return {c, adj, {}, palindrome, expected, double(oc.order)};
 }
 
 // The stages and their order conditions at 120 digits, printed and written to rep; the same
@@ -420,6 +421,7 @@ Composed conditions(const CompositionSpec& p, MapMeasurement& rep) {
   // --- the stages and their order conditions, at 120 digits -------------------------------
   std::vector<double> c;
   std::vector<bool> adj;
+  std::vector<dd_real> c_dd;
   comp::OrderConditions oc, visible;
   comp::Refinement rf;
   bool symmetric = false;
@@ -430,6 +432,7 @@ Composed conditions(const CompositionSpec& p, MapMeasurement& rep) {
                 : p.typed;
     for (const auto& s : st) {
       c.push_back(static_cast<double>(s.c));
+      c_dd.push_back(to_dd(s.c));
       adj.push_back(s.adjoint);
     }
     const int W = std::min(
@@ -507,7 +510,54 @@ Composed conditions(const CompositionSpec& p, MapMeasurement& rep) {
                                    {"published_residual_by_weight", rf.published_residual},
                                    {"final_residual", rf.final_residual}};
   js["order_conditions"]["symmetric_base"] = p.base->symmetric;
-  return {c, adj, symmetric, expected, double(oc.order)};
+  return {c, adj, c_dd, symmetric, expected, double(oc.order)};
+}
+
+// A composition of an explicit base (sv, se, se-adjoint; kernels.hpp) in double-double, with
+// its discrete Lagrangian: the sum of the stages' L_d, as composed_generating sums them in
+// double. A stage of size k = c h from q0 to q1 moves the positions by one drift, whose velocity
+// v is (q1 − q0)/k, so that with L = |v|²/2 − U(q)
+//   sv (kick k/2, drift k, kick k/2):  L_d = k |v|²/2 − k (U(q0) + U(q1))/2,
+//   se (drift k, then kick k):         L_d = k |v|²/2 − k U(q1),
+//   se-adjoint (kick k, then drift k): L_d = k |v|²/2 − k U(q0)
+// (Vermeeren 2017, Example 1 (b)-(d)); the adjoint stage of se is se-adjoint and conversely.
+// Empty for an implicit base, which is measured in double (and the report says so).
+template <class P>
+GeneratingStepDD explicit_composition_dd(const std::string& base, const P& prob,
+                                         const std::vector<dd_real>& c,
+                                         const std::vector<bool>& adj) {
+  constexpr int N = P::N;
+  if (base != "sv" && base != "se" && base != "se-adjoint") return {};
+  enum class Kind { sv, drift_kick, kick_drift };
+  std::vector<Kind> kind;
+  for (std::size_t i = 0; i < c.size(); ++i)
+    kind.push_back(base == "sv"                     ? Kind::sv
+                   : (base == "se") != bool(adj[i]) ? Kind::drift_kick
+                                                    : Kind::kick_drift);
+  return [prob, c, kind](VecXdd& z, const dd_real& h) {
+    using V = Vec<dd_real, N>;
+    V q = z.template head<N>(), p = z.template tail<N>();
+    const dd_real half(0.5);
+    dd_real Ld(0.0);
+    for (std::size_t i = 0; i < c.size(); ++i) {
+      if (c[i] == 0) continue;
+      const dd_real k = c[i] * h;
+      const dd_real U0 = prob.template potential<dd_real>(q);
+      if (kind[i] == Kind::sv) p -= (k * half) * prob.template gradient<dd_real>(q);
+      if (kind[i] == Kind::kick_drift) p -= k * prob.template gradient<dd_real>(q);
+      const V v = p;
+      q += k * v;
+      const dd_real U1 = prob.template potential<dd_real>(q);
+      if (kind[i] == Kind::sv) p -= (k * half) * prob.template gradient<dd_real>(q);
+      if (kind[i] == Kind::drift_kick) p -= k * prob.template gradient<dd_real>(q);
+      const dd_real U = kind[i] == Kind::sv           ? half * (U0 + U1)
+                        : kind[i] == Kind::drift_kick ? U1
+                                                      : U0;
+      Ld += k * (half * v.squaredNorm() - U);
+    }
+    z << q, p;
+    return Ld;
+  };
 }
 
 template <class P>
@@ -567,8 +617,16 @@ void measure(const CompositionSpec& p, const std::vector<double>& q0, const std:
 
   study.step = step;
   set_problem(study, problem, q0, p0);
-  // A splitting is explicit: its flows in double-double too.
-  if (!p.flows.empty()) study.step_dd = splitting_step_dd(p.flows, study.field, N);
+  // A splitting is explicit: its flows in double-double too. So is a composition of
+  // Störmer–Verlet or of symplectic Euler and its adjoint (explicit_composition_dd): from
+  // order 6 on its order and variational order are measured where double's window would lie
+  // in their pre-asymptotic range.
+  if (!p.flows.empty()) {
+    study.step_dd = splitting_step_dd(p.flows, study.field, N);
+  } else if (auto g = explicit_composition_dd(p.base->name, prob, k.c_dd, adj)) {
+    study.step_dd = [g](VecXdd& z, const dd_real& h) { g(z, h); };
+    study.generating_dd = std::move(g);
+  }
   study.expected = k.expected;
   study.substeps = double(c.size());
   study.symmetric_claimed = study.symmetric_claimed || symmetric;

@@ -157,6 +157,9 @@ constexpr double kWindow = 1e-6;
 // agree to 1e-26) and far above the runs' round-off (about 1e-30), so that a method of order 8
 // to 12 is fitted where its local slopes have settled.
 constexpr double kWindowLowExtended = 1e-25;
+// In double-double, an error that stops decreasing more than this many times above the floor
+// is a defect of the method, not round-off (report_order says which).
+constexpr double kStallAboveFloor = 1e6;
 
 // The runs along which a constraint residual is followed: long enough for a residual that
 // drifts to show, short beside the energy run.
@@ -222,9 +225,14 @@ OrderStudy study_order(const MapStudy& s, const Eigen::VectorXd& zref,
       const dd_real hh(h), last = dd_real(s.t_end) - hh * dd_real(double(n - 1));
       for (long long k = 0; k + 1 < n; ++k) s.step_dd(z, hh);
       if (n >= 1) s.step_dd(z, last);
+      // A run that left every bound (a step too large: Hénon–Heiles escapes) is NaN, as in
+      // double, never an error of 0 (std::max drops a NaN).
       double e = 0;
-      for (Eigen::Index i = 0; i < compared; ++i)
-        e = std::max(e, std::abs(to_double(z(i) - zref_dd[static_cast<std::size_t>(i)])));
+      for (Eigen::Index i = 0; i < compared; ++i) {
+        const double d = std::abs(to_double(z(i) - zref_dd[static_cast<std::size_t>(i)]));
+        if (!std::isfinite(d)) return std::numeric_limits<double>::quiet_NaN();
+        e = std::max(e, d);
+      }
       return e;
     };
     std::vector<double> hs, err, windowed;
@@ -233,7 +241,7 @@ OrderStudy study_order(const MapStudy& s, const Eigen::VectorXd& zref,
     // an error below the smallest so far means the errors no longer follow the method's
     // order (a typed method stepped in position form loses digits like 1/h); the points past
     // the smallest error are then left out.
-    double roundoff_h = 0;
+    double roundoff_h = 0, stalled_error = 0;
     if (!s.hs.empty()) {
       hs = s.hs;
       for (double h : hs) err.push_back(error_at(h));
@@ -267,6 +275,7 @@ OrderStudy study_order(const MapStudy& s, const Eigen::VectorXd& zref,
           since_best = 0;
         } else if (std::isfinite(e) && best <= kWindow * scale && ++since_best == 4) {
           roundoff_h = hs[best_at];
+          stalled_error = best;
           for (std::size_t i = best_at + 1; i < windowed.size(); ++i)
             windowed[i] = std::numeric_limits<double>::quiet_NaN();
           break;
@@ -332,6 +341,7 @@ OrderStudy study_order(const MapStudy& s, const Eigen::VectorXd& zref,
     o.settled_tried = settled_tried;
     o.window_low = window_low;
     o.roundoff_h = roundoff_h;
+    o.stalled_error = stalled_error;
     o.settled_from = settled_from;
     o.settled_to = settled_to;
     o.scale = scale;
@@ -362,6 +372,9 @@ void report_order(const MapStudy& s, const OrderStudy& o, MapMeasurement& rep) {
   const std::vector<double>&hs = o.hs, &err = o.err;
   const PlateauFit& fit = o.fit;
   const bool ok = o.passed;
+  // In double-double the floor is near 1e-27: an error that stops decreasing a million times
+  // above it is not round-off (A-WRONG-DIGIT's second-order error taking over near 1e-16).
+  const bool stalled = extended && roundoff_h > 0 && o.stalled_error > kStallAboveFloor * fit.floor;
   if (!ok) rep.failed.push_back("order");
   // The points of the fit, in brief (all of them in the JSON).
   const auto [hmin, hmax] = used_range(fit, hs);
@@ -388,10 +401,17 @@ void report_order(const MapStudy& s, const OrderStudy& o, MapMeasurement& rep) {
                                : std::string(settled_tried ? ", local slopes not settled over two "
                                                              "octaves: the whole window"
                                                            : "")) +
-                          (roundoff_h > 0 ? fmt::format("; round-off below h = {:.3g}: no smaller "
-                                                        "error over the next octave of h",
-                                                        roundoff_h)
-                                          : std::string()))
+                          (roundoff_h > 0 && !stalled
+                               ? fmt::format("; round-off below h = {:.3g}: no smaller "
+                                             "error over the next octave of h",
+                                             roundoff_h)
+                           : stalled ? fmt::format("; below h = {:.3g} no smaller error over "
+                                                   "the next octave of h, at {:.1e}, far above "
+                                                   "double-double's round-off: a defect of the "
+                                                   "method of that size (its coefficients, its "
+                                                   "solve), not round-off",
+                                                   roundoff_h, o.stalled_error)
+                                     : std::string()))
           : fmt::format("{} runs, none usable", hs.size());
   rep.line("order",
            std::isfinite(fit.slope)
@@ -432,7 +452,8 @@ void report_order(const MapStudy& s, const OrderStudy& o, MapMeasurement& rep) {
   if (settled_tried)
     rep.js["order"]["settled_h"] =
         settled_from > 0 ? json({settled_from, settled_to}) : json(nullptr);
-  if (roundoff_h > 0) rep.js["order"]["roundoff_below_h"] = roundoff_h;
+  if (roundoff_h > 0 && !stalled) rep.js["order"]["roundoff_below_h"] = roundoff_h;
+  if (stalled) rep.js["order"]["stalled_below_h"] = {{"h", roundoff_h}, {"error", o.stalled_error}};
 }
 
 void measure_map(const MapStudy& s, MapMeasurement& rep) {

@@ -221,6 +221,10 @@ struct OrderStudy {
   bool settled_tried = false;  ///< enough points to look for settled local slopes
   bool retried = false;        ///< double's slopes did not settle: run again in double-double
   double window_low = 0, roundoff_h = 0, settled_from = 0, settled_to = 0, scale = 1;
+  /// The smallest error when the walk stopped at roundoff_h. In double-double far above the
+  /// floor (above kStallAboveFloor times it) that is not round-off but a defect of the method
+  /// (its coefficients, its solve): the report says so.
+  double stalled_error = 0;
   std::vector<double> hs, err;  ///< every run's step size and error at T
   PlateauFit fit;
   bool passed = false;  ///< |fitted − expected| < order_tol
