@@ -102,10 +102,11 @@ case_ gauss4-pendulum 0 "" 'order +(7\.[89]|8\.[01])[0-9]* over .*: yes' \
   -- --tableau "$T/gauss4.json" --problem pendulum --steps 4096
 case_ gauss5-kepler 0 "" 'order +(9\.[89]|10\.[01])[0-9]* over .*: yes' \
   -- --tableau "$T/gauss5.json" --problem kepler --steps 4096
-# its variational order, measured in double-double, is 12 too (9.22 when it was measured in
-# double, whose window [1e-12, 1e-8] is pre-asymptotic for order 12)
+# its variational order, measured in double-double down to 1e-25, has local slopes that still
+# move (from about 10.6 to 12.6): the value is shown and not compared (9.22 in double, whose
+# window [1e-12, 1e-8] is further from the asymptotic range)
 case_ gauss6-kepler 0 "" 'order +(11\.[89]|12\.[01])[0-9]* over .*: yes' \
-  '^variational order +(11\.[89]|12\.[01])[0-9]* \(measured.*expected 12: agrees' \
+  '^variational order +[0-9.]+ \(measured.*not compared with the expected 12 or the measured order: the local slopes of the defect did not settle' \
   -- --tableau "$T/gauss6.json" --problem kepler --steps 4096
 case_ gauss6-pendulum 0 "" 'order +(11\.[89]|12\.[01])[0-9]* over .*: yes' \
   -- --tableau "$T/gauss6.json" --problem pendulum --steps 4096

@@ -298,9 +298,15 @@ void install(Derivation derivation, SymbolicUse use, MapStudy& study) {
     if (jv.contains("order") && jv["order"].is_number()) {
       const double slope = jv["order"].get<double>();
       const bool agrees = r >= 0 && std::abs(slope - r) < s.order_tol;
-      je["agrees_with_measured"] = agrees;
-      measured =
-          fmt::format("; measured {:.2f}: {}", slope, agrees ? "agrees" : "DISAGREES (a finding)");
+      // A measurement whose local slopes did not settle is not compared (map_study.cpp).
+      if (jv.value("settled", true)) {
+        je["agrees_with_measured"] = agrees;
+        measured = fmt::format("; measured {:.2f}: {}", slope,
+                               agrees ? "agrees" : "DISAGREES (a finding)");
+      } else {
+        measured =
+            fmt::format("; measured {:.2f}: not compared (its local slopes did not settle)", slope);
+      }
     }
     const std::string term =
         first_term.size() <= 100
