@@ -612,10 +612,16 @@ void anisotropic(Compared& cmp, std::vector<claims::ClaimResult>& out,
       R"(\mathcal{L}(x,\dot{x}) = \frac{1}{2} \langle \dot{x}, M \dot{x} \rangle + \frac{1}{2} \langle x, (J_{+} + J_{-}) \dot{x} \rangle + \frac{1}{2} \langle x, Ax \rangle,)",
       "the Lagrangian, read and given to the engine",
       "the h⁰ term of the engine's L_disc built from it", n,
-      Target::scalar_series({E.l_disc().at(0)}), {1});
+      Target::scalar_series({E.l_disc().at(0)})
+          .shown_read(
+              R"(\frac{1}{2} \langle \dot{x}, M \dot{x} \rangle + \frac{1}{2} \langle x, (J_{+} + J_{-}) \dot{x} \rangle + \frac{1}{2} \langle x, A x \rangle)",
+              n),
+      {1});
   cmp(Paper::V, R"(-M\ddot{x} + J_-\dot{x} + Ax = 0.)", "its Euler–Lagrange equation",
       "the engine's Euler–Lagrange expression of L", n,
-      Target::vector_series(E.euler_lagrange({Lx}), 0), {0});
+      Target::vector_series(E.euler_lagrange({Lx}), 0)
+          .shown_read(R"(-M \ddot{x} + J_{-} \dot{x} + A x)", n),
+      {0});
   // The discrete Lagrangian and its Euler–Lagrange equation, in discrete variables.
   {
     const std::vector<GiNaC::symbol> qm = {GiNaC::symbol("qm_1"), GiNaC::symbol("qm_2")},
@@ -633,7 +639,11 @@ void anisotropic(Compared& cmp, std::vector<claims::ClaimResult>& out,
     cmp(Paper::V,
         R"(&= \mathcal{L}\left(x_{j+1}, \frac{x_{j+1} - x_j}{h}\right) \\ &= \frac{1}{2} \left\langle \frac{x_{j+1} - x_j}{h}, M \frac{x_{j+1} - x_j}{h} \right\rangle \\ &\quad + \frac{1}{2} \left\langle x_{j+1}, (J_+ + J_-) \frac{x_{j+1} - x_j}{h} \right\rangle + \frac{1}{2} \left\langle x_{j+1}, A x_{j+1} \right\rangle.)",
         "the discrete Lagrangian L(x_{j+1}, (x_{j+1} − x_j)/h), both forms",
-        "the library's symplectic_euler_dl, divided by h", nd, Target::exactly(Ld(q0, q1) / h),
+        "the library's symplectic_euler_dl, divided by h", nd,
+        Target::exactly(Ld(q0, q1) / h)
+            .shown_read(
+                R"(\frac{1}{2} \left\langle \frac{x_{j+1} - x_{j}}{h}, M \frac{x_{j+1} - x_{j}}{h} \right\rangle + \frac{1}{2} \left\langle x_{j+1}, (J_{+} + J_{-}) \frac{x_{j+1} - x_{j}}{h} \right\rangle + \frac{1}{2} \left\langle x_{j+1}, A x_{j+1} \right\rangle)",
+                nd),
         {0, 1});
     std::vector<ex> del;
     for (int i = 0; i < 2; ++i)
@@ -641,22 +651,40 @@ void anisotropic(Compared& cmp, std::vector<claims::ClaimResult>& out,
     cmp(Paper::V,
         R"(\left(M + \frac{h}{2}J_{+}\right)\frac{-x_{j+1} + 2x_{j} - x_{j-1}}{h^{2}} + J_{-}\frac{x_{j+1} - x_{j-1}}{2h} + Ax_{j} = 0.)",
         "its discrete Euler–Lagrange equation",
-        "1/h × the library's discrete Euler–Lagrange equation", nd, Target::exactly(del), {0});
+        "1/h × the library's discrete Euler–Lagrange equation", nd,
+        Target::exactly(del).shown_read(
+            R"(\left(M + \frac{h}{2} J_{+}\right) \frac{-x_{j+1} + 2 x_{j} - x_{j-1}}{h^{2}} + J_{-} \frac{x_{j+1} - x_{j-1}}{2h} + A x_{j})",
+            nd),
+        {0});
   }
   cmp(Paper::V,
       R"(\mathcal{L}_{\text{disc}}([x],h) &= \mathcal{L}\left(x + \frac{h}{2}\dot{x}, \ \dot{x}\right) + \mathcal{O}(h^2) \\ &= \mathcal{L} + \frac{h}{2}\left\langle\frac{\partial\mathcal{L}}{\partial x}, \dot{x}\right\rangle + \mathcal{O}(h^2) \\ &= \frac{1}{2}\left\langle\dot{x}, M\dot{x}\right\rangle + \frac{1}{2}\left\langle x, (J_+ + J_-)\dot{x}\right\rangle + \frac{1}{2}\left\langle x, Ax\right\rangle \\ &\quad + \frac{h}{2}\left\langle\frac{1}{2}(J_+ + J_-)\dot{x} + Ax, \dot{x}\right\rangle + \mathcal{O}(h^2).)",
       "the expansion L_disc([x], h), every form", eng + "L_disc (13)", n,
-      Target::scalar_series(E.l_disc(), 1), {1, 2, 3});
+      Target::scalar_series(E.l_disc(), 1)
+          .shown_read(
+              R"(\frac{1}{2} \langle \dot{x}, M \dot{x} \rangle + \frac{1}{2} \langle x, (J_{+} + J_{-}) \dot{x} \rangle + \frac{1}{2} \langle x, A x \rangle + \frac{h}{2} \left\langle \frac{1}{2} (J_{+} + J_{-}) \dot{x} + A x, \dot{x} \right\rangle)",
+              n),
+      {1, 2, 3});
   cmp(Paper::V,
       R"(\mathcal{L}_{\text{mesh}}([x],h) = \frac{1}{2} \langle \dot{x}, M \dot{x} \rangle + \frac{1}{2} \langle x, (J_{+} + J_{-}) \dot{x} \rangle + \frac{1}{2} \langle x, A x \rangle + \frac{h}{2} \left( \frac{1}{2} \langle \dot{x}, J_{+} \dot{x} \rangle + \langle \dot{x}, A x \rangle \right) + \mathcal{O}(h^{2}).)",
-      "L_mesh", eng + "meshed Lagrangian", n, Target::scalar_series(E.l_mesh(), 1), {1});
+      "L_mesh", eng + "meshed Lagrangian", n,
+      Target::scalar_series(E.l_mesh(), 1)
+          .shown_read(
+              R"(\frac{1}{2} \langle \dot{x}, M \dot{x} \rangle + \frac{1}{2} \langle x, (J_{+} + J_{-}) \dot{x} \rangle + \frac{1}{2} \langle x, A x \rangle + \frac{h}{2} \left( \frac{1}{2} \langle \dot{x}, J_{+} \dot{x} \rangle + \langle \dot{x}, A x \rangle \right))",
+              n),
+      {1});
   cmp(Paper::V, R"(-M\ddot{x} + J_{-}\dot{x} + Ax - \frac{h}{2}J_{+}\ddot{x} = 0.)",
       "the Euler–Lagrange equation of L_mesh", eng + "∂L_mesh/∂x − d/dt ∂L_mesh/∂ẋ", n,
-      Target::vector_series(E.euler_lagrange_two_term(E.l_mesh()), 1), {0});
+      Target::vector_series(E.euler_lagrange_two_term(E.l_mesh()), 1)
+          .shown_read(R"(-M \ddot{x} + J_{-} \dot{x} + A x - \frac{h}{2} J_{+} \ddot{x})", n),
+      {0});
   cmp(Paper::V,
       R"(\ddot{x} = M^{-1}(J_{-}\dot{x} + Ax) - \frac{h}{2}M^{-1}J_{+}M^{-1}(J_{-}\dot{x} + Ax) + \mathcal{O}(h^{2}))",
       "the first-order modified equation", eng + "modified equation", n,
-      Target::vector_series(E.modified_equation(), 1));
+      Target::vector_series(E.modified_equation(), 1)
+          .shown_read(
+              R"(M^{-1} (J_{-} \dot{x} + A x) - \frac{h}{2} M^{-1} J_{+} M^{-1} (J_{-} \dot{x} + A x))",
+              n));
   claims::ClaimResult r = claim(
       "V-EX5",
       "Example 5 (anisotropic oscillator, symbolic 2×2 M, J₊, A symmetric and J₋ "

@@ -71,6 +71,40 @@ Target& Target::shown_as(std::vector<ex> display, GiNaC::exmap abbreviations, st
   return *this;
 }
 
+Target& Target::shown_read(std::string latex, const Notation& notation) {
+  const Reading r = read(latex, notation);
+  if (r.members.size() != 1)
+    throw std::logic_error("Target::shown_read: one expression, not an equation: " + latex);
+  const Value& v = r.members[0];
+  const bool is_series = !series.empty();
+  const std::size_t n = is_series ? series.size() : exact.size();
+  if (v.c.size() != n)
+    throw std::logic_error("Target::shown_read: " + std::to_string(v.c.size()) +
+                           " components shown, the target has " + std::to_string(n));
+  const ex h = notation.step();
+  for (std::size_t i = 0; i < n; ++i) {
+    bool same = true;
+    if (!is_series) {
+      same = modified::vanishes(v.c[i] - exact[i]);
+    } else {
+      const ex x = GiNaC::expand(v.c[i]);
+      int compared = 0;
+      for (std::size_t k = 0; k < series[i].size() && same; ++k)
+        if (through < 0 || static_cast<int>(k) <= through) {
+          same = modified::vanishes(x.coeff(h, static_cast<int>(k)) - series[i][k]);
+          compared = static_cast<int>(k) + 1;
+        }
+      // nothing shown beyond the powers compared
+      same = same && (!x.has(h) || (x.is_polynomial(h) && x.degree(h) < compared));
+    }
+    if (!same)
+      throw std::logic_error("Target::shown_read: component " + std::to_string(i + 1) +
+                             " of the LaTeX shown is not the target: " + latex);
+  }
+  shown_latex = std::move(latex);
+  return *this;
+}
+
 namespace {
 
 // Abstract calls compare equal only with their arguments in one form: expand them.
@@ -684,6 +718,16 @@ claims::FormulaComparison compare(const Spec& spec, const std::vector<Case>& cas
       } else {
         for (const auto& c : series)
           comps.push_back(by_powers_of_h(c) + fmt::format(" + \\mathcal{{O}}(h^{{{}}})", c.size()));
+      }
+    }
+    if (!t.shown_latex.empty()) {
+      // in the paper's notation (Target::shown_read, read back and checked equal to the target)
+      out.ours = t.shown_latex;
+      if (!t.series.empty()) {
+        std::size_t K = 0;
+        for (const auto& c : t.series) K = std::max(K, c.size());
+        if (t.through >= 0) K = std::min(K, static_cast<std::size_t>(t.through) + 1);
+        out.ours += fmt::format(" + \\mathcal{{O}}(h^{{{}}})", K);
       }
     }
     if (out.ours.empty())

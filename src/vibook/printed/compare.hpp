@@ -73,6 +73,14 @@ struct Target {
   ex shown_h;  ///< the h of a shown series
   Target& shown_as(std::vector<ex> display, GiNaC::exmap abbreviations, std::string latex,
                    const ex& h = ex(0));
+
+  /// How our side is shown in the paper's own notation, as LaTeX (a vector equation in
+  /// matrices, ẍ = M⁻¹(…)): the text is read with `notation`, as the paper's displays are, and
+  /// must equal the target, component by component (for a series, each coefficient of h^k
+  /// compared, and no power beyond them); std::logic_error says which component is not. The
+  /// LaTeX is then our side as printed (a series followed by its O(h^k)).
+  std::string shown_latex;
+  Target& shown_read(std::string latex, const Notation& notation);
 };
 
 /// One setting in which the display is read and what it must equal there.

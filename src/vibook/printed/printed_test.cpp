@@ -219,3 +219,40 @@ TEST_CASE("compare: a target shown in abbreviations must be the target once they
   Target wrong = Target::scalar_series({a + b, 2 * (a + b)}, 1);
   CHECK_THROWS_AS(wrong.shown_as({g + 3 * h * g}, at, "", h), std::logic_error);
 }
+
+TEST_CASE("compare: a target shown in the paper's notation is read back and must be the target") {
+  // Target::shown_read: our side written as the paper writes it (a matrix times a vector), read
+  // with the same notation as the paper's displays. The form that is the target passes; a
+  // slip (a factor, a sign, the wrong matrix) or a power of h beyond those compared is refused.
+  Plane P;
+  const GiNaC::symbol m11("m11"), m12("m12"), m22("m22"), k("k");
+  Value M = Value::zeros(2, 2), Jm = Value::zeros(2, 2);
+  M.c = {m11, m12, m12, m22};
+  Jm.c = {0, k, -k, 0};
+  P.n.constant("M", M);
+  P.n.constant("J_{-}", Jm);
+  const ex h = P.J->h();
+  // M ẋ + (h/2) J₋ ẋ, through h^1
+  const std::vector<std::vector<ex>> target = {{m11 * P.v(0) + m12 * P.v(1), k * P.v(1) / 2},
+                                               {m12 * P.v(0) + m22 * P.v(1), -k * P.v(0) / 2}};
+  Target ok =
+      Target::vector_series({{target[0][0], target[1][0]}, {target[0][1], target[1][1]}}, 1);
+  CHECK_NOTHROW(ok.shown_read(R"(M \dot{x} + \frac{h}{2} J_{-} \dot{x})", P.n));
+  CHECK(ok.shown_latex == R"(M \dot{x} + \frac{h}{2} J_{-} \dot{x})");
+  for (const char* slip :
+       {R"(M \dot{x} + h J_{-} \dot{x})", R"(M \dot{x} - \frac{h}{2} J_{-} \dot{x})",
+        R"(J_{-} \dot{x} + \frac{h}{2} M \dot{x})",
+        R"(M \dot{x} + \frac{h}{2} J_{-} \dot{x} + h^{2} M \dot{x})"}) {
+    Target t =
+        Target::vector_series({{target[0][0], target[1][0]}, {target[0][1], target[1][1]}}, 1);
+    CHECK_THROWS_AS(t.shown_read(slip, P.n), std::logic_error);
+    CHECK(t.shown_latex.empty());
+  }
+  // exact: the number of components must match
+  Target scalar =
+      Target::exactly(m11 * P.v(0) * P.v(0) + 2 * m12 * P.v(0) * P.v(1) + m22 * P.v(1) * P.v(1));
+  CHECK_NOTHROW(scalar.shown_read(R"(\langle \dot{x}, M \dot{x} \rangle)", P.n));
+  Target vector = Target::exactly(std::vector<ex>{P.v(0), P.v(1)});
+  CHECK_THROWS_AS(vector.shown_read(R"(\langle \dot{x}, M \dot{x} \rangle)", P.n),
+                  std::logic_error);
+}
