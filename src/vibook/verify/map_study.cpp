@@ -291,9 +291,10 @@ OrderStudy study_order(const MapStudy& s, const Eigen::VectorXd& zref,
     }
     // The fit keeps the points where the local slopes have settled, in double and in
     // double-double alike (the chapter's "order: local slopes settled"): among the points
-    // of the window above the floor, the longest run of consecutive local slopes over an
-    // octave of h (4 step sizes) that all lie within order_tol/2 of the run's median, with
-    // the octave behind its first slope; ties go to the smaller steps. It must span two
+    // of the window above the floor, a run of consecutive local slopes over an octave of h
+    // (4 step sizes) that all lie within order_tol/2 of the run's median, with the octave
+    // behind its first slope; of such runs the one that reaches the smallest steps (the most
+    // asymptotic; among those the longest), as for the variational order. It must span two
     // octaves (9 points); otherwise the whole window, and the report says so. Above the run
     // the higher terms still bend the slope (the pre-asymptotic range of high orders);
     // below it, round-off or an implicit solve's noise scatters it (a composition of a typed
@@ -320,7 +321,7 @@ OrderStudy study_order(const MapStudy& s, const Eigen::VectorXd& zref,
           if (std::abs(sorted.front() - median) > s.order_tol / 2 ||
               std::abs(sorted.back() - median) > s.order_tol / 2)
             break;
-          if (b - a >= 4 && b - a >= best_b - best_a) {
+          if (b - a >= 4 && (best_b == 0 || b > best_b || (b == best_b && a < best_a))) {
             best_a = a;
             best_b = b;
           }
