@@ -202,6 +202,41 @@ Reference<dd_real> exact_solution(const MapStudy& s, const std::vector<dd_real>&
 
 }  // namespace
 
+namespace {
+
+// The chapter's "local slopes settled", for the order and the variational order alike: among
+// slopes[first], slopes[first + 1], …, the runs of at least five consecutive slopes that all lie
+// within tol/2 of their median; of those the one that reaches the smallest steps (the last
+// slope), and among those the longest. Its first and last slope (inclusive), or none.
+std::optional<std::pair<std::size_t, std::size_t>> settled_run(const std::vector<double>& slopes,
+                                                               double tol, std::size_t first) {
+  std::optional<std::pair<std::size_t, std::size_t>> best;
+  for (std::size_t a = first; a < slopes.size(); ++a) {
+    std::vector<double> run;
+    for (std::size_t b = a; b < slopes.size(); ++b) {
+      run.push_back(slopes[b]);
+      std::vector<double> sorted = run;
+      std::sort(sorted.begin(), sorted.end());
+      const double median = sorted[sorted.size() / 2];
+      if (std::abs(sorted.front() - median) > tol / 2 || std::abs(sorted.back() - median) > tol / 2)
+        break;
+      if (b - a >= 4 && (!best || b > best->second || (b == best->second && a < best->first)))
+        best = std::pair{a, b};
+    }
+  }
+  return best;
+}
+
+// A walk that never reached its window is fitted on its 6 smallest step sizes: `windowed`
+// becomes `all` with every earlier point left out.
+void smallest_six(std::vector<double>& windowed, const std::vector<double>& all) {
+  windowed = all;
+  for (std::size_t i = 0; i + 6 < windowed.size(); ++i)
+    windowed[i] = std::numeric_limits<double>::quiet_NaN();
+}
+
+}  // namespace
+
 OrderStudy study_order(const MapStudy& s, const Eigen::VectorXd& zref,
                        const std::vector<dd_real>& zref_dd, double ref_error) {
   const Eigen::VectorXd& z0 = s.z0;
@@ -284,9 +319,7 @@ OrderStudy study_order(const MapStudy& s, const Eigen::VectorXd& zref,
       if (std::count_if(windowed.begin(), windowed.end(),
                         [](double x) { return std::isfinite(x); }) < 3) {
         fallback = true;
-        windowed = err;
-        for (std::size_t i = 0; i + 6 < windowed.size(); ++i)
-          windowed[i] = std::numeric_limits<double>::quiet_NaN();
+        smallest_six(windowed, err);
       }
     }
     // The fit keeps the points where the local slopes have settled, in double and in
@@ -310,24 +343,10 @@ OrderStudy study_order(const MapStudy& s, const Eigen::VectorXd& zref,
         return std::log(err[a] / err[b]) / std::log(hs[a] / hs[b]);
       };
       settled_tried = pts.size() >= 9;
-      std::size_t best_a = 0, best_b = 0;  // the run of slopes local(a..b), b - a >= 4
-      for (std::size_t a = 4; a < pts.size(); ++a) {
-        std::vector<double> run;
-        for (std::size_t b = a; b < pts.size(); ++b) {
-          run.push_back(local(b));
-          std::vector<double> sorted = run;
-          std::sort(sorted.begin(), sorted.end());
-          const double median = sorted[sorted.size() / 2];
-          if (std::abs(sorted.front() - median) > s.order_tol / 2 ||
-              std::abs(sorted.back() - median) > s.order_tol / 2)
-            break;
-          if (b - a >= 4 && (best_b == 0 || b > best_b || (b == best_b && a < best_a))) {
-            best_a = a;
-            best_b = b;
-          }
-        }
-      }
-      if (best_b > 0) {
+      std::vector<double> slopes(pts.size(), 0.0);  // slopes[k]: local(k), from k = 4
+      for (std::size_t k = 4; k < pts.size(); ++k) slopes[k] = local(k);
+      if (const auto run = settled_run(slopes, s.order_tol, 4)) {
+        const auto [best_a, best_b] = *run;
         const std::size_t start = best_a - 4;  // the octave behind the first settled slope
         for (std::size_t k = 0; k < pts.size(); ++k)
           if (k < start || k > best_b) windowed[pts[k]] = std::numeric_limits<double>::quiet_NaN();
@@ -891,9 +910,7 @@ void measure_variational_order(const MapStudy& s, MapMeasurement& rep) {
       if (std::count_if(windowed.begin(), windowed.end(),
                         [](double x) { return std::isfinite(x); }) < 4) {
         fallback = true;
-        windowed = ds;
-        for (std::size_t i = 0; i + 6 < windowed.size(); ++i)
-          windowed[i] = std::numeric_limits<double>::quiet_NaN();
+        smallest_six(windowed, ds);
       }
       for (std::size_t i = 0; i < hs.size(); ++i)
         if (std::isfinite(windowed[i]) && windowed[i] > 0) pts.push_back(i);
@@ -912,29 +929,13 @@ void measure_variational_order(const MapStudy& s, MapMeasurement& rep) {
       settled = true;
       run_chosen = false;
       if (!fallback && pts.size() >= 9) {
-        settled = false;
-        std::size_t best_a = 0, best_b = 0;
-        for (std::size_t a = 0; a + 4 < slopes.size(); ++a) {
-          std::vector<double> run;
-          for (std::size_t b = a; b < slopes.size(); ++b) {
-            run.push_back(slopes[b]);
-            std::vector<double> sorted = run;
-            std::sort(sorted.begin(), sorted.end());
-            const double median = sorted[sorted.size() / 2];
-            if (std::abs(sorted.front() - median) > s.order_tol / 2 ||
-                std::abs(sorted.back() - median) > s.order_tol / 2)
-              break;
-            if (b - a >= 4 && (!settled || b > best_b || (b == best_b && a < best_a))) {
-              settled = true;
-              best_a = a;
-              best_b = b;
-            }
-          }
-        }
+        const auto run = settled_run(slopes, s.order_tol, 0);
+        settled = run.has_value();
         run_chosen = settled;
-        if (settled)  // slope k is over points k .. k + 4 of pts
-          pts = std::vector<std::size_t>(pts.begin() + static_cast<std::ptrdiff_t>(best_a),
-                                         pts.begin() + static_cast<std::ptrdiff_t>(best_b + 5));
+        if (run)  // slope k is over points k .. k + 4 of pts
+          pts =
+              std::vector<std::size_t>(pts.begin() + static_cast<std::ptrdiff_t>(run->first),
+                                       pts.begin() + static_cast<std::ptrdiff_t>(run->second + 5));
       }
       // log d = a + (r + 1) log h + c h: the defect is a power series in h, and its next term
       // changes the local slope by O(h), which a plain fit over the window reads as a lower
