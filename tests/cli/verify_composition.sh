@@ -25,6 +25,11 @@ case_ kahanli8-pendulum 0 "" '^order +(7\.[89]|8\.[01])[0-9]* over .*: yes' \
   -- --composition sv --coefficients kahanli8 --problem pendulum
 case_ mclachlan8-pendulum 0 "" '^order +(7\.[89]|8\.[01])[0-9]* over .*: yes' \
   'runs in double-double' -- --composition sv --coefficients mclachlan8 --problem pendulum
+# The same double-double step for symplectic Euler and its adjoint (drift then kick, kick then
+# drift): Yoshida's sixth-order method with each Stormer-Verlet stage written as se*(c/2), se(c/2)
+Y6SE='0.392256805238780*,0.392256805238780,0.1177866066796785*,0.1177866066796785,-0.588839992089435*,-0.588839992089435,0.657593160341953*,0.657593160341953,-0.588839992089435*,-0.588839992089435,0.1177866066796785*,0.1177866066796785,0.392256805238780*,0.392256805238780'
+case_ yoshida6-as-se 0 "" '^order +(5\.9|6\.0)[0-9]* over .*: yes' 'runs in double-double' \
+  -- --composition se --coefficients "$Y6SE" --problem pendulum --expected-order 6 --symbolic never
 case_ kahanli6-as-8 5 "order conditions,order" '^order +(5\.9|6\.0)[0-9]* over .*: NO' \
   'runs in double-double' -- --composition sv --coefficients kahanli6 --problem pendulum \
   --expected-order 8
