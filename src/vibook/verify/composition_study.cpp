@@ -521,43 +521,65 @@ Composed conditions(const CompositionSpec& p, MapMeasurement& rep) {
 //   se (drift k, then kick k):         L_d = k |v|²/2 − k U(q1),
 //   se-adjoint (kick k, then drift k): L_d = k |v|²/2 − k U(q0)
 // (Vermeeren 2017, Example 1 (b)-(d)); the adjoint stage of se is se-adjoint and conversely.
-// Empty for an implicit base, which is measured in double (and the report says so).
+// The step alone (first) and the step with its L_d (second); none for an implicit base, which
+// is measured in double (and the report says so).
 template <class P>
-GeneratingStepDD explicit_composition_dd(const std::string& base, const P& prob,
-                                         const std::vector<dd_real>& c,
-                                         const std::vector<bool>& adj) {
+std::optional<std::pair<StepDD, GeneratingStepDD>> explicit_composition_dd(
+    const std::string& base, const P& prob, const std::vector<dd_real>& c,
+    const std::vector<bool>& adj) {
   constexpr int N = P::N;
-  if (base != "sv" && base != "se" && base != "se-adjoint") return {};
+  if (base != "sv" && base != "se" && base != "se-adjoint") return std::nullopt;
   enum class Kind { sv, drift_kick, kick_drift };
   std::vector<Kind> kind;
   for (std::size_t i = 0; i < c.size(); ++i)
     kind.push_back(base == "sv"                     ? Kind::sv
                    : (base == "se") != bool(adj[i]) ? Kind::drift_kick
                                                     : Kind::kick_drift);
-  return [prob, c, kind](VecXdd& z, const dd_real& h) {
+  // One pass over the stages; the potential only when L_d is asked for. The gradient and the
+  // potential at the current q are kept until the next drift moves it (the kick that ends a
+  // stage and the one that starts the next one are at the same q), as StormerVerlet keeps its
+  // force in double.
+  auto run = [prob, c, kind](VecXdd& z, const dd_real& h, bool with_ld) {
     using V = Vec<dd_real, N>;
     V q = z.template head<N>(), p = z.template tail<N>();
     const dd_real half(0.5);
     dd_real Ld(0.0);
+    std::optional<V> g;
+    std::optional<dd_real> U;
+    auto kick = [&](const dd_real& by) {
+      if (!g) g = prob.template gradient<dd_real>(q);
+      p -= by * *g;
+    };
+    auto potential = [&]() {
+      if (!U) U = prob.template potential<dd_real>(q);
+      return *U;
+    };
     for (std::size_t i = 0; i < c.size(); ++i) {
       if (c[i] == 0) continue;
       const dd_real k = c[i] * h;
-      const dd_real U0 = prob.template potential<dd_real>(q);
-      if (kind[i] == Kind::sv) p -= (k * half) * prob.template gradient<dd_real>(q);
-      if (kind[i] == Kind::kick_drift) p -= k * prob.template gradient<dd_real>(q);
+      const dd_real U0 = with_ld && kind[i] != Kind::drift_kick ? potential() : dd_real(0.0);
+      if (kind[i] == Kind::sv) kick(k * half);
+      if (kind[i] == Kind::kick_drift) kick(k);
       const V v = p;
       q += k * v;
-      const dd_real U1 = prob.template potential<dd_real>(q);
-      if (kind[i] == Kind::sv) p -= (k * half) * prob.template gradient<dd_real>(q);
-      if (kind[i] == Kind::drift_kick) p -= k * prob.template gradient<dd_real>(q);
-      const dd_real U = kind[i] == Kind::sv           ? half * (U0 + U1)
-                        : kind[i] == Kind::drift_kick ? U1
-                                                      : U0;
-      Ld += k * (half * v.squaredNorm() - U);
+      g.reset();
+      U.reset();
+      const dd_real U1 = with_ld && kind[i] != Kind::kick_drift ? potential() : dd_real(0.0);
+      if (kind[i] == Kind::sv) kick(k * half);
+      if (kind[i] == Kind::drift_kick) kick(k);
+      if (with_ld) {
+        const dd_real Us = kind[i] == Kind::sv           ? half * (U0 + U1)
+                           : kind[i] == Kind::drift_kick ? U1
+                                                         : U0;
+        Ld += k * (half * v.squaredNorm() - Us);
+      }
     }
     z << q, p;
     return Ld;
   };
+  return std::pair<StepDD, GeneratingStepDD>{
+      [run](VecXdd& z, const dd_real& h) { run(z, h, false); },
+      [run](VecXdd& z, const dd_real& h) { return run(z, h, true); }};
 }
 
 template <class P>
@@ -623,9 +645,9 @@ void measure(const CompositionSpec& p, const std::vector<double>& q0, const std:
   // in their pre-asymptotic range.
   if (!p.flows.empty()) {
     study.step_dd = splitting_step_dd(p.flows, study.field, N);
-  } else if (auto g = explicit_composition_dd(p.base->name, prob, k.c_dd, adj)) {
-    study.step_dd = [g](VecXdd& z, const dd_real& h) { g(z, h); };
-    study.generating_dd = std::move(g);
+  } else if (auto dd = explicit_composition_dd(p.base->name, prob, k.c_dd, adj)) {
+    study.step_dd = std::move(dd->first);
+    study.generating_dd = std::move(dd->second);
   }
   study.expected = k.expected;
   study.substeps = double(c.size());

@@ -863,15 +863,16 @@ void derive_tableau_variational_order(const TableauSpec& spec, int dim,
     if (!x) return std::nullopt;
     const bool point = types_a_decimal(t);  // (exact_number reads no exponent)
     decimal = decimal || point;
-    const std::size_t digits = std::count_if(
-        t.begin(), t.end(), [](char ch) { return std::isdigit(static_cast<unsigned char>(ch)); });
-    longest = std::max(longest, digits);
-    const std::size_t first = t.find_first_of("123456789");
-    const std::size_t significant =
-        first == std::string::npos
-            ? 0
-            : std::count_if(t.begin() + static_cast<std::ptrdiff_t>(first), t.end(),
-                            [](char ch) { return std::isdigit(static_cast<unsigned char>(ch)); });
+    // digits from position `from` on (exact_number reads no exponent)
+    auto digits_from = [&t](std::size_t from) -> std::size_t {
+      return from == std::string::npos
+                 ? 0
+                 : std::count_if(
+                       t.begin() + static_cast<std::ptrdiff_t>(from), t.end(),
+                       [](char ch) { return std::isdigit(static_cast<unsigned char>(ch)); });
+    };
+    longest = std::max(longest, digits_from(0));
+    const std::size_t significant = digits_from(t.find_first_of("123456789"));
     // a decimal of more than 6 significant digits stands for a number it cuts after its last
     // digit (0.5 or 0.125 is the number itself)
     if (point && significant > kExactDecimalDigits)
